@@ -1,0 +1,14 @@
+//! The Edgewise app: egui panels and a wgpu 3D view in one canvas.
+//!
+//! The same [`EdgewiseApp`] runs natively (a desktop window, used for
+//! development and UI tests) and in the browser (see `web`).
+
+mod app;
+mod backend;
+pub mod state;
+
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+
+pub use app::EdgewiseApp;
+pub use backend::GraphicsBackend;

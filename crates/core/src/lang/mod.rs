@@ -1,0 +1,1 @@
+//! The algorithm language: lexer, parser, checker, compiler and VM.

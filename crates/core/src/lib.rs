@@ -1,0 +1,21 @@
+//! Edgewise core: the winged-edge and half-edge mesh structures, their file
+//! formats, and the small algorithm language that walks them.
+//!
+//! This crate has no UI or browser dependency, so the app (native and wasm32)
+//! and the `edgewise` command share exactly the same logic.
+
+pub mod lang;
+pub mod mesh;
+
+/// The version of Edgewise, shared by the app, the CLI and the JavaScript API.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn version_is_semver() {
+        let parts: Vec<&str> = super::VERSION.split('.').collect();
+        assert_eq!(parts.len(), 3, "version {} is not major.minor.patch", super::VERSION);
+        assert!(parts.iter().all(|p| p.parse::<u32>().is_ok()));
+    }
+}

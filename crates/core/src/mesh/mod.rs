@@ -1,0 +1,1 @@
+//! Winged-edge and half-edge mesh structures.

@@ -1,0 +1,90 @@
+//! Edgewise's build tool, run as `cargo xtask <command>`.
+//!
+//! - `serve [--port N]` builds the app for the browser into dist/ and serves it.
+//! - `test` runs everything CI checks.
+//! - `build-web [--dev]` only builds dist/.
+//! - `browser-test` builds dist/ and runs only the browser tests.
+
+mod process;
+mod serve;
+mod test;
+mod toolchain;
+mod web_build;
+
+use std::path::PathBuf;
+
+use anyhow::Context as _;
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(name = "cargo xtask", about = "Build, serve and test Edgewise.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Build the app for the browser (release) into dist/ and serve it until stopped.
+    Serve {
+        /// The port to serve on.
+        #[arg(long, default_value_t = 8080)]
+        port: u16,
+    },
+    /// Run everything CI checks: formatting, clippy (native and wasm32), native
+    /// tests, the wasm build, and the browser tests in headless Chromium.
+    Test,
+    /// Build the app for the browser into dist/ without serving it.
+    BuildWeb {
+        /// An unoptimised build, quicker to compile.
+        #[arg(long)]
+        dev: bool,
+    },
+    /// Build dist/ and run only the browser tests.
+    BrowserTest,
+}
+
+fn main() -> std::process::ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(err) => {
+            eprintln!("\nxtask: error: {err:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(cli: Cli) -> anyhow::Result<()> {
+    let root = workspace_root()?;
+    std::env::set_current_dir(&root)
+        .with_context(|| format!("cannot enter the workspace at {}", root.display()))?;
+    match cli.command {
+        Command::Serve { port } => {
+            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            serve::serve_forever(&dist, port)
+        }
+        Command::Test => test::run_all(&root),
+        Command::BuildWeb { dev } => {
+            let profile = if dev {
+                web_build::Profile::Dev
+            } else {
+                web_build::Profile::Release
+            };
+            web_build::build(&root, profile).map(|_| ())
+        }
+        Command::BrowserTest => {
+            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            test::browser_tests(&root, &dist)
+        }
+    }
+}
+
+/// The workspace root: the parent of crates/xtask.
+fn workspace_root() -> anyhow::Result<PathBuf> {
+    let manifest_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    manifest_dir
+        .ancestors()
+        .nth(2)
+        .map(PathBuf::from)
+        .context("crates/xtask is not inside a workspace")
+}

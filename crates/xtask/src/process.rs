@@ -1,0 +1,94 @@
+//! Running commands and installing Debian packages.
+
+use std::{
+    path::Path,
+    process::{Command, Stdio},
+    time::{Duration, Instant},
+};
+
+use anyhow::{Context as _, bail};
+
+/// Cargo as invoked by `cargo xtask`, so the same toolchain builds everything.
+pub fn cargo() -> Command {
+    Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+}
+
+/// Runs `cmd`, streaming its output, and fails with `what` if it fails.
+pub fn run(what: &str, cmd: &mut Command) -> anyhow::Result<()> {
+    let status = cmd
+        .status()
+        .with_context(|| format!("{what}: could not start {:?}", cmd.get_program()))?;
+    if !status.success() {
+        bail!("{what} failed ({status})");
+    }
+    Ok(())
+}
+
+/// Runs `cmd` quietly with a time limit; true if it finished successfully in time.
+pub fn succeeds_within(cmd: &mut Command, limit: Duration) -> bool {
+    let Ok(mut child) = cmd.stdout(Stdio::null()).stderr(Stdio::null()).spawn() else {
+        return false;
+    };
+    let start = Instant::now();
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return status.success(),
+            Ok(None) if start.elapsed() < limit => std::thread::sleep(Duration::from_millis(200)),
+            _ => {
+                child.kill().ok();
+                child.wait().ok();
+                return false;
+            }
+        }
+    }
+}
+
+/// The standard output of `cmd`, or None if it cannot run or fails.
+pub fn output_of(cmd: &mut Command) -> Option<String> {
+    let out = cmd.stderr(Stdio::null()).output().ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+fn is_root() -> bool {
+    output_of(Command::new("id").arg("-u")).is_some_and(|uid| uid.trim() == "0")
+}
+
+/// Makes sure each `(file, package)` file exists, installing the missing
+/// packages with apt-get when we are root. Otherwise explains what to install.
+pub fn ensure_debian_packages(purpose: &str, needs: &[(&str, &str)]) -> anyhow::Result<()> {
+    let missing: Vec<&str> = needs
+        .iter()
+        .filter(|(file, _)| !Path::new(file).exists())
+        .map(|(_, package)| *package)
+        .collect();
+    if missing.is_empty() {
+        return Ok(());
+    }
+    let list = missing.join(" ");
+    if !is_root() {
+        bail!(
+            "{purpose} needs Debian packages that are not installed: {list}\n\
+             Install them with: sudo apt-get update && sudo apt-get install -y {list}"
+        );
+    }
+    eprintln!("==> installing {list} for {purpose}");
+    run(
+        "apt-get update",
+        Command::new("apt-get")
+            .arg("update")
+            .env("DEBIAN_FRONTEND", "noninteractive"),
+    )?;
+    run(
+        "apt-get install",
+        Command::new("apt-get")
+            .args(["install", "-y", "--no-install-recommends"])
+            .args(&missing)
+            .env("DEBIAN_FRONTEND", "noninteractive"),
+    )?;
+    if let Some((file, package)) = needs.iter().find(|(file, _)| !Path::new(file).exists()) {
+        bail!("{package} was installed but {file} is still missing");
+    }
+    Ok(())
+}

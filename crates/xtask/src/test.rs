@@ -1,0 +1,127 @@
+//! `cargo xtask test`: everything CI checks, in order, with a timing summary.
+
+use std::{path::Path, time::Instant};
+
+use crate::{
+    process::{self, cargo},
+    serve,
+    toolchain::WasmToolchain,
+    web_build,
+};
+
+const CHROMIUM: &str = "/usr/bin/chromium";
+const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+const BROWSER_TESTS: &str = "edgewise-browser-tests";
+/// The crates that are compiled for the browser.
+const WASM_PACKAGES: [&str; 2] = ["edgewise-core", "edgewise-app"];
+
+/// Runs every check CI runs and stops at the first failure.
+pub fn run_all(root: &Path) -> anyhow::Result<()> {
+    let mut timings = Timings::default();
+
+    timings.step("formatting", || {
+        process::run("cargo fmt --check", cargo().args(["fmt", "--all", "--", "--check"]))
+    })?;
+    timings.step("clippy (native)", || {
+        process::run(
+            "clippy (native)",
+            cargo().args([
+                "clippy",
+                "--locked",
+                "--workspace",
+                "--all-targets",
+                "--",
+                "-D",
+                "warnings",
+            ]),
+        )
+    })?;
+    let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
+    timings.step("clippy (wasm32)", || wasm_lints(root, toolchain))?;
+    timings.step("native tests", || {
+        process::run(
+            "native tests",
+            cargo().args(["test", "--locked", "--workspace", "--exclude", BROWSER_TESTS]),
+        )
+    })?;
+    let dist = timings.step("wasm build", || {
+        web_build::build(root, web_build::Profile::Release)
+    })?;
+    timings.step("browser tests", || browser_tests(root, &dist))?;
+
+    timings.print();
+    eprintln!("==> all checks passed");
+    Ok(())
+}
+
+/// Lints the crates that run in the browser, as compiled for wasm32.
+fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
+    let target_dir = root.join("target");
+    let mut cmd = if toolchain.has_clippy() {
+        toolchain.cargo("clippy", &target_dir)
+    } else {
+        eprintln!(
+            "==> Debian's rustc-web has no clippy: wasm32 code is checked with rustc's lints \
+             (clippy's lints run natively on the same code)"
+        );
+        let mut cmd = toolchain.cargo("check", &target_dir);
+        cmd.env("RUSTFLAGS", "-D warnings");
+        cmd
+    };
+    cmd.arg("--locked");
+    for package in WASM_PACKAGES {
+        cmd.args(["--package", package]);
+    }
+    if toolchain.has_clippy() {
+        cmd.args(["--", "-D", "warnings"]);
+    }
+    process::run("wasm32 lints", &mut cmd)
+}
+
+/// Serves `dist` and runs the browser tests against it in headless Chromium.
+pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
+    process::ensure_debian_packages(
+        "the browser tests",
+        &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
+    )?;
+    let addr = serve::serve_in_background(dist)?;
+    let url = format!("http://{addr}/");
+    eprintln!("==> browser tests against {url}");
+    process::run(
+        "browser tests",
+        cargo()
+            .current_dir(root)
+            .args(["test", "--locked", "--package", BROWSER_TESTS])
+            .env("EDGEWISE_URL", &url)
+            .env("EDGEWISE_CHROMIUM", CHROMIUM)
+            .env("EDGEWISE_CHROMEDRIVER", CHROMEDRIVER),
+    )
+}
+
+/// How long each step took, printed at the end so slow steps stand out.
+#[derive(Default)]
+struct Timings(Vec<(&'static str, f64)>);
+
+impl Timings {
+    fn step<T>(
+        &mut self,
+        name: &'static str,
+        f: impl FnOnce() -> anyhow::Result<T>,
+    ) -> anyhow::Result<T> {
+        eprintln!("\n==> {name}");
+        let start = Instant::now();
+        let result = f();
+        self.0.push((name, start.elapsed().as_secs_f64()));
+        if result.is_err() {
+            self.print();
+        }
+        result
+    }
+
+    fn print(&self) {
+        eprintln!("\n==> timings");
+        for (name, secs) in &self.0 {
+            eprintln!("    {name:<20} {secs:>7.1} s");
+        }
+    }
+}

@@ -1,0 +1,431 @@
+//! A harness for testing Edgewise in a real headless Chromium.
+//!
+//! `cargo xtask test` serves dist/ and runs these tests with `EDGEWISE_URL`
+//! pointing at it. Each test launches chromedriver and Chromium, opens the
+//! page, waits for `window.edgewise`, drives the app through that API, and
+//! checks console errors and screenshots.
+
+use std::{
+    path::PathBuf,
+    time::{Duration, Instant},
+};
+
+use anyhow::{Context as _, bail};
+use fantoccini::{Client, ClientBuilder, wd::WebDriverCompatibleCommand};
+use serde_json::{Value, json};
+
+/// How long the page may take to download, compile and start the wasm.
+const START_TIMEOUT: Duration = Duration::from_secs(120);
+
+/// Options for launching the browser.
+#[derive(Clone, Debug)]
+pub struct LaunchOptions {
+    /// Window size in CSS pixels.
+    pub window_size: (u32, u32),
+    /// Turn off WebGL and WebGPU, to test the page's message for that case.
+    pub without_3d: bool,
+}
+
+impl Default for LaunchOptions {
+    fn default() -> Self {
+        Self {
+            window_size: (1280, 800),
+            without_3d: false,
+        }
+    }
+}
+
+/// A headless Chromium session on the served app.
+pub struct Browser {
+    client: Client,
+    base_url: String,
+    _driver: tokio::process::Child,
+    _profile: TempDir,
+}
+
+impl Browser {
+    /// Launches chromedriver and a headless Chromium with default options.
+    pub async fn launch() -> anyhow::Result<Self> {
+        Self::launch_with(LaunchOptions::default()).await
+    }
+
+    /// Launches chromedriver and a headless Chromium.
+    pub async fn launch_with(options: LaunchOptions) -> anyhow::Result<Self> {
+        let base_url = env("EDGEWISE_URL")?;
+        let chromium = env("EDGEWISE_CHROMIUM")?;
+        let chromedriver = env("EDGEWISE_CHROMEDRIVER")?;
+
+        let port = free_port()?;
+        let driver = tokio::process::Command::new(&chromedriver)
+            .arg(format!("--port={port}"))
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .kill_on_drop(true)
+            .spawn()
+            .with_context(|| format!("cannot start {chromedriver}"))?;
+        let profile = TempDir::new("edgewise-chromium")?;
+
+        let (width, height) = options.window_size;
+        let mut args = vec![
+            "--headless".to_owned(),
+            "--no-sandbox".to_owned(),
+            "--disable-gpu".to_owned(),
+            "--disable-dev-shm-usage".to_owned(),
+            "--disable-background-networking".to_owned(),
+            "--disable-component-update".to_owned(),
+            "--disable-sync".to_owned(),
+            "--disable-quic".to_owned(),
+            "--no-first-run".to_owned(),
+            "--hide-scrollbars".to_owned(),
+            format!("--window-size={width},{height}"),
+            format!("--user-data-dir={}", profile.0.display()),
+        ];
+        if options.without_3d {
+            args.push("--disable-3d-apis".to_owned());
+            args.push("--disable-webgl".to_owned());
+        } else {
+            // WebGL2 rendered on the CPU: these machines have no GPU.
+            args.push("--use-angle=swiftshader".to_owned());
+            args.push("--enable-unsafe-swiftshader".to_owned());
+        }
+        let mut caps = serde_json::Map::new();
+        caps.insert(
+            "goog:chromeOptions".to_owned(),
+            json!({ "binary": chromium, "args": args }),
+        );
+        caps.insert(
+            "goog:loggingPrefs".to_owned(),
+            json!({ "browser": "ALL" }),
+        );
+
+        let webdriver = format!("http://127.0.0.1:{port}");
+        let client = connect(&webdriver, caps).await?;
+        Ok(Self {
+            client,
+            base_url,
+            _driver: driver,
+            _profile: profile,
+        })
+    }
+
+    /// The URL of the served app, ending in '/'.
+    pub fn base_url(&self) -> &str {
+        &self.base_url
+    }
+
+    /// Opens the app with `suffix` appended to its URL (e.g. "?embed=1")
+    /// and waits until `window.edgewise` exists.
+    pub async fn open(&self, suffix: &str) -> anyhow::Result<()> {
+        self.goto(suffix).await?;
+        self.wait_until_ready().await
+    }
+
+    /// Navigates to the app URL plus `suffix` without waiting for the app.
+    pub async fn goto(&self, suffix: &str) -> anyhow::Result<()> {
+        let url = format!("{}{suffix}", self.base_url);
+        self.client
+            .goto(&url)
+            .await
+            .with_context(|| format!("cannot open {url}"))
+    }
+
+    /// Waits until the app has defined `window.edgewise`, failing early with
+    /// the page's own message if it shows one.
+    pub async fn wait_until_ready(&self) -> anyhow::Result<()> {
+        let start = Instant::now();
+        loop {
+            let status = self
+                .eval(
+                    "return { ready: !!window.edgewise, error: document.getElementById('edgewise_error')?.dataset.visible === 'true' ? document.getElementById('edgewise_error').textContent : null };",
+                )
+                .await?;
+            if let Some(error) = status["error"].as_str() {
+                let console = self.console_errors().await.unwrap_or_default();
+                bail!("the page shows an error: {error}\nconsole errors: {console:#?}");
+            }
+            if status["ready"] == Value::Bool(true) {
+                return Ok(());
+            }
+            if start.elapsed() > START_TIMEOUT {
+                let console = self.console_errors().await.unwrap_or_default();
+                bail!(
+                    "window.edgewise did not appear within {}s; console errors: {console:#?}",
+                    START_TIMEOUT.as_secs()
+                );
+            }
+            tokio::time::sleep(Duration::from_millis(250)).await;
+        }
+    }
+
+    /// Waits until `condition` (a JS expression) is true.
+    pub async fn wait_for(&self, condition: &str, timeout: Duration) -> anyhow::Result<()> {
+        let start = Instant::now();
+        while self.eval(&format!("return !!({condition});")).await? != Value::Bool(true) {
+            if start.elapsed() > timeout {
+                bail!("`{condition}` was still false after {}s", timeout.as_secs());
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        Ok(())
+    }
+
+    /// Runs a script body (use `return`) and returns its JSON result.
+    pub async fn eval(&self, script: &str) -> anyhow::Result<Value> {
+        self.client
+            .execute(script, vec![])
+            .await
+            .with_context(|| format!("script failed: {script}"))
+    }
+
+    /// Awaits a JS expression that may be a Promise and returns its JSON value.
+    pub async fn eval_async(&self, expression: &str) -> anyhow::Result<Value> {
+        let script = format!(
+            "const done = arguments[arguments.length - 1];\n\
+             Promise.resolve().then(() => ({expression}))\n\
+               .then((value) => done({{ ok: value === undefined ? null : value }}))\n\
+               .catch((err) => done({{ err: String(err && err.message || err) }}));"
+        );
+        let result = self
+            .client
+            .execute_async(&script, vec![])
+            .await
+            .with_context(|| format!("script failed: {expression}"))?;
+        match result.get("err") {
+            Some(err) => bail!("`{expression}` threw: {err}"),
+            None => Ok(result["ok"].clone()),
+        }
+    }
+
+    /// Sends a Chrome DevTools Protocol command through chromedriver.
+    pub async fn cdp(&self, command: &str, params: Value) -> anyhow::Result<Value> {
+        self.client
+            .issue_cmd(Cdp {
+                command: command.to_owned(),
+                params,
+            })
+            .await
+            .with_context(|| format!("CDP command {command} failed"))
+    }
+
+    /// Makes every request whose URL matches one of `patterns` (with `*`
+    /// wildcards) fail, as a broken network or a bad deploy would.
+    pub async fn block_urls(&self, patterns: &[&str]) -> anyhow::Result<()> {
+        self.cdp("Network.enable", json!({})).await?;
+        self.cdp("Network.setBlockedURLs", json!({ "urls": patterns }))
+            .await?;
+        Ok(())
+    }
+
+    /// `window.edgewise.state()`.
+    pub async fn state(&self) -> anyhow::Result<Value> {
+        self.eval("return window.edgewise.state();").await
+    }
+
+    /// The console messages of level SEVERE (console.error, uncaught
+    /// exceptions, failed loads) since the last call.
+    pub async fn console_errors(&self) -> anyhow::Result<Vec<String>> {
+        let logs = self
+            .client
+            .issue_cmd(BrowserLog)
+            .await
+            .context("cannot read the browser console")?;
+        Ok(logs
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter(|entry| entry["level"] == "SEVERE")
+            .map(|entry| entry["message"].as_str().unwrap_or_default().to_owned())
+            .collect())
+    }
+
+    /// Fails if the console has logged any error.
+    pub async fn assert_no_console_errors(&self) -> anyhow::Result<()> {
+        let errors = self.console_errors().await?;
+        if !errors.is_empty() {
+            bail!("the console logged errors:\n{}", errors.join("\n"));
+        }
+        Ok(())
+    }
+
+    /// Takes a screenshot, saves it as screenshots/`name`.png for people to
+    /// look at, and returns its pixels.
+    pub async fn screenshot(&self, name: &str) -> anyhow::Result<Screenshot> {
+        let bytes = self.client.screenshot().await.context("screenshot failed")?;
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("screenshots");
+        std::fs::create_dir_all(&dir)?;
+        let path = dir.join(format!("{name}.png"));
+        std::fs::write(&path, &bytes)?;
+        Screenshot::decode(&bytes, path)
+    }
+
+    /// Closes the browser session.
+    pub async fn close(self) -> anyhow::Result<()> {
+        self.client.close().await.context("cannot close the browser")
+    }
+}
+
+/// A decoded screenshot.
+pub struct Screenshot {
+    pub path: PathBuf,
+    pub width: u32,
+    pub height: u32,
+    /// RGBA pixels, row by row.
+    pub pixels: Vec<u8>,
+}
+
+impl Screenshot {
+    fn decode(bytes: &[u8], path: PathBuf) -> anyhow::Result<Self> {
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+        decoder.set_transformations(png::Transformations::EXPAND);
+        let mut reader = decoder.read_info()?;
+        let size = reader
+            .output_buffer_size()
+            .context("screenshot too large to decode")?;
+        let mut buf = vec![0; size];
+        let info = reader.next_frame(&mut buf)?;
+        buf.truncate(info.buffer_size());
+        let pixels = match info.color_type {
+            png::ColorType::Rgba => buf,
+            png::ColorType::Rgb => buf
+                .chunks_exact(3)
+                .flat_map(|p| [p[0], p[1], p[2], 255])
+                .collect(),
+            other => bail!("unexpected screenshot colour type {other:?}"),
+        };
+        Ok(Self {
+            path,
+            width: info.width,
+            height: info.height,
+            pixels,
+        })
+    }
+
+    /// The number of distinct colours, capped at `cap`.
+    pub fn distinct_colours(&self, cap: usize) -> usize {
+        let mut seen = std::collections::HashSet::new();
+        for pixel in self.pixels.chunks_exact(4) {
+            seen.insert([pixel[0], pixel[1], pixel[2]]);
+            if seen.len() >= cap {
+                break;
+            }
+        }
+        seen.len()
+    }
+
+    /// A blank screenshot is one flat colour, or nearly so: a canvas that
+    /// never drew, or a page that never loaded.
+    pub fn is_blank(&self) -> bool {
+        self.distinct_colours(16) < 16
+    }
+
+    /// The RGB colour at (x, y).
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
+        let i = ((y * self.width + x) * 4) as usize;
+        [self.pixels[i], self.pixels[i + 1], self.pixels[i + 2]]
+    }
+}
+
+/// Chromedriver's (non-standard) command for the browser console log.
+#[derive(Debug)]
+struct BrowserLog;
+
+impl WebDriverCompatibleCommand for BrowserLog {
+    fn endpoint(
+        &self,
+        base_url: &url::Url,
+        session_id: Option<&str>,
+    ) -> Result<url::Url, url::ParseError> {
+        base_url.join(&format!("session/{}/se/log", session_id.unwrap_or_default()))
+    }
+
+    fn method_and_body(
+        &self,
+        _request_url: &url::Url,
+    ) -> (http::Method, Option<String>) {
+        (
+            http::Method::POST,
+            Some(json!({ "type": "browser" }).to_string()),
+        )
+    }
+}
+
+/// Chromedriver's command for running a DevTools Protocol command.
+#[derive(Debug)]
+struct Cdp {
+    command: String,
+    params: Value,
+}
+
+impl WebDriverCompatibleCommand for Cdp {
+    fn endpoint(
+        &self,
+        base_url: &url::Url,
+        session_id: Option<&str>,
+    ) -> Result<url::Url, url::ParseError> {
+        base_url.join(&format!(
+            "session/{}/goog/cdp/execute",
+            session_id.unwrap_or_default()
+        ))
+    }
+
+    fn method_and_body(&self, _request_url: &url::Url) -> (http::Method, Option<String>) {
+        (
+            http::Method::POST,
+            Some(json!({ "cmd": self.command, "params": self.params }).to_string()),
+        )
+    }
+}
+
+async fn connect(
+    webdriver: &str,
+    caps: serde_json::Map<String, Value>,
+) -> anyhow::Result<Client> {
+    // chromedriver needs a moment to start listening.
+    let start = Instant::now();
+    loop {
+        match ClientBuilder::native()
+            .capabilities(caps.clone())
+            .connect(webdriver)
+            .await
+        {
+            Ok(client) => return Ok(client),
+            Err(err) if start.elapsed() > Duration::from_secs(20) => {
+                bail!("cannot start a Chromium session through chromedriver: {err}")
+            }
+            Err(_) => tokio::time::sleep(Duration::from_millis(200)).await,
+        }
+    }
+}
+
+fn env(name: &str) -> anyhow::Result<String> {
+    std::env::var(name).with_context(|| {
+        format!("{name} is not set: run the browser tests with `cargo xtask test` (or `cargo xtask browser-test`)")
+    })
+}
+
+fn free_port() -> anyhow::Result<u16> {
+    Ok(std::net::TcpListener::bind("127.0.0.1:0")?
+        .local_addr()?
+        .port())
+}
+
+/// A temporary directory removed on drop.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(prefix: &str) -> anyhow::Result<Self> {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_nanos())
+            .unwrap_or_default();
+        let dir = std::env::temp_dir().join(format!("{prefix}-{}-{nanos}", std::process::id()));
+        std::fs::create_dir_all(&dir)?;
+        Ok(Self(dir))
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        std::fs::remove_dir_all(&self.0).ok();
+    }
+}

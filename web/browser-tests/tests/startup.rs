@@ -1,0 +1,118 @@
+//! The page loads, the app starts, and failures are shown to the user.
+
+use std::time::Duration;
+
+use edgewise_browser_tests::{Browser, LaunchOptions};
+
+#[tokio::test]
+async fn app_starts_and_defines_its_api() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+
+    let version = browser.eval("return window.edgewise.version;").await?;
+    assert_eq!(version, env!("CARGO_PKG_VERSION"));
+
+    let backend = browser.eval("return window.edgewise.backend;").await?;
+    assert!(
+        backend == "webgpu" || backend == "webgl2",
+        "unexpected backend {backend}"
+    );
+
+    // state() is a plain object that survives a JSON round trip.
+    let state = browser.state().await?;
+    assert!(state.is_object(), "state() returned {state}");
+    assert_eq!(state["version"], version);
+    assert_eq!(state["backend"], backend);
+    let round_trip = browser
+        .eval("return JSON.parse(JSON.stringify(window.edgewise.state())).version;")
+        .await?;
+    assert_eq!(round_trip, version);
+
+    // The render loop is alive: frames keep coming.
+    browser
+        .wait_for("window.edgewise.state().frames >= 2", Duration::from_secs(30))
+        .await?;
+
+    // The loading message is gone once the app runs.
+    let loading = browser
+        .eval("return document.getElementById('edgewise_loading') !== null;")
+        .await?;
+    assert_eq!(loading, false);
+
+    let shot = browser.screenshot("startup").await?;
+    assert!(!shot.is_blank(), "{} is blank", shot.path.display());
+
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn the_page_shows_a_loading_message_until_the_app_runs() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    // The page as served, before any script runs.
+    browser.goto("").await?;
+    let html = browser
+        .eval_async("fetch(location.href).then((r) => r.text())")
+        .await?;
+    let html = html.as_str().unwrap_or_default();
+    assert!(html.contains("id=\"edgewise_loading\""), "no loading element");
+    assert!(html.contains("Loading Edgewise"), "no loading text");
+    // Nothing is fetched from other hosts.
+    assert!(!html.contains("http://") && !html.contains("https://"));
+    browser.close().await
+}
+
+#[tokio::test]
+async fn a_wasm_file_that_fails_to_load_gives_a_clear_message() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.block_urls(&["*.wasm"]).await?;
+    browser.goto("").await?;
+    browser
+        .wait_for(
+            "document.getElementById('edgewise_error').dataset.visible === 'true'",
+            Duration::from_secs(60),
+        )
+        .await?;
+    let message = browser
+        .eval("return document.getElementById('edgewise_error').textContent;")
+        .await?;
+    let message = message.as_str().unwrap_or_default();
+    assert!(
+        message.starts_with("Edgewise could not load"),
+        "unclear message: {message}"
+    );
+    let loading = browser
+        .eval("return document.getElementById('edgewise_loading') !== null;")
+        .await?;
+    assert_eq!(loading, false, "the loading message stays up beside the error");
+    let shot = browser.screenshot("wasm-blocked").await?;
+    assert!(!shot.is_blank());
+    browser.close().await
+}
+
+#[tokio::test]
+async fn without_webgl_or_webgpu_the_page_explains_why() -> anyhow::Result<()> {
+    let browser = Browser::launch_with(LaunchOptions {
+        without_3d: true,
+        ..LaunchOptions::default()
+    })
+    .await?;
+    browser.goto("").await?;
+    browser
+        .wait_for(
+            "document.getElementById('edgewise_error').dataset.visible === 'true'",
+            Duration::from_secs(120),
+        )
+        .await?;
+    let message = browser
+        .eval("return document.getElementById('edgewise_error').textContent;")
+        .await?;
+    let message = message.as_str().unwrap_or_default();
+    assert!(
+        message.contains("WebGPU or WebGL2"),
+        "unclear message: {message}"
+    );
+    let shot = browser.screenshot("no-3d").await?;
+    assert!(!shot.is_blank());
+    browser.close().await
+}
