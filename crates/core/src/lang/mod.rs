@@ -1,1 +1,137 @@
-//! The algorithm language: lexer, parser, checker, compiler and VM.
+//! The algorithm language of the journal paper's Appendix A, also accepting
+//! the dialect of the half-edge paper's Figure 5, extended with Integer and
+//! Boolean values, `null`, and `message`.
+//!
+//! Pipeline: [`lexer`] → [`parser`] (syntax tree in [`ast`]) → [`checker`]
+//! (names and types) → [`compiler`] (linear code, listed by [`disasm`]) →
+//! [`vm`] (runs on any [`Topology`]) → [`Trace`] (steps to walk through).
+//!
+//! ```text
+//! file        := algorithm-decl [ ";" ] { algorithm-decl [ ";" ] }
+//! algorithm-decl :=
+//!     "algorithm" ident "(" [ params ] ")" [ ":" mesh-type ] [ ";" ]
+//!     [ "structuretype" mesh-type [ ";" ] ]        (one of the two forms)
+//!     [ "description" string [ ";" ] ]
+//!     { "var" decls }
+//!     "begin" statement-list "end"
+//! params      := ident-list ":" type { (";" | ",") ident-list ":" type }
+//! decls       := ident-list ":" type { ";" ident-list ":" type } [ ";" ]
+//! statement-list := { statement ";" }     (";" optional before end/else/while)
+//! statement   := ident ":=" expr
+//!              | "if" expr "then" statement-list
+//!                    { "else" "if" expr "then" statement-list }
+//!                    [ "else" statement-list ] "end"
+//!              | "if" "(" expr ")" statement [ "else" statement ]
+//!              | "while" expr "do" statement-list "end"
+//!              | "do" statement-list "while" expr
+//!              | "do" statement-list "end"             (repeat until break)
+//!              | "begin" statement-list "end"
+//!              | "break" | "continue"
+//!              | ("mark" | "highlight") expr | expr "." ("mark" | "highlight")
+//!              | "message" string { "," expr }
+//! expr        := or-expr;  "or" < "and" < "not" < comparisons
+//!                (= == <> < <= > >=, not chained) < + - < * div mod < unary -
+//!                < postfix lookups (expr "." lookup) < primary
+//! primary     := ident | integer | "true" | "false" | "null" | "(" expr ")"
+//! mesh-type   := "WingedEdge" | "HalfEdge"
+//! type        := "Vertex" | "Edge" | "Face" | "Integer" | "Boolean"
+//! ```
+//! Keywords, type names, structure names and lookup names ignore case;
+//! variable names do not. `//` starts a comment.
+
+pub mod ast;
+pub mod checker;
+pub mod compiler;
+pub mod diagnostic;
+pub mod disasm;
+pub mod lexer;
+pub mod library;
+pub mod parser;
+pub mod token;
+pub mod topology;
+pub mod trace;
+pub mod types;
+pub mod vm;
+
+pub use compiler::Algorithm;
+pub use diagnostic::{Diagnostic, Severity, Span, render_all};
+pub use disasm::{disassemble, disassemble_all};
+pub use topology::{LookupError, Topology};
+pub use trace::{Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
+pub use types::{Element, ElementKind, Field, Structure, Type, Value};
+pub use vm::{DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, run};
+
+use std::sync::Arc;
+
+/// The compiled algorithms of one source file.
+#[derive(Clone, Debug)]
+pub struct Program {
+    pub source: Arc<str>,
+    pub algorithms: Vec<Arc<Algorithm>>,
+}
+
+impl Program {
+    /// Finds an algorithm by name (exact case first, then ignoring case).
+    pub fn algorithm(&self, name: &str) -> Option<&Arc<Algorithm>> {
+        self.algorithms.iter().find(|a| a.name == name).or_else(|| {
+            self.algorithms
+                .iter()
+                .find(|a| a.name.eq_ignore_ascii_case(name))
+        })
+    }
+
+    /// The algorithms' names, in file order.
+    pub fn names(&self) -> impl Iterator<Item = &str> {
+        self.algorithms.iter().map(|a| a.name.as_str())
+    }
+}
+
+/// Every problem in a file, at once: lexing, parsing and type errors.
+/// An empty list means [`compile`] will succeed.
+pub fn check(source: &str) -> Vec<Diagnostic> {
+    match compile(source) {
+        Ok(_) => Vec::new(),
+        Err(diagnostics) => diagnostics,
+    }
+}
+
+/// Parses, checks and compiles every algorithm in `source`.
+pub fn compile(source: &str) -> Result<Program, Vec<Diagnostic>> {
+    let (file, mut diagnostics) = parser::parse(source);
+    let scopes = checker::check_file(&file, source, &mut diagnostics);
+    if file.algorithms.is_empty() && diagnostics.is_empty() {
+        diagnostics.push(
+            Diagnostic::error(
+                Span::new(source.len(), source.len()),
+                "this file holds no algorithm",
+            )
+            .with_hint("an algorithm starts with `algorithm name(v : Vertex) : HalfEdge;`"),
+        );
+    }
+    if diagnostics.iter().any(Diagnostic::is_error) {
+        diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+        return Err(diagnostics);
+    }
+    let shared: Arc<str> = Arc::from(source);
+    let lines = diagnostic::LineIndex::new(source);
+    let mut algorithms = Vec::with_capacity(file.algorithms.len());
+    for (decl, scope) in file.algorithms.iter().zip(&scopes) {
+        match compiler::compile_algorithm(decl, scope, &shared, &lines) {
+            Ok(algorithm) => algorithms.push(Arc::new(algorithm)),
+            Err(diagnostic) => diagnostics.push(diagnostic),
+        }
+    }
+    if diagnostics.iter().any(Diagnostic::is_error) {
+        return Err(diagnostics);
+    }
+    Ok(Program {
+        source: shared,
+        algorithms,
+    })
+}
+
+/// Compiles `source` and renders any errors the way `edgewise check-alg`
+/// prints them, with `file` (if given) in front of each location.
+pub fn compile_rendered(source: &str, file: Option<&str>) -> Result<Program, String> {
+    compile(source).map_err(|diagnostics| render_all(&diagnostics, source, file))
+}

@@ -1,0 +1,175 @@
+//! The syntax tree, as parsed, before names and types are checked.
+
+use super::diagnostic::Span;
+use super::types::{Structure, Type};
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Ident {
+    pub name: String,
+    pub span: Span,
+}
+
+/// A file holds any number of algorithms.
+#[derive(Clone, Debug, Default)]
+pub struct SourceFile {
+    pub algorithms: Vec<AlgorithmDecl>,
+}
+
+#[derive(Clone, Debug)]
+pub struct AlgorithmDecl {
+    pub name: Ident,
+    pub params: Vec<VarDecl>,
+    /// `None` when neither `: HalfEdge` nor `structuretype …` was given (an error).
+    pub structure: Option<(Structure, Span)>,
+    pub description: Option<String>,
+    pub vars: Vec<VarDecl>,
+    pub body: Vec<Stmt>,
+    /// The `algorithm` keyword through the closing `end`.
+    pub span: Span,
+    /// The closing `end`, where the trace's last step (done) points.
+    pub end_span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct VarDecl {
+    pub name: Ident,
+    /// `None` when the type name was not understood (already reported).
+    pub ty: Option<Type>,
+    pub ty_span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    Mark,
+    Highlight,
+}
+
+#[derive(Clone, Debug)]
+pub struct Stmt {
+    pub kind: StmtKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub enum StmtKind {
+    Assign {
+        target: Ident,
+        value: Expr,
+    },
+    /// `if c then … else if c then … else … end`, or the half-edge paper's
+    /// `if (c) statement else statement`.
+    If {
+        arms: Vec<(Expr, Vec<Stmt>)>,
+        otherwise: Option<Vec<Stmt>>,
+    },
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+    },
+    DoWhile {
+        body: Vec<Stmt>,
+        cond: Expr,
+    },
+    /// `do … end`: repeats until `break`.
+    Loop {
+        body: Vec<Stmt>,
+    },
+    /// `begin … end`.
+    Block(Vec<Stmt>),
+    Break,
+    Continue,
+    Action {
+        action: Action,
+        target: Expr,
+    },
+    Message {
+        text: String,
+        args: Vec<Expr>,
+    },
+    /// A statement that did not parse (already reported).
+    Error,
+}
+
+#[derive(Clone, Debug)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    Neg,
+    Not,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    Eq,
+    NotEq,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    And,
+    Or,
+}
+
+impl BinaryOp {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            BinaryOp::Eq => "=",
+            BinaryOp::NotEq => "<>",
+            BinaryOp::Lt => "<",
+            BinaryOp::Le => "<=",
+            BinaryOp::Gt => ">",
+            BinaryOp::Ge => ">=",
+            BinaryOp::Add => "+",
+            BinaryOp::Sub => "-",
+            BinaryOp::Mul => "*",
+            BinaryOp::Div => "div",
+            BinaryOp::Mod => "mod",
+            BinaryOp::And => "and",
+            BinaryOp::Or => "or",
+        }
+    }
+
+    pub fn is_comparison(self) -> bool {
+        matches!(
+            self,
+            BinaryOp::Eq
+                | BinaryOp::NotEq
+                | BinaryOp::Lt
+                | BinaryOp::Le
+                | BinaryOp::Gt
+                | BinaryOp::Ge
+        )
+    }
+}
+
+#[derive(Clone, Debug)]
+pub enum ExprKind {
+    Name(String),
+    Lookup {
+        base: Box<Expr>,
+        field: Ident,
+    },
+    Integer(i32),
+    Boolean(bool),
+    Null,
+    Unary {
+        op: UnaryOp,
+        operand: Box<Expr>,
+    },
+    Binary {
+        op: BinaryOp,
+        left: Box<Expr>,
+        right: Box<Expr>,
+    },
+    /// An expression that did not parse (already reported).
+    Error,
+}

@@ -1,0 +1,554 @@
+//! Name resolution and type checking.
+//!
+//! The checker reports every problem it can find in one pass; an expression
+//! whose type is unknown because of an earlier error is typed `None`, which
+//! silences follow-on messages about it.
+
+use super::ast::*;
+use super::diagnostic::{Diagnostic, Span, nearest};
+use super::types::{ElementKind, Field, FieldError, Structure, Type};
+
+/// A parameter or declared variable. Parameters come first, in order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Variable {
+    pub name: String,
+    /// `None` only when the declared type was not understood (reported).
+    pub ty: Option<Type>,
+    pub is_param: bool,
+    pub span: Span,
+}
+
+/// The variables of one algorithm, in register order.
+#[derive(Clone, Debug, Default)]
+pub struct Scope {
+    pub variables: Vec<Variable>,
+}
+
+impl Scope {
+    pub fn find(&self, name: &str) -> Option<(usize, &Variable)> {
+        self.variables
+            .iter()
+            .enumerate()
+            .find(|(_, v)| v.name == name)
+    }
+}
+
+/// "an Edge", "a Vertex": for messages.
+pub fn with_article(ty: Type) -> String {
+    match ty {
+        Type::Edge | Type::Integer => format!("an {ty}"),
+        Type::Null => "null".to_owned(),
+        _ => format!("a {ty}"),
+    }
+}
+
+/// Checks a whole file: every algorithm, and that no two share a name.
+/// Returns each algorithm's scope, in file order.
+pub fn check_file(
+    file: &SourceFile,
+    source: &str,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<Scope> {
+    let mut scopes = Vec::with_capacity(file.algorithms.len());
+    for (i, algorithm) in file.algorithms.iter().enumerate() {
+        let earlier = file.algorithms.get(..i).unwrap_or(&[]);
+        if !algorithm.name.name.is_empty()
+            && earlier.iter().any(|a| a.name.name == algorithm.name.name)
+        {
+            diagnostics.push(Diagnostic::error(
+                algorithm.name.span,
+                format!(
+                    "an algorithm named `{}` is already defined in this file",
+                    algorithm.name.name
+                ),
+            ));
+        }
+        scopes.push(check_algorithm(algorithm, source, diagnostics));
+    }
+    scopes
+}
+
+pub fn check_algorithm(
+    decl: &AlgorithmDecl,
+    source: &str,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Scope {
+    let mut scope = Scope::default();
+    let declared = decl
+        .params
+        .iter()
+        .map(|p| (p, true))
+        .chain(decl.vars.iter().map(|v| (v, false)));
+    for (var, is_param) in declared {
+        if var.name.name.is_empty() {
+            continue;
+        }
+        if let Some((_, first)) = scope.find(&var.name.name) {
+            let what = if first.is_param {
+                "a parameter"
+            } else {
+                "a variable"
+            };
+            diagnostics.push(Diagnostic::error(
+                var.name.span,
+                format!(
+                    "`{}` is already declared as {what} of this algorithm",
+                    var.name.name
+                ),
+            ));
+            continue;
+        }
+        scope.variables.push(Variable {
+            name: var.name.name.clone(),
+            ty: var.ty,
+            is_param,
+            span: var.name.span,
+        });
+    }
+    let mut checker = Checker {
+        scope: &scope,
+        structure: decl.structure.map(|(s, _)| s),
+        algorithm: &decl.name.name,
+        source,
+        diagnostics,
+        loop_depth: 0,
+    };
+    checker.statements(&decl.body);
+    scope
+}
+
+struct Checker<'a> {
+    scope: &'a Scope,
+    structure: Option<Structure>,
+    algorithm: &'a str,
+    source: &'a str,
+    diagnostics: &'a mut Vec<Diagnostic>,
+    loop_depth: u32,
+}
+
+impl Checker<'_> {
+    fn error(&mut self, span: Span, message: String) {
+        self.diagnostics.push(Diagnostic::error(span, message));
+    }
+
+    fn error_with_hint(&mut self, span: Span, message: String, hint: String) {
+        self.diagnostics
+            .push(Diagnostic::error(span, message).with_hint(hint));
+    }
+
+    fn text(&self, span: Span) -> String {
+        span.text(self.source)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    fn statements(&mut self, statements: &[Stmt]) {
+        for statement in statements {
+            self.statement(statement);
+        }
+    }
+
+    fn in_loop(&mut self, body: &[Stmt]) {
+        self.loop_depth += 1;
+        self.statements(body);
+        self.loop_depth -= 1;
+    }
+
+    fn statement(&mut self, statement: &Stmt) {
+        match &statement.kind {
+            StmtKind::Assign { target, value } => self.assignment(target, value),
+            StmtKind::If { arms, otherwise } => {
+                for (cond, body) in arms {
+                    self.condition(cond);
+                    self.statements(body);
+                }
+                if let Some(body) = otherwise {
+                    self.statements(body);
+                }
+            }
+            StmtKind::While { cond, body } => {
+                self.condition(cond);
+                self.in_loop(body);
+            }
+            StmtKind::DoWhile { body, cond } => {
+                self.in_loop(body);
+                self.condition(cond);
+            }
+            StmtKind::Loop { body } => self.in_loop(body),
+            StmtKind::Block(body) => self.statements(body),
+            StmtKind::Break | StmtKind::Continue => {
+                if self.loop_depth == 0 {
+                    let word = if matches!(statement.kind, StmtKind::Break) {
+                        "break"
+                    } else {
+                        "continue"
+                    };
+                    self.error(
+                        statement.span,
+                        format!("`{word}` can only be used inside a loop"),
+                    );
+                }
+            }
+            StmtKind::Action { action, target } => self.action(*action, target),
+            StmtKind::Message { args, .. } => {
+                for arg in args {
+                    self.expr(arg);
+                }
+            }
+            StmtKind::Error => {}
+        }
+    }
+
+    fn assignment(&mut self, target: &Ident, value: &Expr) {
+        let value_type = self.expr(value);
+        let Some(target_type) = self.variable(&target.name, target.span) else {
+            return;
+        };
+        let Some(value_type) = value_type else { return };
+        if !target_type.accepts(value_type) {
+            self.error(
+                value.span,
+                format!(
+                    "cannot assign {} to `{}`, which is {}",
+                    describe_value(value_type),
+                    target.name,
+                    with_article(target_type)
+                ),
+            );
+        }
+    }
+
+    fn condition(&mut self, cond: &Expr) {
+        match self.expr(cond) {
+            Some(Type::Boolean) | None => {}
+            Some(ty) => {
+                let text = self.text(cond.span);
+                let message = format!(
+                    "a condition must be Boolean, but `{text}` is {}",
+                    with_article(ty)
+                );
+                if ty.element_kind().is_some() {
+                    self.error_with_hint(
+                        cond.span,
+                        message,
+                        format!("to test for a missing element, write `{text} <> null`"),
+                    );
+                } else {
+                    self.error(cond.span, message);
+                }
+            }
+        }
+    }
+
+    fn action(&mut self, action: Action, target: &Expr) {
+        let word = match action {
+            Action::Mark => "mark",
+            Action::Highlight => "highlight",
+        };
+        match self.expr(target) {
+            None | Some(Type::Vertex | Type::Edge | Type::Face) => {}
+            Some(Type::Null) => self.error(target.span, format!("cannot {word} null")),
+            Some(ty) => {
+                let text = self.text(target.span);
+                self.error_with_hint(
+                    target.span,
+                    format!(
+                        "only vertices, edges and faces can be {word}ed; `{text}` is {}",
+                        with_article(ty)
+                    ),
+                    format!("to show a value, write `message \"…\", {text}`"),
+                );
+            }
+        }
+    }
+
+    /// The type of a variable, reporting an unknown name.
+    fn variable(&mut self, name: &str, span: Span) -> Option<Type> {
+        if let Some((_, variable)) = self.scope.find(name) {
+            return variable.ty;
+        }
+        let message = format!("unknown variable `{name}`");
+        let names = self.scope.variables.iter().map(|v| v.name.as_str());
+        if let Some(near) = nearest(name, names) {
+            self.error_with_hint(span, message, format!("did you mean `{near}`?"));
+        } else if Field::all_names().any(|f| f.eq_ignore_ascii_case(name)) {
+            self.error_with_hint(
+                span,
+                message,
+                format!("`{name}` is a lookup: write it after an element, as in `e.{name}`"),
+            );
+        } else {
+            self.error_with_hint(
+                span,
+                message,
+                "declare it with `var` before `begin`".to_owned(),
+            );
+        }
+        None
+    }
+
+    fn expr(&mut self, expr: &Expr) -> Option<Type> {
+        match &expr.kind {
+            ExprKind::Name(name) => self.variable(name, expr.span),
+            ExprKind::Integer(_) => Some(Type::Integer),
+            ExprKind::Boolean(_) => Some(Type::Boolean),
+            ExprKind::Null => Some(Type::Null),
+            ExprKind::Error => None,
+            ExprKind::Lookup { base, field } => self.lookup(base, field),
+            ExprKind::Unary { op, operand } => {
+                let ty = self.expr(operand)?;
+                let (wanted, word) = match op {
+                    UnaryOp::Neg => (Type::Integer, "-"),
+                    UnaryOp::Not => (Type::Boolean, "not"),
+                };
+                if ty != wanted {
+                    let text = self.text(operand.span);
+                    self.error(
+                        operand.span,
+                        format!(
+                            "`{word}` needs {}, but `{text}` is {}",
+                            with_article(wanted),
+                            with_article(ty)
+                        ),
+                    );
+                    return None;
+                }
+                Some(wanted)
+            }
+            ExprKind::Binary { op, left, right } => {
+                let left_type = self.expr(left);
+                let right_type = self.expr(right);
+                self.binary(*op, expr.span, (left, left_type?), (right, right_type?))
+            }
+        }
+    }
+
+    fn binary(
+        &mut self,
+        op: BinaryOp,
+        span: Span,
+        left: (&Expr, Type),
+        right: (&Expr, Type),
+    ) -> Option<Type> {
+        let symbol = op.symbol();
+        let operand = match op {
+            BinaryOp::Eq | BinaryOp::NotEq => {
+                let (l, r) = (left.1, right.1);
+                let comparable = l == r
+                    || (l == Type::Null && (r.element_kind().is_some() || r == Type::Null))
+                    || (r == Type::Null && l.element_kind().is_some());
+                if !comparable {
+                    let hint = match (l.element_kind(), r.element_kind()) {
+                        (Some(_), Some(_)) => {
+                            "elements of different kinds are never equal; look up the matching kind first"
+                        }
+                        _ => "both sides must have the same type",
+                    };
+                    self.error_with_hint(
+                        span,
+                        format!(
+                            "cannot compare {} with {}",
+                            with_article(l),
+                            with_article(r)
+                        ),
+                        hint.to_owned(),
+                    );
+                    return None;
+                }
+                return Some(Type::Boolean);
+            }
+            BinaryOp::Lt
+            | BinaryOp::Le
+            | BinaryOp::Gt
+            | BinaryOp::Ge
+            | BinaryOp::Add
+            | BinaryOp::Sub
+            | BinaryOp::Mul
+            | BinaryOp::Div
+            | BinaryOp::Mod => Type::Integer,
+            BinaryOp::And | BinaryOp::Or => Type::Boolean,
+        };
+        for (side, ty) in [left, right] {
+            if ty != operand {
+                let text = self.text(side.span);
+                let mut message = format!(
+                    "`{symbol}` needs {} operands, but `{text}` is {}",
+                    operand,
+                    with_article(ty)
+                );
+                if op.is_comparison() && ty.element_kind().is_some() {
+                    message.push_str("; elements can only be compared with `=` and `<>`");
+                }
+                self.error(side.span, message);
+                return None;
+            }
+        }
+        Some(if op.is_comparison() {
+            Type::Boolean
+        } else {
+            operand
+        })
+    }
+
+    fn lookup(&mut self, base: &Expr, field: &Ident) -> Option<Type> {
+        let base_type = self.expr(base)?;
+        let name = field.name.as_str();
+        if name.eq_ignore_ascii_case("mark") || name.eq_ignore_ascii_case("highlight") {
+            self.error(
+                field.span,
+                format!("`.{name}` is a statement of its own, not a value"),
+            );
+            return None;
+        }
+        let Some(kind) = base_type.element_kind() else {
+            let text = self.text(base.span);
+            self.error(
+                field.span,
+                format!(
+                    "`{text}` is {}; only vertices, edges and faces have lookups",
+                    with_article(base_type)
+                ),
+            );
+            return None;
+        };
+        let structure = self.structure?;
+        match Field::resolve(structure, kind, name) {
+            Ok(field) => Some(Type::of_kind(field.result())),
+            Err(error) => {
+                self.lookup_error(structure, kind, field, &error);
+                None
+            }
+        }
+    }
+
+    fn lookup_error(
+        &mut self,
+        structure: Structure,
+        kind: ElementKind,
+        field: &Ident,
+        error: &FieldError,
+    ) {
+        let name = field.name.as_str();
+        let kind_name = Type::of_kind(kind);
+        let available: Vec<&str> = Field::names_for(structure, kind).collect();
+        let listing = format!(
+            "{kind_name} lookups in a {structure} structure: {}",
+            canonical_names(structure, kind).join(", ")
+        );
+        match error {
+            FieldError::Unknown => {
+                let hint = nearest(name, available.iter().copied())
+                    .map_or(listing, |near| format!("did you mean `{near}`?"));
+                self.error_with_hint(
+                    field.span,
+                    format!("unknown lookup `{name}` on {kind_name}"),
+                    hint,
+                );
+            }
+            FieldError::OtherStructure(other) => {
+                self.error_with_hint(
+                    field.span,
+                    format!(
+                        "`{name}` is a {} lookup, but `{}` walks a {structure} structure",
+                        other.prose(),
+                        self.algorithm
+                    ),
+                    listing,
+                );
+            }
+            FieldError::WrongElement(owner) => {
+                self.error_with_hint(
+                    field.span,
+                    format!(
+                        "{kind_name} has no lookup `{name}`; it is a lookup on {}",
+                        Type::of_kind(*owner)
+                    ),
+                    listing,
+                );
+            }
+        }
+    }
+}
+
+/// The canonical (non-alias) lookup names on `kind`, for hints.
+fn canonical_names(structure: Structure, kind: ElementKind) -> Vec<&'static str> {
+    let mut names: Vec<&'static str> = Vec::new();
+    for name in Field::names_for(structure, kind) {
+        if let Ok(field) = Field::resolve(structure, kind, name)
+            && field.name() == name
+        {
+            names.push(name);
+        }
+    }
+    names
+}
+
+fn describe_value(ty: Type) -> String {
+    match ty {
+        Type::Null => "null".to_owned(),
+        _ => with_article(ty),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::parser::parse;
+    use super::*;
+
+    fn errors(source: &str) -> Vec<String> {
+        let (file, mut diagnostics) = parse(source);
+        assert!(diagnostics.is_empty(), "{diagnostics:#?}");
+        check_file(&file, source, &mut diagnostics);
+        diagnostics
+            .iter()
+            .map(|d| {
+                format!(
+                    "{}{}",
+                    d.message,
+                    d.hint
+                        .as_ref()
+                        .map(|h| format!(" ({h})"))
+                        .unwrap_or_default()
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lookups_name_the_structure_that_has_them() {
+        let found = errors(
+            "algorithm a(e : Edge) : HalfEdge begin mark e.leftFace; mark e.startVertx; mark e.incidentEdge end",
+        );
+        assert_eq!(found.len(), 3, "{found:?}");
+        assert!(
+            found[0].starts_with(
+                "`leftFace` is a winged-edge lookup, but `a` walks a HalfEdge structure"
+            )
+        );
+        assert_eq!(
+            found[1],
+            "unknown lookup `startVertx` on Edge (did you mean `startVertex`?)"
+        );
+        assert!(
+            found[2].starts_with("Edge has no lookup `incidentEdge`; it is a lookup on Vertex")
+        );
+    }
+
+    #[test]
+    fn types_are_checked() {
+        let found = errors(
+            "algorithm a(v : Vertex) : WingedEdge var n : Integer; f : Face; begin n := v; f := null; if v.incidentEdge then break end; mark n; n := n + true end",
+        );
+        assert_eq!(
+            found,
+            [
+                "cannot assign a Vertex to `n`, which is an Integer",
+                "a condition must be Boolean, but `v.incidentEdge` is an Edge (to test for a missing element, write `v.incidentEdge <> null`)",
+                "`break` can only be used inside a loop",
+                "only vertices, edges and faces can be marked; `n` is an Integer (to show a value, write `message \"…\", n`)",
+                "`+` needs Integer operands, but `true` is a Boolean",
+            ]
+        );
+    }
+}

@@ -1,0 +1,618 @@
+//! Compiles a checked algorithm to linear code, as the papers' system did:
+//! jumps, lookups, assignments, comparisons, marks and so on, each carrying
+//! the source span of the expression it executes so the view can highlight
+//! exactly that piece of the line (the journal's Fig. 7).
+
+use super::ast::*;
+use super::checker::Scope;
+use super::diagnostic::{Diagnostic, LineIndex, Span};
+use super::types::{Field, Structure, Type, Value};
+use std::sync::Arc;
+
+/// A register number. Registers hold the variables (parameters first), then
+/// one register per intermediate value, then the constants.
+pub type Reg = u16;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompareOp {
+    Eq,
+    NotEq,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+}
+
+impl CompareOp {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            CompareOp::Eq => "=",
+            CompareOp::NotEq => "<>",
+            CompareOp::Lt => "<",
+            CompareOp::Le => "<=",
+            CompareOp::Gt => ">",
+            CompareOp::Ge => ">=",
+        }
+    }
+}
+
+/// Integer and Boolean arithmetic. `Neg` and `Not` use only the left operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ComputeOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Neg,
+    Not,
+}
+
+impl ComputeOp {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            ComputeOp::Add => "+",
+            ComputeOp::Sub | ComputeOp::Neg => "-",
+            ComputeOp::Mul => "*",
+            ComputeOp::Div => "div",
+            ComputeOp::Mod => "mod",
+            ComputeOp::Not => "not",
+        }
+    }
+
+    pub fn is_unary(self) -> bool {
+        matches!(self, ComputeOp::Neg | ComputeOp::Not)
+    }
+}
+
+/// One instruction. Lookup, Assign, Compare, Compute, Mark, Highlight,
+/// Message and Done each produce one trace step; Move and the jumps are
+/// bookkeeping and produce none.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Op {
+    Lookup {
+        dst: Reg,
+        base: Reg,
+        field: Field,
+    },
+    Assign {
+        var: Reg,
+        src: Reg,
+    },
+    Compare {
+        dst: Reg,
+        op: CompareOp,
+        left: Reg,
+        right: Reg,
+    },
+    Compute {
+        dst: Reg,
+        op: ComputeOp,
+        left: Reg,
+        right: Reg,
+    },
+    Move {
+        dst: Reg,
+        src: Reg,
+    },
+    Mark {
+        element: Reg,
+    },
+    Highlight {
+        element: Reg,
+    },
+    Message {
+        index: u32,
+    },
+    Jump {
+        target: u32,
+    },
+    JumpIf {
+        cond: Reg,
+        when: bool,
+        target: u32,
+    },
+    Done,
+}
+
+impl Op {
+    /// Whether executing this instruction records a trace step.
+    pub fn is_step(self) -> bool {
+        !matches!(self, Op::Move { .. } | Op::Jump { .. } | Op::JumpIf { .. })
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Instr {
+    pub op: Op,
+    /// The expression or statement executed.
+    pub span: Span,
+    /// The 1-based line of the span's start.
+    pub line: u32,
+}
+
+/// `message "text", args…`: the text and the registers of its values.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MessageTemplate {
+    pub text: String,
+    pub args: Vec<Reg>,
+}
+
+/// A parameter or variable of a compiled algorithm; its register is its index.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VariableInfo {
+    pub name: String,
+    pub ty: Type,
+    pub is_param: bool,
+}
+
+/// A compiled algorithm, ready to run on any mesh of its structure.
+#[derive(Clone, Debug)]
+pub struct Algorithm {
+    pub name: String,
+    pub description: Option<String>,
+    pub structure: Structure,
+    /// Parameters first, then declared variables.
+    pub variables: Vec<VariableInfo>,
+    /// The static type of every register, so trace steps can be stored as
+    /// bare 32-bit codes and decoded on demand.
+    pub registers: Vec<Type>,
+    pub constants: Vec<(Reg, Value)>,
+    pub messages: Vec<MessageTemplate>,
+    pub code: Vec<Instr>,
+    /// The whole file's text, shared by the algorithms compiled from it.
+    pub source: Arc<str>,
+    /// `algorithm` through the closing `end`.
+    pub span: Span,
+    pub first_line: u32,
+    pub last_line: u32,
+}
+
+impl Algorithm {
+    pub fn params(&self) -> impl Iterator<Item = &VariableInfo> {
+        self.variables.iter().take_while(|v| v.is_param)
+    }
+
+    pub fn param_count(&self) -> usize {
+        self.variables.iter().take_while(|v| v.is_param).count()
+    }
+
+    /// The algorithm's own source text, from `algorithm` to `end`.
+    pub fn text(&self) -> &str {
+        self.span.text(&self.source)
+    }
+
+    /// The source under `span` with runs of whitespace collapsed, for traces
+    /// and messages.
+    pub fn snippet(&self, span: Span) -> String {
+        span.text(&self.source)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    pub fn register_type(&self, reg: Reg) -> Type {
+        self.registers
+            .get(usize::from(reg))
+            .copied()
+            .unwrap_or(Type::Null)
+    }
+
+    /// A register's name in the disassembly: the variable's, `t5` for an
+    /// intermediate value, or the constant itself.
+    pub fn register_name(&self, reg: Reg) -> String {
+        if let Some(variable) = self.variables.get(usize::from(reg)) {
+            return variable.name.clone();
+        }
+        if let Some((_, value)) = self.constants.iter().find(|(r, _)| *r == reg) {
+            return value.to_string();
+        }
+        format!("t{reg}")
+    }
+
+    /// The header as written in the Neperud dialect, e.g.
+    /// `vertexAdjacentEdge(v : Vertex) : WingedEdge`.
+    pub fn signature(&self) -> String {
+        let params: Vec<String> = self
+            .params()
+            .map(|p| format!("{} : {}", p.name, p.ty))
+            .collect();
+        format!("{}({}) : {}", self.name, params.join("; "), self.structure)
+    }
+}
+
+/// Compiles one algorithm that passed the checker. Returns an error only for
+/// limits the checker does not know about (more than 65,535 registers).
+pub fn compile_algorithm(
+    decl: &AlgorithmDecl,
+    scope: &Scope,
+    source: &Arc<str>,
+    lines: &LineIndex,
+) -> Result<Algorithm, Diagnostic> {
+    let structure = decl.structure.map_or(Structure::WingedEdge, |(s, _)| s);
+    let variables: Vec<VariableInfo> = scope
+        .variables
+        .iter()
+        .map(|v| VariableInfo {
+            name: v.name.clone(),
+            ty: v.ty.unwrap_or(Type::Null),
+            is_param: v.is_param,
+        })
+        .collect();
+    let mut compiler = Compiler {
+        scope,
+        structure,
+        lines,
+        registers: variables.iter().map(|v| v.ty).collect(),
+        constants: Vec::new(),
+        messages: Vec::new(),
+        code: Vec::new(),
+        labels: Vec::new(),
+        loops: Vec::new(),
+        overflow: false,
+    };
+    compiler.statements(&decl.body);
+    compiler.emit(Op::Done, decl.end_span);
+    if compiler.overflow {
+        return Err(Diagnostic::error(
+            decl.name.span,
+            "this algorithm is too large to compile (over 65,535 values)",
+        ));
+    }
+    compiler.patch_jumps();
+    Ok(Algorithm {
+        name: decl.name.name.clone(),
+        description: decl.description.clone(),
+        structure,
+        variables,
+        registers: compiler.registers,
+        constants: compiler.constants,
+        messages: compiler.messages,
+        code: compiler.code,
+        source: Arc::clone(source),
+        span: decl.span,
+        first_line: lines.line(decl.span.start),
+        last_line: lines.line(decl.end_span.start),
+    })
+}
+
+type Label = u32;
+
+struct Loop {
+    break_to: Label,
+    continue_to: Label,
+}
+
+struct Compiler<'a> {
+    scope: &'a Scope,
+    structure: Structure,
+    lines: &'a LineIndex,
+    registers: Vec<Type>,
+    constants: Vec<(Reg, Value)>,
+    messages: Vec<MessageTemplate>,
+    code: Vec<Instr>,
+    /// Each label's instruction index, once placed.
+    labels: Vec<Option<u32>>,
+    loops: Vec<Loop>,
+    overflow: bool,
+}
+
+impl Compiler<'_> {
+    fn emit(&mut self, op: Op, span: Span) {
+        let line = self.lines.line(span.start);
+        self.code.push(Instr { op, span, line });
+    }
+
+    fn register(&mut self, ty: Type) -> Reg {
+        if let Ok(reg) = Reg::try_from(self.registers.len()) {
+            self.registers.push(ty);
+            reg
+        } else {
+            self.overflow = true;
+            0
+        }
+    }
+
+    fn constant(&mut self, value: Value, ty: Type) -> Reg {
+        if let Some(&(reg, _)) = self
+            .constants
+            .iter()
+            .find(|&&(reg, v)| v == value && self.registers.get(usize::from(reg)) == Some(&ty))
+        {
+            return reg;
+        }
+        let reg = self.register(ty);
+        self.constants.push((reg, value));
+        reg
+    }
+
+    fn new_label(&mut self) -> Label {
+        self.labels.push(None);
+        u32::try_from(self.labels.len() - 1).unwrap_or(u32::MAX)
+    }
+
+    fn place(&mut self, label: Label) {
+        let here = u32::try_from(self.code.len()).unwrap_or(u32::MAX);
+        if let Some(slot) = self.labels.get_mut(label as usize) {
+            *slot = Some(here);
+        }
+    }
+
+    /// Jumps are emitted with label numbers; this turns them into addresses.
+    fn patch_jumps(&mut self) {
+        let labels = &self.labels;
+        let resolve = |label: u32| labels.get(label as usize).copied().flatten().unwrap_or(0);
+        for instr in &mut self.code {
+            match &mut instr.op {
+                Op::Jump { target } | Op::JumpIf { target, .. } => *target = resolve(*target),
+                _ => {}
+            }
+        }
+    }
+
+    fn variable(&self, name: &str) -> Reg {
+        self.scope
+            .find(name)
+            .and_then(|(i, _)| Reg::try_from(i).ok())
+            .unwrap_or(0)
+    }
+
+    fn statements(&mut self, statements: &[Stmt]) {
+        for statement in statements {
+            self.statement(statement);
+        }
+    }
+
+    fn statement(&mut self, statement: &Stmt) {
+        let span = statement.span;
+        match &statement.kind {
+            StmtKind::Assign { target, value } => {
+                let src = self.expr(value);
+                let var = self.variable(&target.name);
+                self.emit(Op::Assign { var, src }, span);
+            }
+            StmtKind::If { arms, otherwise } => {
+                let end = self.new_label();
+                for (i, (cond, body)) in arms.iter().enumerate() {
+                    let next = self.new_label();
+                    self.jump_unless(cond, false, next);
+                    self.statements(body);
+                    if i + 1 < arms.len() || otherwise.is_some() {
+                        self.emit(Op::Jump { target: end }, span);
+                    }
+                    self.place(next);
+                }
+                if let Some(body) = otherwise {
+                    self.statements(body);
+                }
+                self.place(end);
+            }
+            StmtKind::While { cond, body } => {
+                let (top, end) = (self.new_label(), self.new_label());
+                self.place(top);
+                self.jump_unless(cond, false, end);
+                self.loop_body(body, end, top);
+                self.emit(Op::Jump { target: top }, cond.span);
+                self.place(end);
+            }
+            StmtKind::DoWhile { body, cond } => {
+                let (top, test, end) = (self.new_label(), self.new_label(), self.new_label());
+                self.place(top);
+                self.loop_body(body, end, test);
+                self.place(test);
+                self.jump_unless(cond, true, top);
+                self.place(end);
+            }
+            StmtKind::Loop { body } => {
+                let (top, end) = (self.new_label(), self.new_label());
+                self.place(top);
+                self.loop_body(body, end, top);
+                self.emit(Op::Jump { target: top }, span);
+                self.place(end);
+            }
+            StmtKind::Block(body) => self.statements(body),
+            StmtKind::Break => {
+                if let Some(target) = self.loops.last().map(|l| l.break_to) {
+                    self.emit(Op::Jump { target }, span);
+                }
+            }
+            StmtKind::Continue => {
+                if let Some(target) = self.loops.last().map(|l| l.continue_to) {
+                    self.emit(Op::Jump { target }, span);
+                }
+            }
+            StmtKind::Action { action, target } => {
+                let element = self.expr(target);
+                let op = match action {
+                    Action::Mark => Op::Mark { element },
+                    Action::Highlight => Op::Highlight { element },
+                };
+                self.emit(op, span);
+            }
+            StmtKind::Message { text, args } => {
+                let args = args.iter().map(|arg| self.expr(arg)).collect();
+                let index = u32::try_from(self.messages.len()).unwrap_or(u32::MAX);
+                self.messages.push(MessageTemplate {
+                    text: text.clone(),
+                    args,
+                });
+                self.emit(Op::Message { index }, span);
+            }
+            StmtKind::Error => {}
+        }
+    }
+
+    fn loop_body(&mut self, body: &[Stmt], break_to: Label, continue_to: Label) {
+        self.loops.push(Loop {
+            break_to,
+            continue_to,
+        });
+        self.statements(body);
+        self.loops.pop();
+    }
+
+    /// Emits code that jumps to `target` when `cond` evaluates to `when`,
+    /// short-circuiting `and`, `or` and `not` into jumps.
+    fn jump_unless(&mut self, cond: &Expr, when: bool, target: Label) {
+        match &cond.kind {
+            ExprKind::Boolean(value) => {
+                if *value == when {
+                    self.emit(Op::Jump { target }, cond.span);
+                }
+            }
+            ExprKind::Unary {
+                op: UnaryOp::Not,
+                operand,
+            } => self.jump_unless(operand, !when, target),
+            ExprKind::Binary {
+                op: op @ (BinaryOp::And | BinaryOp::Or),
+                left,
+                right,
+            } => {
+                // `a and b` is false as soon as `a` is; `a or b` true as soon as `a` is.
+                let decisive = *op == BinaryOp::Or;
+                if when == decisive {
+                    self.jump_unless(left, when, target);
+                    self.jump_unless(right, when, target);
+                } else {
+                    let skip = self.new_label();
+                    self.jump_unless(left, decisive, skip);
+                    self.jump_unless(right, when, target);
+                    self.place(skip);
+                }
+            }
+            _ => {
+                let reg = self.expr(cond);
+                self.emit(
+                    Op::JumpIf {
+                        cond: reg,
+                        when,
+                        target,
+                    },
+                    cond.span,
+                );
+            }
+        }
+    }
+
+    /// Emits code computing `expr` and returns the register holding it.
+    fn expr(&mut self, expr: &Expr) -> Reg {
+        let span = expr.span;
+        match &expr.kind {
+            ExprKind::Name(name) => self.variable(name),
+            ExprKind::Integer(n) => self.constant(Value::Integer(*n), Type::Integer),
+            ExprKind::Boolean(b) => self.constant(Value::Boolean(*b), Type::Boolean),
+            ExprKind::Null | ExprKind::Error => self.constant(Value::Null, Type::Null),
+            ExprKind::Lookup { base, field } => {
+                let base_reg = self.expr(base);
+                let kind = self.register_type(base_reg).element_kind();
+                let resolved =
+                    kind.and_then(|k| Field::resolve(self.structure, k, &field.name).ok());
+                let Some(field) = resolved else {
+                    return self.constant(Value::Null, Type::Null);
+                };
+                let dst = self.register(Type::of_kind(field.result()));
+                self.emit(
+                    Op::Lookup {
+                        dst,
+                        base: base_reg,
+                        field,
+                    },
+                    span,
+                );
+                dst
+            }
+            ExprKind::Unary { op, operand } => {
+                let left = self.expr(operand);
+                let (op, ty) = match op {
+                    UnaryOp::Neg => (ComputeOp::Neg, Type::Integer),
+                    UnaryOp::Not => (ComputeOp::Not, Type::Boolean),
+                };
+                let dst = self.register(ty);
+                self.emit(
+                    Op::Compute {
+                        dst,
+                        op,
+                        left,
+                        right: left,
+                    },
+                    span,
+                );
+                dst
+            }
+            ExprKind::Binary {
+                op: op @ (BinaryOp::And | BinaryOp::Or),
+                left,
+                right,
+            } => {
+                let dst = self.register(Type::Boolean);
+                let left = self.expr(left);
+                self.emit(Op::Move { dst, src: left }, span);
+                let done = self.new_label();
+                self.emit(
+                    Op::JumpIf {
+                        cond: dst,
+                        when: *op == BinaryOp::Or,
+                        target: done,
+                    },
+                    span,
+                );
+                let right = self.expr(right);
+                self.emit(Op::Move { dst, src: right }, span);
+                self.place(done);
+                dst
+            }
+            ExprKind::Binary { op, left, right } => {
+                let left = self.expr(left);
+                let right = self.expr(right);
+                let compare = match op {
+                    BinaryOp::Eq => Some(CompareOp::Eq),
+                    BinaryOp::NotEq => Some(CompareOp::NotEq),
+                    BinaryOp::Lt => Some(CompareOp::Lt),
+                    BinaryOp::Le => Some(CompareOp::Le),
+                    BinaryOp::Gt => Some(CompareOp::Gt),
+                    BinaryOp::Ge => Some(CompareOp::Ge),
+                    _ => None,
+                };
+                if let Some(op) = compare {
+                    let dst = self.register(Type::Boolean);
+                    self.emit(
+                        Op::Compare {
+                            dst,
+                            op,
+                            left,
+                            right,
+                        },
+                        span,
+                    );
+                    return dst;
+                }
+                let op = match op {
+                    BinaryOp::Add => ComputeOp::Add,
+                    BinaryOp::Sub => ComputeOp::Sub,
+                    BinaryOp::Mul => ComputeOp::Mul,
+                    BinaryOp::Div => ComputeOp::Div,
+                    _ => ComputeOp::Mod,
+                };
+                let dst = self.register(Type::Integer);
+                self.emit(
+                    Op::Compute {
+                        dst,
+                        op,
+                        left,
+                        right,
+                    },
+                    span,
+                );
+                dst
+            }
+        }
+    }
+
+    fn register_type(&self, reg: Reg) -> Type {
+        self.registers
+            .get(usize::from(reg))
+            .copied()
+            .unwrap_or(Type::Null)
+    }
+}

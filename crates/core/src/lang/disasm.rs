@@ -1,0 +1,133 @@
+//! A readable listing of compiled code (`edgewise disasm`), for students who
+//! want to see the "assembly" the papers' system ran.
+
+use super::compiler::{Algorithm, Op};
+use std::fmt::Write as _;
+
+/// Lists an algorithm's registers and instructions, one instruction a line,
+/// each with its source line and the source text it executes.
+pub fn disassemble(algorithm: &Algorithm) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "algorithm {}", algorithm.signature());
+    if let Some(description) = &algorithm.description {
+        let _ = writeln!(out, "  description: {description}");
+    }
+    let variables: Vec<String> = algorithm
+        .variables
+        .iter()
+        .map(|v| {
+            format!(
+                "{} : {}{}",
+                v.name,
+                v.ty,
+                if v.is_param { " (parameter)" } else { "" }
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        out,
+        "  variables: {}",
+        if variables.is_empty() {
+            "none".to_owned()
+        } else {
+            variables.join(", ")
+        }
+    );
+    let temporaries =
+        algorithm.registers.len() - algorithm.variables.len().min(algorithm.registers.len());
+    let _ = writeln!(
+        out,
+        "  registers: {} ({} for intermediate values and constants)",
+        algorithm.registers.len(),
+        temporaries
+    );
+    let width = algorithm.code.len().saturating_sub(1).to_string().len();
+    for (pc, instr) in algorithm.code.iter().enumerate() {
+        let text = instruction_text(algorithm, instr.op);
+        let source = algorithm.snippet(instr.span);
+        let _ = writeln!(
+            out,
+            "  {pc:>width$}  line {:<4} {text:<34} ; {source}",
+            instr.line
+        );
+    }
+    out
+}
+
+/// The disassembly of every algorithm, separated by blank lines.
+pub fn disassemble_all<'a>(algorithms: impl IntoIterator<Item = &'a Algorithm>) -> String {
+    algorithms
+        .into_iter()
+        .map(disassemble)
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
+    let name = |reg| algorithm.register_name(reg);
+    match op {
+        Op::Lookup { dst, base, field } => {
+            format!("lookup   {} := {}.{field}", name(dst), name(base))
+        }
+        Op::Assign { var, src } => format!("assign   {} := {}", name(var), name(src)),
+        Op::Compare {
+            dst,
+            op,
+            left,
+            right,
+        } => {
+            format!(
+                "compare  {} := {} {} {}",
+                name(dst),
+                name(left),
+                op.symbol(),
+                name(right)
+            )
+        }
+        Op::Compute {
+            dst,
+            op,
+            left,
+            right,
+        } => {
+            if op.is_unary() {
+                format!("compute  {} := {} {}", name(dst), op.symbol(), name(left))
+            } else {
+                format!(
+                    "compute  {} := {} {} {}",
+                    name(dst),
+                    name(left),
+                    op.symbol(),
+                    name(right)
+                )
+            }
+        }
+        Op::Move { dst, src } => format!("move     {} := {}", name(dst), name(src)),
+        Op::Mark { element } => format!("mark     {}", name(element)),
+        Op::Highlight { element } => format!("highlight {}", name(element)),
+        Op::Message { index } => {
+            let template = algorithm.messages.get(index as usize);
+            let text = template.map_or("", |t| t.text.as_str());
+            let args: Vec<String> = template
+                .map(|t| t.args.iter().map(|&r| name(r)).collect())
+                .unwrap_or_default();
+            if args.is_empty() {
+                format!("message  \"{text}\"")
+            } else {
+                format!("message  \"{text}\", {}", args.join(", "))
+            }
+        }
+        Op::Jump { target } => format!("jump     {target}"),
+        Op::JumpIf {
+            cond,
+            when: true,
+            target,
+        } => format!("jumpif   {} -> {target}", name(cond)),
+        Op::JumpIf {
+            cond,
+            when: false,
+            target,
+        } => format!("jumpif   not {} -> {target}", name(cond)),
+        Op::Done => "done".to_owned(),
+    }
+}

@@ -1,0 +1,25 @@
+//! The algorithm library shipped with Edgewise: the papers' built-in
+//! algorithms and exercises, for both structures, compiled into the binary.
+
+use super::{Program, compile_rendered};
+
+/// The library's source files: (file name, text).
+pub const SOURCES: [(&str, &str); 2] = [
+    (
+        "winged-edge.alg",
+        include_str!("../../../../algorithms/winged-edge.alg"),
+    ),
+    (
+        "half-edge.alg",
+        include_str!("../../../../algorithms/half-edge.alg"),
+    ),
+];
+
+/// Compiles every library file. An error here is a bug in a shipped file,
+/// which the tests rule out; it is returned rendered rather than panicking.
+pub fn load() -> Result<Vec<Program>, String> {
+    SOURCES
+        .iter()
+        .map(|(name, text)| compile_rendered(text, Some(name)))
+        .collect()
+}

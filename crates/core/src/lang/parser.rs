@@ -1,0 +1,970 @@
+//! The recursive-descent parser. Each function parses one rule of the
+//! grammar (see the module documentation of `lang`) and is named after it.
+//!
+//! The parser never stops at the first error: a missing token is reported and
+//! assumed, a broken expression becomes [`ExprKind::Error`], and a statement
+//! that cannot be understood is skipped up to the next `;`, so one run reports
+//! every independent mistake in a file.
+
+use super::ast::*;
+use super::diagnostic::{Diagnostic, LineIndex, Span};
+use super::lexer::tokenize;
+use super::token::{Token, TokenKind as T};
+use super::types::{Structure, Type};
+
+/// Parses a whole file. The tree is usable (with error nodes) even when
+/// diagnostics were reported.
+pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
+    let (tokens, diagnostics) = tokenize(source);
+    let mut parser = Parser {
+        source,
+        lines: LineIndex::new(source),
+        tokens,
+        pos: 0,
+        diagnostics,
+    };
+    let file = parser.file();
+    (file, parser.diagnostics)
+}
+
+struct Parser<'s> {
+    source: &'s str,
+    lines: LineIndex,
+    tokens: Vec<Token>,
+    pos: usize,
+    diagnostics: Vec<Diagnostic>,
+}
+
+/// Tokens that may begin a statement, used to decide whether a missing `;`
+/// can simply be assumed.
+const STATEMENT_STARTS: &[T] = &[
+    T::Ident,
+    T::If,
+    T::While,
+    T::Do,
+    T::Begin,
+    T::Break,
+    T::Continue,
+    T::Mark,
+    T::Highlight,
+    T::Message,
+];
+
+impl Parser<'_> {
+    // ---- token helpers ----
+
+    fn token(&self) -> Token {
+        self.token_at(0)
+    }
+
+    fn token_at(&self, ahead: usize) -> Token {
+        let last = self.tokens.len().saturating_sub(1);
+        self.tokens
+            .get((self.pos + ahead).min(last))
+            .copied()
+            .unwrap_or(Token {
+                kind: T::Eof,
+                span: Span::default(),
+            })
+    }
+
+    fn peek(&self) -> T {
+        self.token().kind
+    }
+
+    fn at(&self, kind: T) -> bool {
+        self.peek() == kind
+    }
+
+    fn bump(&mut self) -> Token {
+        let token = self.token();
+        if token.kind != T::Eof {
+            self.pos += 1;
+        }
+        token
+    }
+
+    fn eat(&mut self, kind: T) -> Option<Token> {
+        if self.at(kind) {
+            Some(self.bump())
+        } else {
+            None
+        }
+    }
+
+    fn previous_span(&self) -> Span {
+        self.pos
+            .checked_sub(1)
+            .and_then(|i| self.tokens.get(i))
+            .map_or(Span::default(), |t| t.span)
+    }
+
+    fn text(&self, span: Span) -> &str {
+        span.text(self.source)
+    }
+
+    fn found(&self) -> String {
+        let token = self.token();
+        match token.kind {
+            T::Ident | T::Integer | T::String => format!("`{}`", self.text(token.span)),
+            kind => kind.to_string(),
+        }
+    }
+
+    /// Records an error unless one was already reported at the same place,
+    /// which keeps one mistake from producing a cascade of messages.
+    fn report(&mut self, diagnostic: Diagnostic) {
+        if self
+            .diagnostics
+            .iter()
+            .any(|d| d.span.start == diagnostic.span.start)
+        {
+            return;
+        }
+        self.diagnostics.push(diagnostic);
+    }
+
+    fn error_here(&mut self, message: String) {
+        let span = self.token().span;
+        self.report(Diagnostic::error(span, message));
+    }
+
+    /// Consumes `kind` or reports that it was expected (and carries on as if
+    /// it had been there).
+    fn expect(&mut self, kind: T, context: &str) -> Option<Token> {
+        if let Some(token) = self.eat(kind) {
+            return Some(token);
+        }
+        let message = format!("expected {kind} {context}, found {}", self.found());
+        self.error_here(message);
+        None
+    }
+
+    fn line_of(&self, span: Span) -> u32 {
+        self.lines.line(span.start)
+    }
+
+    /// Skips to just past the next `;`, or to a token that closes a block.
+    fn synchronize(&mut self) {
+        loop {
+            match self.peek() {
+                T::Semicolon => {
+                    self.bump();
+                    return;
+                }
+                T::End | T::Else | T::Algorithm | T::Eof => return,
+                _ => {
+                    self.bump();
+                }
+            }
+        }
+    }
+
+    // ---- file := algorithm-declaration [ ; ] … ----
+
+    fn file(&mut self) -> SourceFile {
+        let mut file = SourceFile::default();
+        while !self.at(T::Eof) {
+            if self.at(T::Algorithm) {
+                file.algorithms.push(self.algorithm_declaration());
+            } else {
+                let message = format!("expected `algorithm`, found {}", self.found());
+                self.error_here(message);
+                while !matches!(self.peek(), T::Algorithm | T::Eof) {
+                    self.bump();
+                }
+            }
+        }
+        file
+    }
+
+    // ---- algorithm-declaration ----
+
+    fn algorithm_declaration(&mut self) -> AlgorithmDecl {
+        let start = self.bump().span;
+        let name = self.identifier("as the algorithm's name");
+        self.expect(T::LParen, "after the algorithm's name");
+        let params = if self.at(T::RParen) {
+            Vec::new()
+        } else {
+            self.parameter_list()
+        };
+        self.expect(T::RParen, "after the parameters");
+
+        let mut structure = None;
+        if self.eat(T::Colon).is_some() {
+            structure = self.mesh_type();
+        }
+        self.eat(T::Semicolon);
+        if self.eat(T::StructureType).is_some() {
+            let declared = self.mesh_type();
+            if let (Some((first, _)), Some((second, span))) = (structure, declared)
+                && first != second
+            {
+                self.report(Diagnostic::error(
+                    span,
+                    format!("the structure type is given twice, as {first} and as {second}"),
+                ));
+            }
+            structure = structure.or(declared);
+            self.eat(T::Semicolon);
+        }
+        let mut description = None;
+        if self.eat(T::Description).is_some() {
+            if let Some(token) = self.expect(T::String, "after `description`") {
+                description = Some(string_contents(self.text(token.span)));
+            }
+            self.eat(T::Semicolon);
+        }
+        let mut vars = Vec::new();
+        while self.eat(T::Var).is_some() {
+            while self.at(T::Ident) {
+                vars.extend(self.declaration_group());
+                if self.eat(T::Semicolon).is_none() {
+                    break;
+                }
+            }
+        }
+        if !self.at(T::Begin) && structure.is_none() && self.at(T::Ident) {
+            // `algorithm f(v : Vertex) HalfEdge;` — a forgotten colon.
+            structure = self.mesh_type();
+            self.eat(T::Semicolon);
+        }
+        self.expect(T::Begin, "before the algorithm's statements");
+        let body = self.statement_list(false);
+        let end_span = match self.eat(T::End) {
+            Some(token) => token.span,
+            None => {
+                let message = format!(
+                    "expected `end` to close algorithm `{}` (line {}), found {}",
+                    name.name,
+                    self.line_of(start),
+                    self.found()
+                );
+                self.error_here(message);
+                self.previous_span().after()
+            }
+        };
+        self.eat(T::Semicolon);
+        if structure.is_none() {
+            self.report(
+                Diagnostic::error(name.span, format!("algorithm `{}` does not say which structure it walks", name.name))
+                    .with_hint("add `structuretype WingedEdge` (or HalfEdge) after the header, or `: HalfEdge` after the parameters"),
+            );
+        }
+        AlgorithmDecl {
+            name,
+            params,
+            structure,
+            description,
+            vars,
+            body,
+            span: start.to(end_span),
+            end_span,
+        }
+    }
+
+    fn identifier(&mut self, context: &str) -> Ident {
+        if let Some(token) = self.eat(T::Ident) {
+            return Ident {
+                name: self.text(token.span).to_owned(),
+                span: token.span,
+            };
+        }
+        let token = self.token();
+        let message = if token.kind.is_keyword() {
+            format!(
+                "`{}` is a keyword and cannot be used {context}",
+                self.text(token.span)
+            )
+        } else {
+            format!("expected a name {context}, found {}", self.found())
+        };
+        self.error_here(message);
+        Ident {
+            name: String::new(),
+            span: token.span,
+        }
+    }
+
+    fn mesh_type(&mut self) -> Option<(Structure, Span)> {
+        let token = self.token();
+        if token.kind == T::Ident {
+            self.bump();
+            let word = self.text(token.span);
+            if let Some(structure) = Structure::parse(word) {
+                return Some((structure, token.span));
+            }
+            let hint = super::diagnostic::nearest(word, ["WingedEdge", "HalfEdge"]).map_or_else(
+                || "the structure types are WingedEdge and HalfEdge".to_owned(),
+                |n| format!("did you mean `{n}`?"),
+            );
+            self.report(
+                Diagnostic::error(token.span, format!("unknown structure type `{word}`"))
+                    .with_hint(hint),
+            );
+        } else {
+            let message = format!(
+                "expected a structure type (WingedEdge or HalfEdge), found {}",
+                self.found()
+            );
+            self.error_here(message);
+        }
+        None
+    }
+
+    // ---- parameter-list := identifier-list : type [ ; identifier-list : type ]* ----
+
+    fn parameter_list(&mut self) -> Vec<VarDecl> {
+        let mut params = Vec::new();
+        loop {
+            params.extend(self.declaration_group());
+            // The grammar separates groups with `;`; a `,` is accepted too.
+            if self.eat(T::Semicolon).is_none() && self.eat(T::Comma).is_none() {
+                return params;
+            }
+        }
+    }
+
+    /// identifier-list : type
+    fn declaration_group(&mut self) -> Vec<VarDecl> {
+        let mut names = vec![self.identifier("in a declaration")];
+        while self.eat(T::Comma).is_some() {
+            names.push(self.identifier("in a declaration"));
+        }
+        self.expect(T::Colon, "between the names and their type");
+        let (ty, ty_span) = self.type_name();
+        names
+            .into_iter()
+            .map(|name| VarDecl { name, ty, ty_span })
+            .collect()
+    }
+
+    fn type_name(&mut self) -> (Option<Type>, Span) {
+        let token = self.token();
+        if token.kind != T::Ident {
+            let message = format!(
+                "expected a type (Vertex, Edge, Face, Integer or Boolean), found {}",
+                self.found()
+            );
+            self.error_here(message);
+            return (None, token.span);
+        }
+        self.bump();
+        let word = self.text(token.span);
+        if let Some(ty) = Type::parse(word) {
+            return (Some(ty), token.span);
+        }
+        let diagnostic = Diagnostic::error(token.span, format!("unknown type `{word}`"));
+        let diagnostic = if Structure::parse(word).is_some() {
+            diagnostic.with_hint(format!(
+                "{word} is a structure type; its edges have type Edge"
+            ))
+        } else if let Some(near) =
+            super::diagnostic::nearest(word, Type::DECLARABLE.iter().map(|t| t.name()))
+        {
+            diagnostic.with_hint(format!("did you mean `{near}`?"))
+        } else {
+            diagnostic.with_hint("the types are Vertex, Edge, Face, Integer and Boolean")
+        };
+        self.report(diagnostic);
+        (None, token.span)
+    }
+
+    // ---- statement-list := statement ; [ statement ; ]* ----
+
+    /// Parses statements up to `end`, `else` or (inside a `do` body) the
+    /// `while` that closes the loop. The `;` before those is optional.
+    fn statement_list(&mut self, in_do_body: bool) -> Vec<Stmt> {
+        let mut statements = Vec::new();
+        loop {
+            while self.eat(T::Semicolon).is_some() {}
+            match self.peek() {
+                T::End | T::Else | T::Eof | T::Algorithm => return statements,
+                T::While if in_do_body && self.while_closes_do() => return statements,
+                _ => {}
+            }
+            let before = self.pos;
+            let statement = self.statement();
+            if self.pos == before {
+                let message = format!("expected a statement, found {}", self.found());
+                self.error_here(message);
+                self.synchronize();
+                continue;
+            }
+            let failed = matches!(statement.kind, StmtKind::Error);
+            let end = statement.span;
+            statements.push(statement);
+            if failed {
+                continue;
+            }
+            if self.eat(T::Semicolon).is_some() {
+                continue;
+            }
+            match self.peek() {
+                T::End | T::Else | T::Eof => {}
+                T::While if in_do_body => {}
+                kind => {
+                    self.report(Diagnostic::error(
+                        end.after(),
+                        "expected `;` after this statement",
+                    ));
+                    if !STATEMENT_STARTS.contains(&kind) {
+                        self.synchronize();
+                    }
+                }
+            }
+        }
+    }
+
+    /// In a `do` body, tells the `while` that closes the loop from a nested
+    /// `while … do` statement: only the latter has a `do` after its condition.
+    fn while_closes_do(&self) -> bool {
+        let mut ahead = 1;
+        loop {
+            match self.token_at(ahead).kind {
+                T::Do => return false,
+                T::Semicolon
+                | T::End
+                | T::Else
+                | T::Begin
+                | T::Then
+                | T::Eof
+                | T::Algorithm
+                | T::While => return true,
+                _ => ahead += 1,
+            }
+        }
+    }
+
+    fn statement(&mut self) -> Stmt {
+        let start = self.token().span;
+        let kind = match self.peek() {
+            T::If => return self.if_statement(),
+            T::While => return self.while_statement(),
+            T::Do => return self.do_statement(),
+            T::Begin => {
+                self.bump();
+                let body = self.statement_list(false);
+                self.close_with_end("begin", start);
+                StmtKind::Block(body)
+            }
+            T::Break => {
+                self.bump();
+                StmtKind::Break
+            }
+            T::Continue => {
+                self.bump();
+                StmtKind::Continue
+            }
+            T::Mark | T::Highlight => {
+                let action = if self.bump().kind == T::Mark {
+                    Action::Mark
+                } else {
+                    Action::Highlight
+                };
+                let target = self.expression();
+                StmtKind::Action { action, target }
+            }
+            T::Message => self.message_statement(),
+            T::Ident => return self.identifier_statement(),
+            _ => {
+                return Stmt {
+                    kind: StmtKind::Error,
+                    span: start,
+                };
+            }
+        };
+        Stmt {
+            kind,
+            span: start.to(self.previous_span()),
+        }
+    }
+
+    fn close_with_end(&mut self, construct: &str, opened: Span) {
+        if self.eat(T::End).is_none() {
+            let message = format!(
+                "expected `end` to close the `{construct}` on line {}, found {}",
+                self.line_of(opened),
+                self.found()
+            );
+            self.error_here(message);
+        }
+    }
+
+    /// An assignment, or the half-edge paper's `e.mark;` / `v.highlight;`.
+    fn identifier_statement(&mut self) -> Stmt {
+        let target = self.postfix_expression();
+        let start = target.span;
+        let finish = |this: &Self, kind| Stmt {
+            kind,
+            span: start.to(this.previous_span()),
+        };
+        match self.peek() {
+            T::Assign | T::Eq | T::EqEq => {
+                let operator = self.bump();
+                if operator.kind != T::Assign {
+                    self.report(
+                        Diagnostic::error(
+                            operator.span,
+                            format!(
+                                "`{}` compares values; assignment is written `:=`",
+                                self.text(operator.span)
+                            ),
+                        )
+                        .with_hint("did you mean `:=`?"),
+                    );
+                }
+                let value = self.expression();
+                match target.kind {
+                    ExprKind::Name(name) => finish(
+                        self,
+                        StmtKind::Assign {
+                            target: Ident {
+                                name,
+                                span: target.span,
+                            },
+                            value,
+                        },
+                    ),
+                    _ => {
+                        self.report(
+                            Diagnostic::error(target.span, "only a variable can be assigned to")
+                                .with_hint(
+                                    "algorithms read the mesh's tables but never change them",
+                                ),
+                        );
+                        finish(self, StmtKind::Error)
+                    }
+                }
+            }
+            _ => {
+                if let ExprKind::Lookup { base, field } = &target.kind {
+                    let action = if field.name.eq_ignore_ascii_case("mark") {
+                        Some(Action::Mark)
+                    } else if field.name.eq_ignore_ascii_case("highlight") {
+                        Some(Action::Highlight)
+                    } else {
+                        None
+                    };
+                    if let Some(action) = action {
+                        return finish(
+                            self,
+                            StmtKind::Action {
+                                action,
+                                target: (**base).clone(),
+                            },
+                        );
+                    }
+                }
+                let text = self.text(target.span).to_owned();
+                let hint = match target.kind {
+                    ExprKind::Name(_) => format!(
+                        "to change `{text}`, write `{text} := …`; to output it, `mark {text}`"
+                    ),
+                    _ => format!(
+                        "a lookup on its own does nothing; to output it, write `mark {text}`"
+                    ),
+                };
+                let message = format!("expected `:=` after `{text}`, found {}", self.found());
+                self.report(Diagnostic::error(self.token().span, message).with_hint(hint));
+                self.synchronize();
+                Stmt {
+                    kind: StmtKind::Error,
+                    span: start,
+                }
+            }
+        }
+    }
+
+    fn message_statement(&mut self) -> StmtKind {
+        self.bump();
+        let text = match self.expect(T::String, "after `message`") {
+            Some(token) => string_contents(self.text(token.span)),
+            None => String::new(),
+        };
+        let mut args = Vec::new();
+        while self.eat(T::Comma).is_some() {
+            args.push(self.expression());
+        }
+        StmtKind::Message { text, args }
+    }
+
+    // if-statement := if expr then statement-list [ else if expr then statement-list ]* [ else statement-list ] end
+    //               | if ( expr ) statement [ else statement ]        (half-edge paper)
+    fn if_statement(&mut self) -> Stmt {
+        let start = self.bump().span;
+        let parenthesized = self.at(T::LParen);
+        let cond = self.expression();
+        let closed_by_paren = parenthesized
+            && self
+                .pos
+                .checked_sub(1)
+                .and_then(|i| self.tokens.get(i))
+                .is_some_and(|t| t.kind == T::RParen);
+        if self.at(T::Then) || !closed_by_paren {
+            self.expect(T::Then, "after the condition");
+            let mut arms = vec![(cond, self.statement_list(false))];
+            let mut otherwise = None;
+            while self.eat(T::Else).is_some() {
+                if self.eat(T::If).is_some() {
+                    let cond = self.expression();
+                    self.expect(T::Then, "after the condition");
+                    arms.push((cond, self.statement_list(false)));
+                } else {
+                    otherwise = Some(self.statement_list(false));
+                    break;
+                }
+            }
+            self.close_with_end("if", start);
+            return Stmt {
+                kind: StmtKind::If { arms, otherwise },
+                span: start.to(self.previous_span()),
+            };
+        }
+        let then_branch = self.single_statement();
+        if self.at(T::Semicolon) && self.token_at(1).kind == T::Else {
+            self.bump();
+        }
+        let otherwise = if self.eat(T::Else).is_some() {
+            Some(vec![self.single_statement()])
+        } else {
+            None
+        };
+        Stmt {
+            kind: StmtKind::If {
+                arms: vec![(cond, vec![then_branch])],
+                otherwise,
+            },
+            span: start.to(self.previous_span()),
+        }
+    }
+
+    fn single_statement(&mut self) -> Stmt {
+        let before = self.pos;
+        let statement = self.statement();
+        if self.pos == before {
+            let message = format!("expected a statement, found {}", self.found());
+            self.error_here(message);
+        }
+        statement
+    }
+
+    // while-statement := while expr do statement-list end
+    fn while_statement(&mut self) -> Stmt {
+        let start = self.bump().span;
+        let cond = self.expression();
+        self.expect(T::Do, "after the loop's condition");
+        let body = self.statement_list(false);
+        self.close_with_end("while", start);
+        Stmt {
+            kind: StmtKind::While { cond, body },
+            span: start.to(self.previous_span()),
+        }
+    }
+
+    // do-while-statement := do statement-list while expr
+    // do-statement       := do statement-list end
+    // (`do begin … end while (c)` is a do-while whose body is one block.)
+    fn do_statement(&mut self) -> Stmt {
+        let start = self.bump().span;
+        let body = self.statement_list(true);
+        let kind = if self.eat(T::While).is_some() {
+            let cond = self.expression();
+            StmtKind::DoWhile { body, cond }
+        } else {
+            if self.eat(T::End).is_none() {
+                let message = format!(
+                    "expected `while` or `end` to close the `do` on line {}, found {}",
+                    self.line_of(start),
+                    self.found()
+                );
+                self.error_here(message);
+            }
+            StmtKind::Loop { body }
+        };
+        Stmt {
+            kind,
+            span: start.to(self.previous_span()),
+        }
+    }
+
+    // ---- expressions, loosest first ----
+
+    fn expression(&mut self) -> Expr {
+        self.or_expression()
+    }
+
+    fn binary(op: BinaryOp, left: Expr, right: Expr) -> Expr {
+        let span = left.span.to(right.span);
+        Expr {
+            kind: ExprKind::Binary {
+                op,
+                left: Box::new(left),
+                right: Box::new(right),
+            },
+            span,
+        }
+    }
+
+    fn or_expression(&mut self) -> Expr {
+        let mut left = self.and_expression();
+        while self.eat(T::Or).is_some() {
+            let right = self.and_expression();
+            left = Self::binary(BinaryOp::Or, left, right);
+        }
+        left
+    }
+
+    fn and_expression(&mut self) -> Expr {
+        let mut left = self.not_expression();
+        while self.eat(T::And).is_some() {
+            let right = self.not_expression();
+            left = Self::binary(BinaryOp::And, left, right);
+        }
+        left
+    }
+
+    fn not_expression(&mut self) -> Expr {
+        if let Some(token) = self.eat(T::Not) {
+            let operand = self.not_expression();
+            let span = token.span.to(operand.span);
+            return Expr {
+                kind: ExprKind::Unary {
+                    op: UnaryOp::Not,
+                    operand: Box::new(operand),
+                },
+                span,
+            };
+        }
+        self.comparison()
+    }
+
+    fn comparison_operator(&mut self) -> Option<BinaryOp> {
+        let op = match self.peek() {
+            T::Eq | T::EqEq => BinaryOp::Eq,
+            T::NotEq => BinaryOp::NotEq,
+            T::BangEq => {
+                let span = self.token().span;
+                self.report(
+                    Diagnostic::error(span, "`!=` is not an operator here")
+                        .with_hint("did you mean `<>`?"),
+                );
+                BinaryOp::NotEq
+            }
+            T::Lt => BinaryOp::Lt,
+            T::Le => BinaryOp::Le,
+            T::Gt => BinaryOp::Gt,
+            T::Ge => BinaryOp::Ge,
+            _ => return None,
+        };
+        self.bump();
+        Some(op)
+    }
+
+    fn comparison(&mut self) -> Expr {
+        let left = self.additive();
+        let Some(op) = self.comparison_operator() else {
+            return left;
+        };
+        let right = self.additive();
+        let mut expr = Self::binary(op, left, right);
+        let chained = self.token().span;
+        if self.comparison_operator().is_some() {
+            self.report(
+                Diagnostic::error(chained, "comparisons cannot be chained")
+                    .with_hint("compare twice and join them with `and`"),
+            );
+            let extra = self.additive();
+            expr.span = expr.span.to(extra.span);
+            expr.kind = ExprKind::Error;
+        }
+        expr
+    }
+
+    fn additive(&mut self) -> Expr {
+        let mut left = self.multiplicative();
+        loop {
+            let op = match self.peek() {
+                T::Plus => BinaryOp::Add,
+                T::Minus => BinaryOp::Sub,
+                _ => return left,
+            };
+            self.bump();
+            let right = self.multiplicative();
+            left = Self::binary(op, left, right);
+        }
+    }
+
+    fn multiplicative(&mut self) -> Expr {
+        let mut left = self.unary();
+        loop {
+            let op = match self.peek() {
+                T::Star => BinaryOp::Mul,
+                T::Div => BinaryOp::Div,
+                T::Mod => BinaryOp::Mod,
+                _ => return left,
+            };
+            self.bump();
+            let right = self.unary();
+            left = Self::binary(op, left, right);
+        }
+    }
+
+    fn unary(&mut self) -> Expr {
+        if let Some(token) = self.eat(T::Minus) {
+            let operand = self.unary();
+            let span = token.span.to(operand.span);
+            if let ExprKind::Integer(n) = operand.kind {
+                return Expr {
+                    kind: ExprKind::Integer(n.wrapping_neg()),
+                    span,
+                };
+            }
+            return Expr {
+                kind: ExprKind::Unary {
+                    op: UnaryOp::Neg,
+                    operand: Box::new(operand),
+                },
+                span,
+            };
+        }
+        self.postfix_expression()
+    }
+
+    // element := identifier | element . pointer
+    fn postfix_expression(&mut self) -> Expr {
+        let mut expr = self.primary();
+        while self.at(T::Dot) {
+            self.bump();
+            let token = self.token();
+            if token.kind == T::Ident || token.kind.is_keyword() {
+                self.bump();
+                let field = Ident {
+                    name: self.text(token.span).to_owned(),
+                    span: token.span,
+                };
+                let span = expr.span.to(token.span);
+                expr = Expr {
+                    kind: ExprKind::Lookup {
+                        base: Box::new(expr),
+                        field,
+                    },
+                    span,
+                };
+            } else {
+                let message = format!("expected a lookup name after `.`, found {}", self.found());
+                self.error_here(message);
+                return Expr {
+                    kind: ExprKind::Error,
+                    span: expr.span,
+                };
+            }
+        }
+        expr
+    }
+
+    fn primary(&mut self) -> Expr {
+        let token = self.token();
+        let kind = match token.kind {
+            T::Ident => ExprKind::Name(self.text(token.span).to_owned()),
+            // An out-of-range number was reported by the lexer.
+            T::Integer => ExprKind::Integer(self.text(token.span).parse().unwrap_or(0)),
+            T::True => ExprKind::Boolean(true),
+            T::False => ExprKind::Boolean(false),
+            T::Null => ExprKind::Null,
+            T::LParen => {
+                self.bump();
+                let inner = self.expression();
+                self.expect(T::RParen, "to close the parenthesis");
+                return inner;
+            }
+            _ => {
+                let message = format!("expected an expression, found {}", self.found());
+                self.error_here(message);
+                return Expr {
+                    kind: ExprKind::Error,
+                    span: token.span,
+                };
+            }
+        };
+        self.bump();
+        Expr {
+            kind,
+            span: token.span,
+        }
+    }
+}
+
+/// The text between a string token's quotes.
+fn string_contents(token: &str) -> String {
+    let inner = token.strip_prefix('"').unwrap_or(token);
+    inner.strip_suffix('"').unwrap_or(inner).to_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_ok(source: &str) -> SourceFile {
+        let (file, diagnostics) = parse(source);
+        assert!(diagnostics.is_empty(), "{diagnostics:#?}");
+        file
+    }
+
+    #[test]
+    fn journal_listing_parses() {
+        let file = parse_ok(
+            "algorithm vertexAdjacentEdge(v : Vertex);\nstructuretype WingedEdge\ndescription \"Mark the adjacent edges of a vertex.\"\nvar e, se : Edge;\nbegin\n e := v.incidentEdge;\n se := e;\n do\n mark e;\n if e.startVertex = v then\n e := e.leftSuccessor;\n else\n e := e.rightSuccessor;\n end;\n while e <> se;\nend;\n",
+        );
+        let algorithm = &file.algorithms[0];
+        assert_eq!(algorithm.name.name, "vertexAdjacentEdge");
+        assert_eq!(
+            algorithm.structure.map(|s| s.0),
+            Some(Structure::WingedEdge)
+        );
+        assert_eq!(algorithm.vars.len(), 2);
+        assert_eq!(algorithm.body.len(), 3);
+        assert!(matches!(algorithm.body[2].kind, StmtKind::DoWhile { .. }));
+    }
+
+    #[test]
+    fn half_edge_paper_dialect_parses() {
+        let file = parse_ok(
+            "ALGORITHM vertexAdjacentEdge( v : Vertex ) : HalfEdge;\n// Marks the adjacent edges of a vertex\nvar e, se : Edge;\nbegin\n v.highlight;\n e := v.incidentEdge;\n se := e;\n do\n begin\n e.mark;\n if( e.startVertex == v ) e := e.successorEdge else e := e.pairEdge\n end while( e <> se )\nend;",
+        );
+        let body = &file.algorithms[0].body;
+        assert!(matches!(
+            body[0].kind,
+            StmtKind::Action {
+                action: Action::Highlight,
+                ..
+            }
+        ));
+        let StmtKind::DoWhile { body, .. } = &body[3].kind else {
+            panic!("{:?}", body[3])
+        };
+        assert!(matches!(body[0].kind, StmtKind::Block(_)));
+    }
+
+    #[test]
+    fn nested_while_inside_do_is_not_the_loop_end() {
+        let file = parse_ok(
+            "algorithm a(n : Integer) : HalfEdge begin do while n > 0 do n := n - 1 end; n := 3 while n < 0 end",
+        );
+        let StmtKind::DoWhile { body, .. } = &file.algorithms[0].body[0].kind else {
+            panic!()
+        };
+        assert_eq!(body.len(), 2);
+    }
+
+    #[test]
+    fn several_errors_are_reported_in_one_pass() {
+        let (_, diagnostics) = parse(
+            "algorithm a(v : Vertex) : HalfEdge\nvar e : Edge;\nbegin\n e = v.incidentEdge;\n if e then e := ;\n end;\n x := 1 +;\nend",
+        );
+        let messages: Vec<&str> = diagnostics.iter().map(|d| d.message.as_str()).collect();
+        assert_eq!(messages.len(), 3, "{messages:?}");
+        assert_eq!(diagnostics[0].hint.as_deref(), Some("did you mean `:=`?"));
+    }
+}

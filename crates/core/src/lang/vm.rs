@@ -1,0 +1,757 @@
+//! The stepping virtual machine: runs compiled code on a [`Topology`],
+//! producing either a full [`Trace`] or, for speed, just the outcome.
+
+use super::compiler::{Algorithm, CompareOp, ComputeOp, Op, Reg};
+use super::diagnostic::Span;
+use super::topology::Topology;
+use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
+use super::types::{Element, Field, Type, Value};
+use std::fmt;
+use std::sync::Arc;
+
+/// Operations run before a trace is cut off, unless configured otherwise.
+pub const DEFAULT_STEP_LIMIT: usize = 100_000;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RunOptions {
+    /// The most operations (trace steps) to run. A loop that performs no
+    /// operation at all is cut off after this many iterations too.
+    pub step_limit: usize,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self {
+            step_limit: DEFAULT_STEP_LIMIT,
+        }
+    }
+}
+
+/// Why an algorithm could not start on the given mesh and inputs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum InputError {
+    WrongStructure {
+        algorithm: String,
+        needs: String,
+        mesh: String,
+    },
+    Missing {
+        name: String,
+        ty: Type,
+    },
+    UnknownParameter {
+        name: String,
+        algorithm: String,
+        parameters: String,
+    },
+    WrongType {
+        name: String,
+        expected: Type,
+        found: String,
+    },
+    OutOfRange {
+        name: String,
+        element: Element,
+        count: usize,
+    },
+    Duplicate {
+        name: String,
+    },
+    Malformed {
+        text: String,
+    },
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            InputError::WrongStructure {
+                algorithm,
+                needs,
+                mesh,
+            } => {
+                write!(
+                    f,
+                    "algorithm `{algorithm}` walks a {needs} structure, but the mesh is a {mesh} structure"
+                )
+            }
+            InputError::Missing { name, ty } => {
+                write!(f, "no value given for parameter `{name}` ({ty})")
+            }
+            InputError::UnknownParameter {
+                name,
+                algorithm,
+                parameters,
+            } => {
+                write!(
+                    f,
+                    "algorithm `{algorithm}` has no parameter `{name}` (its parameters: {parameters})"
+                )
+            }
+            InputError::WrongType {
+                name,
+                expected,
+                found,
+            } => {
+                write!(
+                    f,
+                    "parameter `{name}` is {}, but was given {found}",
+                    super::checker::with_article(*expected)
+                )
+            }
+            InputError::OutOfRange {
+                name,
+                element,
+                count,
+            } => {
+                write!(
+                    f,
+                    "parameter `{name}`: {element} does not exist (the mesh has {count} {}s)",
+                    element.kind().prose()
+                )
+            }
+            InputError::Duplicate { name } => write!(f, "parameter `{name}` is given twice"),
+            InputError::Malformed { text } => {
+                write!(
+                    f,
+                    "`{text}` is not an argument; write NAME=VALUE, such as v=3, n=4 or b=true"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for InputError {}
+
+impl Algorithm {
+    /// Parses a command-line argument such as `v=3` into the parameter's name
+    /// and value; the number is read as the parameter's element kind.
+    pub fn parse_argument(&self, text: &str) -> Result<(String, Value), InputError> {
+        let Some((name, value)) = text.split_once('=') else {
+            return Err(InputError::Malformed {
+                text: text.to_owned(),
+            });
+        };
+        let (name, value) = (name.trim(), value.trim());
+        let Some(param) = self.params().find(|p| p.name == name) else {
+            return Err(self.unknown_parameter(name));
+        };
+        let wrong = || InputError::WrongType {
+            name: name.to_owned(),
+            expected: param.ty,
+            found: format!("`{value}`"),
+        };
+        let parsed = match param.ty {
+            Type::Integer => Value::Integer(value.parse().map_err(|_| wrong())?),
+            Type::Boolean => Value::Boolean(match value.to_ascii_lowercase().as_str() {
+                "true" => true,
+                "false" => false,
+                _ => return Err(wrong()),
+            }),
+            ty => {
+                let index: u32 = value.parse().map_err(|_| wrong())?;
+                match ty.element_kind() {
+                    Some(kind) => Value::from(Element::new(kind, index)),
+                    None => return Err(wrong()),
+                }
+            }
+        };
+        Ok((name.to_owned(), parsed))
+    }
+
+    fn unknown_parameter(&self, name: &str) -> InputError {
+        let parameters: Vec<String> = self
+            .params()
+            .map(|p| format!("{} : {}", p.name, p.ty))
+            .collect();
+        InputError::UnknownParameter {
+            name: name.to_owned(),
+            algorithm: self.name.clone(),
+            parameters: if parameters.is_empty() {
+                "none".to_owned()
+            } else {
+                parameters.join(", ")
+            },
+        }
+    }
+
+    /// Checks named inputs against the parameters and the mesh and returns
+    /// the initial register file's variable part.
+    pub fn bind_inputs<T: Topology + ?Sized>(
+        &self,
+        topology: &T,
+        inputs: &[(&str, Value)],
+    ) -> Result<Vec<Value>, InputError> {
+        if topology.structure() != self.structure {
+            return Err(InputError::WrongStructure {
+                algorithm: self.name.clone(),
+                needs: self.structure.to_string(),
+                mesh: topology.structure().to_string(),
+            });
+        }
+        for (i, (name, _)) in inputs.iter().enumerate() {
+            if !self.params().any(|p| p.name == *name) {
+                return Err(self.unknown_parameter(name));
+            }
+            if inputs
+                .get(..i)
+                .is_some_and(|earlier| earlier.iter().any(|(n, _)| n == name))
+            {
+                return Err(InputError::Duplicate {
+                    name: (*name).to_owned(),
+                });
+            }
+        }
+        let mut values = Vec::with_capacity(self.variables.len());
+        for variable in &self.variables {
+            if !variable.is_param {
+                values.push(variable.ty.default_value());
+                continue;
+            }
+            let name = variable.name.clone();
+            let Some(&(_, value)) = inputs.iter().find(|(n, _)| *n == variable.name) else {
+                return Err(InputError::Missing {
+                    name,
+                    ty: variable.ty,
+                });
+            };
+            let fits = match (variable.ty, value) {
+                (Type::Integer, Value::Integer(_)) | (Type::Boolean, Value::Boolean(_)) => true,
+                (ty, value) => value
+                    .element()
+                    .is_some_and(|e| Some(e.kind()) == ty.element_kind()),
+            };
+            if !fits {
+                return Err(InputError::WrongType {
+                    name,
+                    expected: variable.ty,
+                    found: value.to_string(),
+                });
+            }
+            if let Some(element) = value.element() {
+                let count = topology.count(element.kind());
+                if element.index() as usize >= count {
+                    return Err(InputError::OutOfRange {
+                        name,
+                        element,
+                        count,
+                    });
+                }
+            }
+            values.push(value);
+        }
+        Ok(values)
+    }
+}
+
+/// Runs an algorithm and records every step, for stepping back and forth.
+pub fn run<T: Topology + ?Sized>(
+    algorithm: &Arc<Algorithm>,
+    topology: &T,
+    inputs: &[(&str, Value)],
+    options: RunOptions,
+) -> Result<Trace, InputError> {
+    let variables = algorithm.bind_inputs(topology, inputs)?;
+    let mut machine = Machine::new(
+        algorithm,
+        topology,
+        &variables,
+        TraceRecorder::new(algorithm.variables.len()),
+        options,
+    );
+    let outcome = machine.run();
+    let final_variables = machine.variables().to_vec();
+    Ok(machine
+        .recorder
+        .finish(Arc::clone(algorithm), variables, final_variables, outcome))
+}
+
+/// The result of [`execute`]: what a run produced, without its steps.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Execution {
+    pub marked: Vec<Element>,
+    pub highlighted: Vec<Element>,
+    pub messages: Vec<String>,
+    /// The variables' final values, in declaration order (parameters first).
+    pub variables: Vec<Value>,
+    /// The number of operations performed.
+    pub steps: usize,
+    pub outcome: Outcome,
+}
+
+impl Execution {
+    /// The final value of a variable, by name.
+    pub fn variable(&self, algorithm: &Algorithm, name: &str) -> Option<Value> {
+        let index = algorithm.variables.iter().position(|v| v.name == name)?;
+        self.variables.get(index).copied()
+    }
+}
+
+/// Runs an algorithm keeping only its output: the fast path for tests,
+/// benchmarks, and answering a query without animating it.
+pub fn execute<T: Topology + ?Sized>(
+    algorithm: &Algorithm,
+    topology: &T,
+    inputs: &[(&str, Value)],
+    options: RunOptions,
+) -> Result<Execution, InputError> {
+    let variables = algorithm.bind_inputs(topology, inputs)?;
+    let mut machine = Machine::new(
+        algorithm,
+        topology,
+        &variables,
+        OutputRecorder::default(),
+        options,
+    );
+    let outcome = machine.run();
+    let variables = machine.variables().to_vec();
+    let steps = machine.steps;
+    let OutputRecorder {
+        marked,
+        highlighted,
+        messages,
+    } = machine.recorder;
+    Ok(Execution {
+        marked,
+        highlighted,
+        messages,
+        variables,
+        steps,
+        outcome,
+    })
+}
+
+/// Receives the VM's steps. `step` is called before the step changes any
+/// variable, with the variables as they are, so a recorder can snapshot them.
+pub(crate) trait Recorder {
+    fn step(&mut self, pc: u32, a: u32, b: u32, r: u32, variables: &[Value]);
+    fn mark(&mut self, element: Element);
+    fn highlight(&mut self, element: Element);
+    /// Stores a message's text and returns its number.
+    fn message(&mut self, text: String) -> u32;
+}
+
+#[derive(Default)]
+struct OutputRecorder {
+    marked: Vec<Element>,
+    highlighted: Vec<Element>,
+    messages: Vec<String>,
+}
+
+impl Recorder for OutputRecorder {
+    #[inline]
+    fn step(&mut self, _pc: u32, _a: u32, _b: u32, _r: u32, _variables: &[Value]) {}
+
+    fn mark(&mut self, element: Element) {
+        self.marked.push(element);
+    }
+
+    fn highlight(&mut self, element: Element) {
+        self.highlighted.push(element);
+    }
+
+    fn message(&mut self, text: String) -> u32 {
+        self.messages.push(text);
+        u32::try_from(self.messages.len() - 1).unwrap_or(u32::MAX)
+    }
+}
+
+/// Where a variable's null came from, to explain a later null lookup.
+#[derive(Clone, Copy, Debug)]
+enum NullOrigin {
+    Unassigned,
+    /// Assigned from a lookup that yielded null: the lookup's instruction and
+    /// the element it was applied to.
+    Lookup {
+        pc: usize,
+        base: Value,
+    },
+    Assigned {
+        pc: usize,
+    },
+}
+
+struct Machine<'a, T: ?Sized, R> {
+    algorithm: &'a Algorithm,
+    topology: &'a T,
+    registers: Vec<Value>,
+    variable_count: usize,
+    null_origins: Vec<NullOrigin>,
+    recorder: R,
+    limit: usize,
+    steps: usize,
+    back_jumps: usize,
+}
+
+impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
+    fn new(
+        algorithm: &'a Algorithm,
+        topology: &'a T,
+        variables: &[Value],
+        recorder: R,
+        options: RunOptions,
+    ) -> Self {
+        let mut registers: Vec<Value> = algorithm
+            .registers
+            .iter()
+            .map(|ty| ty.default_value())
+            .collect();
+        for (slot, value) in registers.iter_mut().zip(variables) {
+            *slot = *value;
+        }
+        for &(reg, value) in &algorithm.constants {
+            if let Some(slot) = registers.get_mut(usize::from(reg)) {
+                *slot = value;
+            }
+        }
+        let variable_count = algorithm.variables.len().min(registers.len());
+        Machine {
+            algorithm,
+            topology,
+            registers,
+            variable_count,
+            null_origins: vec![NullOrigin::Unassigned; variable_count],
+            recorder,
+            limit: options.step_limit,
+            steps: 0,
+            back_jumps: 0,
+        }
+    }
+
+    fn variables(&self) -> &[Value] {
+        self.registers.get(..self.variable_count).unwrap_or(&[])
+    }
+
+    #[inline(always)]
+    fn get(&self, reg: Reg) -> Value {
+        self.registers
+            .get(usize::from(reg))
+            .copied()
+            .unwrap_or(Value::Null)
+    }
+
+    #[inline(always)]
+    fn set(&mut self, reg: Reg, value: Value) {
+        if let Some(slot) = self.registers.get_mut(usize::from(reg)) {
+            *slot = value;
+        }
+    }
+
+    #[inline(always)]
+    fn record(&mut self, pc: usize, a: u32, b: u32, r: u32) {
+        self.steps += 1;
+        let variables = self.registers.get(..self.variable_count).unwrap_or(&[]);
+        self.recorder.step(pc as u32, a, b, r, variables);
+    }
+
+    fn run(&mut self) -> Outcome {
+        let code = &self.algorithm.code;
+        let mut pc = 0usize;
+        loop {
+            let Some(instr) = code.get(pc) else {
+                return self.fail(
+                    pc.saturating_sub(1),
+                    "the code ended without `done`".to_owned(),
+                );
+            };
+            let op = instr.op;
+            if self.steps >= self.limit && op.is_step() {
+                return self.step_limit(pc);
+            }
+            match op {
+                Op::Lookup { dst, base, field } => {
+                    let base_value = self.get(base);
+                    let Some(element) = base_value.element() else {
+                        let message = self.null_lookup_message(pc, base);
+                        return self.fail(pc, message);
+                    };
+                    let result = match self.topology.lookup(element, field) {
+                        Ok(result) => Value::from(result),
+                        Err(error) => return self.fail(pc, format!("lookup failed: {error}")),
+                    };
+                    self.record(pc, base_value.code(), 0, result.code());
+                    self.set(dst, result);
+                }
+                Op::Assign { var, src } => {
+                    let value = self.get(src);
+                    self.record(pc, 0, 0, value.code());
+                    if value == Value::Null {
+                        self.note_null(pc, var, src);
+                    }
+                    self.set(var, value);
+                }
+                Op::Compare {
+                    dst,
+                    op,
+                    left,
+                    right,
+                } => {
+                    let (l, r) = (self.get(left), self.get(right));
+                    let result = compare(op, l, r);
+                    self.record(pc, l.code(), r.code(), u32::from(result));
+                    self.set(dst, Value::Boolean(result));
+                }
+                Op::Compute {
+                    dst,
+                    op,
+                    left,
+                    right,
+                } => {
+                    let (l, r) = (self.get(left), self.get(right));
+                    let result = match compute(op, l, r) {
+                        Ok(result) => result,
+                        Err(problem) => {
+                            let message =
+                                format!("{problem} in {}", self.algorithm.snippet(instr.span));
+                            return self.fail(pc, message);
+                        }
+                    };
+                    self.record(pc, l.code(), r.code(), result.code());
+                    self.set(dst, result);
+                }
+                Op::Move { dst, src } => {
+                    let value = self.get(src);
+                    self.set(dst, value);
+                }
+                Op::Mark { element } | Op::Highlight { element } => {
+                    let value = self.get(element);
+                    let Some(target) = value.element() else {
+                        let word = if matches!(op, Op::Mark { .. }) {
+                            "mark"
+                        } else {
+                            "highlight"
+                        };
+                        let message = self.cannot_act_message(word, element);
+                        return self.fail(pc, message);
+                    };
+                    self.record(pc, value.code(), 0, 0);
+                    if matches!(op, Op::Mark { .. }) {
+                        self.recorder.mark(target);
+                    } else {
+                        self.recorder.highlight(target);
+                    }
+                }
+                Op::Message { index } => {
+                    let text = self.format_message(index);
+                    let number = self.recorder.message(text);
+                    self.record(pc, number, 0, 0);
+                }
+                Op::Jump { target } => {
+                    if let Some(outcome) = self.jump(pc, target) {
+                        return outcome;
+                    }
+                    pc = target as usize;
+                    continue;
+                }
+                Op::JumpIf { cond, when, target } => {
+                    if self.get(cond) == Value::Boolean(when) {
+                        if let Some(outcome) = self.jump(pc, target) {
+                            return outcome;
+                        }
+                        pc = target as usize;
+                        continue;
+                    }
+                }
+                Op::Done => {
+                    self.record(pc, 0, 0, 0);
+                    return Outcome::Finished;
+                }
+            }
+            pc += 1;
+        }
+    }
+
+    /// Counts backward jumps, so a loop with no operation in it still meets
+    /// the limit.
+    #[inline(always)]
+    fn jump(&mut self, pc: usize, target: u32) -> Option<Outcome> {
+        if (target as usize) <= pc {
+            self.back_jumps += 1;
+            if self.back_jumps > self.limit {
+                return Some(self.step_limit(pc));
+            }
+        }
+        None
+    }
+
+    fn step_limit(&self, pc: usize) -> Outcome {
+        let (span, line) = self.location(pc);
+        Outcome::Error(RuntimeError {
+            kind: RuntimeErrorKind::StepLimit,
+            span,
+            line,
+            message: format!(
+                "stopped after {} operations: the step limit was reached (the loop may never end; raise the limit to run longer)",
+                self.steps
+            ),
+        })
+    }
+
+    fn location(&self, pc: usize) -> (Span, u32) {
+        self.algorithm
+            .code
+            .get(pc)
+            .map_or((self.algorithm.span, self.algorithm.first_line), |i| {
+                (i.span, i.line)
+            })
+    }
+
+    fn fail(&self, pc: usize, message: String) -> Outcome {
+        let (span, line) = self.location(pc);
+        Outcome::Error(RuntimeError {
+            kind: RuntimeErrorKind::Fault,
+            span,
+            line,
+            message,
+        })
+    }
+
+    fn format_message(&self, index: u32) -> String {
+        let Some(template) = self.algorithm.messages.get(index as usize) else {
+            return String::new();
+        };
+        let mut text = template.text.clone();
+        for &arg in &template.args {
+            if !text.is_empty() && !text.ends_with(' ') {
+                text.push(' ');
+            }
+            text.push_str(&self.get(arg).to_string());
+        }
+        text
+    }
+
+    fn note_null(&mut self, pc: usize, var: Reg, src: Reg) {
+        let origin = if let Some(&origin) = self.null_origins.get(usize::from(src)) {
+            origin
+        } else if let Some((lookup_pc, base)) = self.writer_lookup(src) {
+            NullOrigin::Lookup {
+                pc: lookup_pc,
+                base: self.get(base),
+            }
+        } else {
+            NullOrigin::Assigned { pc }
+        };
+        if let Some(slot) = self.null_origins.get_mut(usize::from(var)) {
+            *slot = origin;
+        }
+    }
+
+    /// The lookup instruction that computes intermediate register `reg`, if
+    /// one does (each intermediate register has a single writer).
+    fn writer_lookup(&self, reg: Reg) -> Option<(usize, Reg)> {
+        self.algorithm
+            .code
+            .iter()
+            .enumerate()
+            .find_map(|(pc, instr)| match instr.op {
+                Op::Lookup { dst, base, .. } if dst == reg => Some((pc, base)),
+                _ => None,
+            })
+    }
+
+    /// Why a lookup yielded null: "edge 7 is on the boundary".
+    fn null_reason(&self, lookup_pc: usize, base: Value) -> String {
+        let Some(Op::Lookup { field, .. }) = self.algorithm.code.get(lookup_pc).map(|i| i.op)
+        else {
+            return "it was never set".to_owned();
+        };
+        match field {
+            Field::LeftFace | Field::RightFace | Field::AdjacentFace => {
+                format!("{base} is on the boundary")
+            }
+            Field::IncidentEdge => format!("{base} has no incident edge"),
+            other => format!("{base} has no {other}"),
+        }
+    }
+
+    /// "`e.leftFace` is null (edge 7 is on the boundary)", or for a variable,
+    /// where its null came from.
+    fn explain_null(&self, reg: Reg) -> String {
+        if let Some(&origin) = self.null_origins.get(usize::from(reg)) {
+            let name = self.algorithm.register_name(reg);
+            return match origin {
+                NullOrigin::Unassigned => format!("{name} is null (it has not been assigned yet)"),
+                NullOrigin::Lookup { pc, base } => {
+                    let (span, line) = self.location(pc);
+                    format!(
+                        "{name} is null (set from {} on line {line}: {})",
+                        self.algorithm.snippet(span),
+                        self.null_reason(pc, base)
+                    )
+                }
+                NullOrigin::Assigned { pc } => {
+                    let (_, line) = self.location(pc);
+                    format!("{name} is null (assigned on line {line})")
+                }
+            };
+        }
+        if let Some((pc, base)) = self.writer_lookup(reg) {
+            let (span, _) = self.location(pc);
+            return format!(
+                "{} is null ({})",
+                self.algorithm.snippet(span),
+                self.null_reason(pc, self.get(base))
+            );
+        }
+        "null has no lookups".to_owned()
+    }
+
+    fn null_lookup_message(&self, _pc: usize, base: Reg) -> String {
+        self.explain_null(base)
+    }
+
+    fn cannot_act_message(&self, word: &str, reg: Reg) -> String {
+        format!("cannot {word} null: {}", self.explain_null(reg))
+    }
+}
+
+#[inline]
+fn compare(op: CompareOp, left: Value, right: Value) -> bool {
+    match op {
+        CompareOp::Eq => left == right,
+        CompareOp::NotEq => left != right,
+        _ => {
+            let (Value::Integer(l), Value::Integer(r)) = (left, right) else {
+                return false;
+            };
+            match op {
+                CompareOp::Lt => l < r,
+                CompareOp::Le => l <= r,
+                CompareOp::Gt => l > r,
+                _ => l >= r,
+            }
+        }
+    }
+}
+
+fn compute(op: ComputeOp, left: Value, right: Value) -> Result<Value, String> {
+    if let (ComputeOp::Not, Value::Boolean(b)) = (op, left) {
+        return Ok(Value::Boolean(!b));
+    }
+    let Value::Integer(l) = left else {
+        return Err("not a number".to_owned());
+    };
+    let r = match right {
+        Value::Integer(r) => r,
+        _ => 0,
+    };
+    let result = match op {
+        ComputeOp::Add => l.checked_add(r),
+        ComputeOp::Sub => l.checked_sub(r),
+        ComputeOp::Mul => l.checked_mul(r),
+        ComputeOp::Div | ComputeOp::Mod if r == 0 => {
+            return Err(format!("division by zero ({l} {} 0)", op.symbol()));
+        }
+        ComputeOp::Div => l.checked_div(r),
+        ComputeOp::Mod => l.checked_rem(r),
+        ComputeOp::Neg => l.checked_neg(),
+        ComputeOp::Not => None,
+    };
+    result.map(Value::Integer).ok_or_else(|| {
+        if op.is_unary() {
+            format!("integer overflow ({} {l})", op.symbol())
+        } else {
+            format!("integer overflow ({l} {} {r})", op.symbol())
+        }
+    })
+}
