@@ -1,1 +1,34 @@
-//! Winged-edge and half-edge mesh structures.
+//! Winged-edge and half-edge mesh structures, built from polygons, checked and
+//! navigable, following the conventions of the papers the product teaches
+//! (Neperud and Shene for winged-edge, Neperud section 2.2 for half-edge).
+//!
+//! - [`Polygons`] is the builder input every loader produces.
+//! - [`HalfEdgeMesh::build`] and [`WingedEdgeMesh::build`] refuse bad input
+//!   with a [`BuildError`] and report kept oddities as [`BuildWarning`]s.
+//! - [`HalfEdgeMesh::from_raw_parts`] / [`WingedEdgeMesh::from_raw_parts`] take
+//!   tables as written; `validate()` lists each [`Issue`] by element and field.
+//! - `stats()`, the navigation iterators and the conversions work on both.
+
+mod builder;
+pub mod convert;
+pub mod error;
+pub mod generate;
+pub mod half_edge;
+pub mod ids;
+pub mod polygons;
+pub mod stats;
+pub mod structure;
+pub mod traversal;
+pub mod validate;
+pub mod winged_edge;
+
+pub use convert::{ConvertError, EdgeCorrespondence};
+pub use error::{BuildError, BuildWarning, FaceRef};
+pub use half_edge::{HalfEdge, HalfEdgeMesh};
+pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use polygons::Polygons;
+pub use stats::{ComponentStats, MeshStats};
+pub use structure::{Mesh, Structure};
+pub use traversal::{FaceHalfEdges, FaceSides, VertexEdges, VertexHalfEdges};
+pub use validate::{Element, Field, Issue};
+pub use winged_edge::{Side, WingedEdge, WingedEdgeMesh};

@@ -1,0 +1,196 @@
+//! Why a polygon list cannot become a mesh, and what a build kept but noticed.
+
+use std::fmt;
+
+use super::ids::{FaceId, VertexId};
+
+/// A face named in a message, with the file line it came from when known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct FaceRef {
+    /// The face number in the polygon list.
+    pub face: FaceId,
+    /// The 1-based source line, when the face was read from a file.
+    pub line: Option<usize>,
+}
+
+impl fmt::Display for FaceRef {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "{} (line {line})", self.face),
+            None => write!(f, "{}", self.face),
+        }
+    }
+}
+
+/// A polygon list the builder refuses. Each variant names the elements
+/// involved so the message can be acted on.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BuildError {
+    /// A face lists fewer than three vertices.
+    TooFewVertices {
+        /// The face.
+        face: FaceRef,
+        /// How many vertices it lists.
+        count: usize,
+    },
+    /// A face lists the same vertex twice, so it has fewer distinct vertices
+    /// than corners.
+    RepeatedVertex {
+        /// The face.
+        face: FaceRef,
+        /// The vertex it repeats.
+        vertex: VertexId,
+    },
+    /// A face refers to a vertex number that does not exist.
+    IndexOutOfRange {
+        /// The face.
+        face: FaceRef,
+        /// The vertex number it uses.
+        index: u32,
+        /// How many vertices there are.
+        vertex_count: usize,
+    },
+    /// An edge is shared by more than two faces.
+    NonManifoldEdge {
+        /// The lower-numbered end of the edge.
+        start: VertexId,
+        /// The other end.
+        end: VertexId,
+        /// Every face using the edge, in face order.
+        faces: Vec<FaceRef>,
+    },
+    /// Two faces traverse a shared edge in the same direction, so their
+    /// orientations disagree.
+    InconsistentOrientation {
+        /// Where both faces' traversal of the edge starts.
+        start: VertexId,
+        /// Where it ends.
+        end: VertexId,
+        /// The lower-numbered face.
+        first: FaceRef,
+        /// The other face.
+        second: FaceRef,
+    },
+    /// The faces around a vertex form more than one fan (for example two cones
+    /// touching at their tips).
+    NonManifoldVertex {
+        /// The vertex.
+        vertex: VertexId,
+        /// A face of one fan.
+        first: FaceRef,
+        /// A face of another fan.
+        second: FaceRef,
+    },
+    /// More elements than the `u32` ids (and the builder's tag bit) allow.
+    TooLarge {
+        /// What there are too many of.
+        element: &'static str,
+        /// How many there are.
+        count: usize,
+        /// The most supported.
+        limit: usize,
+    },
+}
+
+impl fmt::Display for BuildError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::TooFewVertices { face, count } => {
+                write!(f, "{face} has {count} vertices; a face needs at least 3")
+            }
+            Self::RepeatedVertex { face, vertex } => {
+                write!(
+                    f,
+                    "{face} lists {vertex} more than once; a face needs distinct vertices"
+                )
+            }
+            Self::IndexOutOfRange {
+                face,
+                index,
+                vertex_count: 0,
+            } => {
+                write!(
+                    f,
+                    "{face} refers to vertex {index}, but the mesh has no vertices"
+                )
+            }
+            Self::IndexOutOfRange {
+                face,
+                index,
+                vertex_count,
+            } => write!(
+                f,
+                "{face} refers to vertex {index}, but the mesh has only {vertex_count} vertices (0 to {})",
+                vertex_count - 1
+            ),
+            Self::NonManifoldEdge { start, end, faces } => {
+                write!(
+                    f,
+                    "the edge between {start} and {end} is used by {} faces (",
+                    faces.len()
+                )?;
+                for (i, face) in faces.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    write!(f, "{face}")?;
+                }
+                f.write_str("); an edge can border at most two faces (non-manifold edge)")
+            }
+            Self::InconsistentOrientation {
+                start,
+                end,
+                first,
+                second,
+            } => write!(
+                f,
+                "{first} and {second} both go from {start} to {end}; faces sharing an edge must \
+                 traverse it in opposite directions (inconsistent orientation: reverse one of them)"
+            ),
+            Self::NonManifoldVertex {
+                vertex,
+                first,
+                second,
+            } => write!(
+                f,
+                "{vertex} joins separate fans of faces ({first} and {second} are not connected \
+                 around it); the faces around a vertex must form one fan (non-manifold vertex)"
+            ),
+            Self::TooLarge {
+                element,
+                count,
+                limit,
+            } => {
+                write!(
+                    f,
+                    "the mesh has {count} {element}; at most {limit} are supported"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for BuildError {}
+
+/// Something a build noticed but kept.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BuildWarning {
+    /// A vertex no face uses; it stays in the mesh as an isolated vertex.
+    UnusedVertex {
+        /// The vertex.
+        vertex: VertexId,
+    },
+}
+
+impl fmt::Display for BuildWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::UnusedVertex { vertex } => {
+                write!(
+                    f,
+                    "{vertex} is not used by any face; it is kept as an isolated vertex"
+                )
+            }
+        }
+    }
+}

@@ -1,0 +1,366 @@
+//! The winged-edge structure (Neperud and Shene, section 2, Tables 1 and 2).
+//!
+//! Faces are traversed clockwise seen from outside: the right face traverses
+//! an edge from start to end, the left face from end to start, and each wing
+//! (predecessor, successor) is relative to that clockwise traversal. So a face
+//! listed counter-clockwise with consecutive vertices `a, b` is the LEFT face
+//! of edge `a→b`; its left predecessor is the edge after `b` in the listing
+//! and its left successor the edge before `a`.
+
+use glam::Vec3;
+
+use super::builder::{self, General, Layout, NONE, Topology, Triangles};
+use super::error::{BuildError, BuildWarning};
+use super::ids::{EdgeId, FaceId, VertexId};
+use super::polygons::Polygons;
+
+/// A row of the winged-edge vertex table.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Where the vertex is.
+    pub position: Vec3,
+    /// An edge that starts or ends here (`None` for an isolated vertex).
+    pub incident_edge: Option<EdgeId>,
+}
+
+/// A row of the winged-edge face table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Face {
+    /// One of the face's edges.
+    pub incident_edge: EdgeId,
+}
+
+/// A row of the winged-edge edge table: the nine pieces of Table 1 (the name
+/// is the row number).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WingedEdge {
+    /// Where the edge starts (the direction of its first appearance).
+    pub start_vertex: VertexId,
+    /// Where it ends.
+    pub end_vertex: VertexId,
+    /// The face that traverses it from end to start clockwise (`None` on the
+    /// boundary).
+    pub left_face: Option<FaceId>,
+    /// The face that traverses it from start to end clockwise (`None` on the
+    /// boundary).
+    pub right_face: Option<FaceId>,
+    /// The edge before this one in the clockwise traversal of the left face.
+    pub left_predecessor: EdgeId,
+    /// The edge after this one in the clockwise traversal of the left face.
+    pub left_successor: EdgeId,
+    /// The edge before this one in the clockwise traversal of the right face.
+    pub right_predecessor: EdgeId,
+    /// The edge after this one in the clockwise traversal of the right face.
+    pub right_successor: EdgeId,
+}
+
+/// A winged-edge mesh: the vertex, edge and face tables.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct WingedEdgeMesh {
+    pub(crate) vertices: Vec<Vertex>,
+    pub(crate) faces: Vec<Face>,
+    pub(crate) edges: Vec<WingedEdge>,
+}
+
+impl WingedEdgeMesh {
+    /// Builds the structure from counter-clockwise polygons, refusing
+    /// non-manifold or inconsistently oriented input. Returns the mesh and
+    /// warnings about what it kept (unused vertices).
+    ///
+    /// Vertices and faces keep their numbers; edges are numbered in order of
+    /// first appearance walking the faces in order and point the way they
+    /// first appear (so their first face is their left face). Incident edges
+    /// are the lowest-numbered candidates. Missing faces on the boundary are
+    /// `None`, and the wings on that side link along the boundary loop.
+    ///
+    /// ```
+    /// use edgewise_core::mesh::{EdgeId, FaceId, Polygons, VertexId, WingedEdgeMesh};
+    /// use glam::Vec3;
+    ///
+    /// let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
+    /// let (mesh, _) = WingedEdgeMesh::build(&Polygons::from_triangles(positions, &[[0, 1, 2]]))?;
+    /// let edge = mesh.edge(EdgeId::new(0)).expect("three edges");
+    /// assert_eq!((edge.start_vertex, edge.end_vertex), (VertexId::new(0), VertexId::new(1)));
+    /// assert_eq!((edge.left_face, edge.right_face), (Some(FaceId::new(0)), None));
+    /// assert_eq!(edge.left_predecessor, EdgeId::new(1)); // 1→2 comes before 0→1 clockwise
+    /// # Ok::<(), edgewise_core::mesh::BuildError>(())
+    /// ```
+    pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
+        let checked = builder::check_faces(polygons)?;
+        let mesh = if checked.triangles {
+            let topology = builder::topology(polygons, &Triangles, &checked.valence)?;
+            drop(checked.valence);
+            Self::assemble(polygons, &Triangles, topology)
+        } else {
+            let layout = General::new(polygons);
+            let topology = builder::topology(polygons, &layout, &checked.valence)?;
+            drop(checked.valence);
+            Self::assemble(polygons, &layout, topology)
+        };
+        Ok((mesh, checked.warnings))
+    }
+
+    fn assemble<L: Layout>(polygons: &Polygons, layout: &L, topology: Topology) -> Self {
+        let Topology {
+            interior: n,
+            pair,
+            boundary_twin,
+            boundary_next,
+            first_incoming,
+        } = topology;
+        drop(first_incoming);
+        let indices = polygons.indices();
+        // Number the edges in place: an interior half-edge whose pair comes later
+        // (or is a boundary half-edge) is the first appearance of its edge.
+        let mut edge_of = pair;
+        let mut edge_count = 0u32;
+        for h in 0..edge_of.len() {
+            let p = edge_of[h];
+            edge_of[h] = if p as usize > h {
+                edge_count += 1;
+                edge_count - 1
+            } else {
+                edge_of[p as usize]
+            };
+        }
+        let mut edges: Vec<WingedEdge> = Vec::with_capacity(edge_count as usize);
+        for (h, &e) in (0..n).zip(&edge_of) {
+            let next = layout.next(h);
+            let face = Some(FaceId::new(layout.face(h)));
+            // Counter-clockwise next is the clockwise predecessor, and back.
+            let predecessor = EdgeId::new(edge_of[next as usize]);
+            let successor = EdgeId::new(edge_of[layout.prev(h) as usize]);
+            if e as usize == edges.len() {
+                edges.push(WingedEdge {
+                    start_vertex: VertexId::new(indices[h as usize]),
+                    end_vertex: VertexId::new(indices[next as usize]),
+                    left_face: face,
+                    right_face: None,
+                    left_predecessor: predecessor,
+                    left_successor: successor,
+                    right_predecessor: EdgeId::new(e),
+                    right_successor: EdgeId::new(e),
+                });
+            } else if let Some(edge) = edges.get_mut(e as usize) {
+                edge.right_face = face;
+                edge.right_predecessor = predecessor;
+                edge.right_successor = successor;
+            }
+        }
+        // Boundary edges: their right side is the boundary loop.
+        for (&twin, &next) in boundary_twin.iter().zip(&boundary_next) {
+            let e = edge_of[twin as usize];
+            let next_twin = boundary_twin
+                .get((next - n) as usize)
+                .copied()
+                .unwrap_or(twin);
+            let next_edge = edge_of[next_twin as usize];
+            if let Some(edge) = edges.get_mut(e as usize) {
+                edge.right_predecessor = EdgeId::new(next_edge);
+            }
+            if let Some(edge) = edges.get_mut(next_edge as usize) {
+                edge.right_successor = EdgeId::new(e);
+            }
+        }
+        let faces = polygons
+            .offsets()
+            .windows(2)
+            .map(|window| {
+                let lowest = match window {
+                    &[start, end] => edge_of[start..end].iter().copied().min().unwrap_or(0),
+                    _ => 0,
+                };
+                Face {
+                    incident_edge: EdgeId::new(lowest),
+                }
+            })
+            .collect();
+        drop(edge_of);
+        let mut incident = vec![NONE; polygons.vertex_count()];
+        for (e, edge) in (0u32..).zip(&edges) {
+            for v in [edge.start_vertex, edge.end_vertex] {
+                if let Some(slot) = incident.get_mut(v.index())
+                    && *slot == NONE
+                {
+                    *slot = e;
+                }
+            }
+        }
+        let vertices = polygons
+            .positions()
+            .iter()
+            .zip(&incident)
+            .map(|(&position, &e)| Vertex {
+                position,
+                incident_edge: (e != NONE).then_some(EdgeId::new(e)),
+            })
+            .collect();
+        Self {
+            vertices,
+            faces,
+            edges,
+        }
+    }
+
+    /// Takes the three tables as written (for example from a `.wtb` file)
+    /// without checking them; call [`Self::validate`] to find what is wrong.
+    /// Every accessor and iterator stays panic-free and terminates on broken
+    /// tables.
+    pub fn from_raw_parts(vertices: Vec<Vertex>, faces: Vec<Face>, edges: Vec<WingedEdge>) -> Self {
+        Self {
+            vertices,
+            faces,
+            edges,
+        }
+    }
+
+    /// Gives the tables back, for editing.
+    pub fn into_raw_parts(self) -> (Vec<Vertex>, Vec<Face>, Vec<WingedEdge>) {
+        (self.vertices, self.faces, self.edges)
+    }
+
+    /// The vertex table.
+    pub fn vertices(&self) -> &[Vertex] {
+        &self.vertices
+    }
+
+    /// The face table.
+    pub fn faces(&self) -> &[Face] {
+        &self.faces
+    }
+
+    /// The edge table.
+    pub fn edges(&self) -> &[WingedEdge] {
+        &self.edges
+    }
+
+    /// Number of vertices.
+    pub fn vertex_count(&self) -> usize {
+        self.vertices.len()
+    }
+
+    /// Number of faces.
+    pub fn face_count(&self) -> usize {
+        self.faces.len()
+    }
+
+    /// Number of edges.
+    pub fn edge_count(&self) -> usize {
+        self.edges.len()
+    }
+
+    /// A vertex row.
+    #[inline]
+    pub fn vertex(&self, v: VertexId) -> Option<&Vertex> {
+        self.vertices.get(v.index())
+    }
+
+    /// A face row.
+    #[inline]
+    pub fn face(&self, f: FaceId) -> Option<&Face> {
+        self.faces.get(f.index())
+    }
+
+    /// An edge row.
+    #[inline]
+    pub fn edge(&self, e: EdgeId) -> Option<&WingedEdge> {
+        self.edges.get(e.index())
+    }
+
+    /// The position of a vertex.
+    #[inline]
+    pub fn position(&self, v: VertexId) -> Option<Vec3> {
+        self.vertex(v).map(|vertex| vertex.position)
+    }
+}
+
+/// One side of a winged edge: the left face's or the right face's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// The left face traverses the edge from end to start (clockwise).
+    Left,
+    /// The right face traverses the edge from start to end (clockwise).
+    Right,
+}
+
+impl Side {
+    /// The other side.
+    pub fn opposite(self) -> Self {
+        match self {
+            Self::Left => Self::Right,
+            Self::Right => Self::Left,
+        }
+    }
+}
+
+impl WingedEdge {
+    /// The face on `side` (`None` on the boundary).
+    #[inline]
+    pub fn face(&self, side: Side) -> Option<FaceId> {
+        match side {
+            Side::Left => self.left_face,
+            Side::Right => self.right_face,
+        }
+    }
+
+    /// The predecessor wing on `side`: the next edge counter-clockwise around
+    /// that face.
+    #[inline]
+    pub fn predecessor(&self, side: Side) -> EdgeId {
+        match side {
+            Side::Left => self.left_predecessor,
+            Side::Right => self.right_predecessor,
+        }
+    }
+
+    /// The successor wing on `side`: the previous edge counter-clockwise.
+    #[inline]
+    pub fn successor(&self, side: Side) -> EdgeId {
+        match side {
+            Side::Left => self.left_successor,
+            Side::Right => self.right_successor,
+        }
+    }
+
+    /// Which side `face` is on (`None` asks for the boundary side); the left
+    /// side wins if both match.
+    #[inline]
+    pub fn side_of(&self, face: Option<FaceId>) -> Option<Side> {
+        if self.left_face == face {
+            Some(Side::Left)
+        } else if self.right_face == face {
+            Some(Side::Right)
+        } else {
+            None
+        }
+    }
+
+    /// Where the counter-clockwise traversal of the face on `side` enters
+    /// this edge (the start for the left face, the end for the right face).
+    #[inline]
+    pub fn ccw_start(&self, side: Side) -> VertexId {
+        match side {
+            Side::Left => self.start_vertex,
+            Side::Right => self.end_vertex,
+        }
+    }
+
+    /// Where the counter-clockwise traversal of the face on `side` leaves
+    /// this edge.
+    #[inline]
+    pub fn ccw_end(&self, side: Side) -> VertexId {
+        self.ccw_start(side.opposite())
+    }
+
+    /// The other end of the edge from `v` (`None` if `v` is not an end).
+    #[inline]
+    pub fn other_vertex(&self, v: VertexId) -> Option<VertexId> {
+        if self.start_vertex == v {
+            Some(self.end_vertex)
+        } else if self.end_vertex == v {
+            Some(self.start_vertex)
+        } else {
+            None
+        }
+    }
+}
