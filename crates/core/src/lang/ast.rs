@@ -82,12 +82,18 @@ pub enum StmtKind {
         action: Action,
         target: Expr,
     },
+    /// `message` items: strings and values, shown separated by spaces.
     Message {
-        text: String,
-        args: Vec<Expr>,
+        parts: Vec<MessagePart>,
     },
     /// A statement that did not parse (already reported).
     Error,
+}
+
+#[derive(Clone, Debug)]
+pub enum MessagePart {
+    Text(String),
+    Value(Expr),
 }
 
 #[derive(Clone, Debug)]

@@ -191,9 +191,11 @@ impl Checker<'_> {
                 }
             }
             StmtKind::Action { action, target } => self.action(*action, target),
-            StmtKind::Message { args, .. } => {
-                for arg in args {
-                    self.expr(arg);
+            StmtKind::Message { parts } => {
+                for part in parts {
+                    if let MessagePart::Value(value) = part {
+                        self.expr(value);
+                    }
                 }
             }
             StmtKind::Error => {}

@@ -131,11 +131,17 @@ pub struct Instr {
     pub line: u32,
 }
 
-/// `message "text", args…`: the text and the registers of its values.
+/// One item of a `message` statement: fixed text or a value's register.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum MessageItem {
+    Text(String),
+    Value(Reg),
+}
+
+/// `message "text", value, …`: shown with the items separated by spaces.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct MessageTemplate {
-    pub text: String,
-    pub args: Vec<Reg>,
+    pub items: Vec<MessageItem>,
 }
 
 /// A parameter or variable of a compiled algorithm; its register is its index.
@@ -429,13 +435,16 @@ impl Compiler<'_> {
                 };
                 self.emit(op, span);
             }
-            StmtKind::Message { text, args } => {
-                let args = args.iter().map(|arg| self.expr(arg)).collect();
+            StmtKind::Message { parts } => {
+                let items = parts
+                    .iter()
+                    .map(|part| match part {
+                        MessagePart::Text(text) => MessageItem::Text(text.clone()),
+                        MessagePart::Value(value) => MessageItem::Value(self.expr(value)),
+                    })
+                    .collect();
                 let index = u32::try_from(self.messages.len()).unwrap_or(u32::MAX);
-                self.messages.push(MessageTemplate {
-                    text: text.clone(),
-                    args,
-                });
+                self.messages.push(MessageTemplate { items });
                 self.emit(Op::Message { index }, span);
             }
             StmtKind::Error => {}

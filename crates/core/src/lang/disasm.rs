@@ -1,7 +1,7 @@
 //! A readable listing of compiled code (`edgewise disasm`), for students who
 //! want to see the "assembly" the papers' system ran.
 
-use super::compiler::{Algorithm, Op};
+use super::compiler::{Algorithm, MessageItem, Op};
 use std::fmt::Write as _;
 
 /// Lists an algorithm's registers and instructions, one instruction a line,
@@ -106,16 +106,20 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
         Op::Mark { element } => format!("mark     {}", name(element)),
         Op::Highlight { element } => format!("highlight {}", name(element)),
         Op::Message { index } => {
-            let template = algorithm.messages.get(index as usize);
-            let text = template.map_or("", |t| t.text.as_str());
-            let args: Vec<String> = template
-                .map(|t| t.args.iter().map(|&r| name(r)).collect())
+            let items: Vec<String> = algorithm
+                .messages
+                .get(index as usize)
+                .map(|t| {
+                    t.items
+                        .iter()
+                        .map(|item| match item {
+                            MessageItem::Text(text) => format!("\"{text}\""),
+                            MessageItem::Value(reg) => name(*reg),
+                        })
+                        .collect()
+                })
                 .unwrap_or_default();
-            if args.is_empty() {
-                format!("message  \"{text}\"")
-            } else {
-                format!("message  \"{text}\", {}", args.join(", "))
-            }
+            format!("message  {}", items.join(", "))
         }
         Op::Jump { target } => format!("jump     {target}"),
         Op::JumpIf {

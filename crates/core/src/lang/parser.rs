@@ -577,17 +577,20 @@ impl Parser<'_> {
         }
     }
 
+    // message-statement := message item { , item }, item := string | expr
     fn message_statement(&mut self) -> StmtKind {
         self.bump();
-        let text = match self.expect(T::String, "after `message`") {
-            Some(token) => string_contents(self.text(token.span)),
-            None => String::new(),
-        };
-        let mut args = Vec::new();
-        while self.eat(T::Comma).is_some() {
-            args.push(self.expression());
+        let mut parts = Vec::new();
+        loop {
+            if let Some(token) = self.eat(T::String) {
+                parts.push(MessagePart::Text(string_contents(self.text(token.span))));
+            } else {
+                parts.push(MessagePart::Value(self.expression()));
+            }
+            if self.eat(T::Comma).is_none() {
+                return StmtKind::Message { parts };
+            }
         }
-        StmtKind::Message { text, args }
     }
 
     // if-statement := if expr then statement-list [ else if expr then statement-list ]* [ else statement-list ] end

@@ -1,7 +1,7 @@
 //! The stepping virtual machine: runs compiled code on a [`Topology`],
 //! producing either a full [`Trace`] or, for speed, just the outcome.
 
-use super::compiler::{Algorithm, CompareOp, ComputeOp, Op, Reg};
+use super::compiler::{Algorithm, CompareOp, ComputeOp, MessageItem, Op, Reg};
 use super::diagnostic::Span;
 use super::topology::Topology;
 use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
@@ -610,14 +610,16 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
         let Some(template) = self.algorithm.messages.get(index as usize) else {
             return String::new();
         };
-        let mut text = template.text.clone();
-        for &arg in &template.args {
-            if !text.is_empty() && !text.ends_with(' ') {
-                text.push(' ');
-            }
-            text.push_str(&self.get(arg).to_string());
-        }
-        text
+        let items: Vec<String> = template
+            .items
+            .iter()
+            .map(|item| match item {
+                MessageItem::Text(text) => text.clone(),
+                MessageItem::Value(reg) => self.get(*reg).to_string(),
+            })
+            .filter(|item| !item.is_empty())
+            .collect();
+        items.join(" ")
     }
 
     fn note_null(&mut self, pc: usize, var: Reg, src: Reg) {
