@@ -384,7 +384,7 @@ impl Compiler<'_> {
                     self.jump_unless(cond, false, next);
                     self.statements(body);
                     if i + 1 < arms.len() || otherwise.is_some() {
-                        self.emit(Op::Jump { target: end }, span);
+                        self.emit(Op::Jump { target: end }, cond.span);
                     }
                     self.place(next);
                 }

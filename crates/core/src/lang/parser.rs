@@ -192,11 +192,16 @@ impl Parser<'_> {
         self.expect(T::RParen, "after the parameters");
 
         let mut structure = None;
+        // Set once a structure type was written, even a misspelled one, so
+        // a typo is not also reported as a missing structure type.
+        let mut structure_written = false;
         if self.eat(T::Colon).is_some() {
+            structure_written = true;
             structure = self.mesh_type();
         }
         self.eat(T::Semicolon);
         if self.eat(T::StructureType).is_some() {
+            structure_written = true;
             let declared = self.mesh_type();
             if let (Some((first, _)), Some((second, span))) = (structure, declared)
                 && first != second
@@ -218,15 +223,19 @@ impl Parser<'_> {
         }
         let mut vars = Vec::new();
         while self.eat(T::Var).is_some() {
-            while self.at(T::Ident) {
+            while self.starts_declaration() {
                 vars.extend(self.declaration_group());
                 if self.eat(T::Semicolon).is_none() {
                     break;
                 }
             }
         }
-        if !self.at(T::Begin) && structure.is_none() && self.at(T::Ident) {
+        if structure.is_none()
+            && self.at(T::Ident)
+            && Structure::parse(self.text(self.token().span)).is_some()
+        {
             // `algorithm f(v : Vertex) HalfEdge;` — a forgotten colon.
+            structure_written = true;
             structure = self.mesh_type();
             self.eat(T::Semicolon);
         }
@@ -241,12 +250,15 @@ impl Parser<'_> {
                     self.line_of(start),
                     self.found()
                 );
-                self.error_here(message);
+                let span = self.token().span;
+                self.report(Diagnostic::error(span, message).with_hint(
+                    "an `if`, `while`, `do` or `begin` inside it may be missing its own `end`",
+                ));
                 self.previous_span().after()
             }
         };
         self.eat(T::Semicolon);
-        if structure.is_none() {
+        if !structure_written {
             self.report(
                 Diagnostic::error(name.span, format!("algorithm `{}` does not say which structure it walks", name.name))
                     .with_hint("add `structuretype WingedEdge` (or HalfEdge) after the header, or `: HalfEdge` after the parameters"),
@@ -281,10 +293,21 @@ impl Parser<'_> {
             format!("expected a name {context}, found {}", self.found())
         };
         self.error_here(message);
+        if token.kind.is_keyword() {
+            self.bump();
+        }
         Ident {
             name: String::new(),
             span: token.span,
         }
+    }
+
+    /// A declaration group starts with a name (or a keyword misused as one)
+    /// followed by `:` or `,`; anything else ends the `var` section.
+    fn starts_declaration(&self) -> bool {
+        let first = self.peek();
+        (first == T::Ident || first.is_keyword())
+            && matches!(self.token_at(1).kind, T::Colon | T::Comma)
     }
 
     fn mesh_type(&mut self) -> Option<(Structure, Span)> {
@@ -405,10 +428,14 @@ impl Parser<'_> {
                 T::End | T::Else | T::Eof => {}
                 T::While if in_do_body => {}
                 kind => {
-                    self.report(Diagnostic::error(
-                        end.after(),
-                        "expected `;` after this statement",
-                    ));
+                    // A bad character in between was reported already.
+                    let gap = end.end..self.token().span.start;
+                    if !self.diagnostics.iter().any(|d| gap.contains(&d.span.start)) {
+                        self.report(Diagnostic::error(
+                            end.after(),
+                            "expected `;` after this statement",
+                        ));
+                    }
                     if !STATEMENT_STARTS.contains(&kind) {
                         self.synchronize();
                     }

@@ -1,0 +1,310 @@
+//! Golden tests: rendered error messages of a corpus of broken algorithms,
+//! traces of library algorithms on small meshes, and disassembly. The
+//! expected files live in tests/algorithms/ at the workspace root; run with
+//! `EDGEWISE_BLESS=1` to rewrite them after an intended change.
+
+mod lang_support;
+
+use edgewise_core::lang::{self, Program, RunOptions, Topology, Value};
+use edgewise_core::mesh::{EdgeId, FaceId, VertexId, WingedEdgeMesh, winged_edge};
+use glam::Vec3;
+use lang_support::*;
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn golden_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/algorithms")
+}
+
+fn blessing() -> bool {
+    std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0")
+}
+
+/// Compares `actual` with the file, or rewrites the file when blessing.
+/// Returns a description of the difference, to report all at once.
+fn compare(path: &Path, actual: &str) -> Option<String> {
+    if blessing() {
+        fs::create_dir_all(path.parent().expect("golden files live in a folder"))
+            .expect("create folder");
+        fs::write(path, actual).expect("write golden file");
+        return None;
+    }
+    let expected = fs::read_to_string(path).unwrap_or_default();
+    if expected == actual {
+        return None;
+    }
+    Some(format!(
+        "{} differs (run with EDGEWISE_BLESS=1 to accept):\n--- expected\n{expected}\n--- actual\n{actual}",
+        path.display()
+    ))
+}
+
+fn finish(problems: Vec<String>) {
+    assert!(problems.is_empty(), "{}", problems.join("\n\n"));
+}
+
+#[test]
+fn error_corpus_renders_as_recorded() {
+    let folder = golden_root().join("errors");
+    let mut cases: Vec<PathBuf> = fs::read_dir(&folder)
+        .expect("tests/algorithms/errors exists")
+        .map(|entry| entry.expect("readable folder").path())
+        .filter(|path| path.extension().is_some_and(|e| e == "alg"))
+        .collect();
+    cases.sort();
+    assert!(cases.len() >= 30, "only {} broken algorithms", cases.len());
+    let mut problems = Vec::new();
+    for case in &cases {
+        let source = fs::read_to_string(case).expect("readable case");
+        let name = case
+            .file_name()
+            .expect("a file")
+            .to_string_lossy()
+            .into_owned();
+        let diagnostics = lang::check(&source);
+        if diagnostics.is_empty() {
+            problems.push(format!("{name} compiled without errors"));
+            continue;
+        }
+        let rendered = lang::render_all(&diagnostics, &source, Some(&name));
+        problems.extend(compare(&case.with_extension("txt"), &rendered));
+    }
+    finish(problems);
+}
+
+#[test]
+fn every_error_points_into_its_file() {
+    for entry in fs::read_dir(golden_root().join("errors")).expect("folder") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_none_or(|e| e != "alg") {
+            continue;
+        }
+        let source = fs::read_to_string(&path).expect("readable");
+        for diagnostic in lang::check(&source) {
+            assert!(
+                diagnostic.span.end as usize <= source.len(),
+                "{}: {diagnostic:?}",
+                path.display()
+            );
+            assert!(!diagnostic.message.is_empty());
+        }
+    }
+}
+
+/// The tetrahedron of the journal paper's Fig. 2, entered as its Table 2:
+/// edges a–f are 0–5, vertices A–D are 0–3, faces 1–4 are 0–3.
+pub fn table_2_tetrahedron() -> WingedEdgeMesh {
+    let edge =
+        |start: u32, end: u32, left: u32, right: u32, wings: [u32; 4]| winged_edge::WingedEdge {
+            start_vertex: VertexId::new(start),
+            end_vertex: VertexId::new(end),
+            left_face: Some(FaceId::new(left)),
+            right_face: Some(FaceId::new(right)),
+            left_predecessor: EdgeId::new(wings[0]),
+            left_successor: EdgeId::new(wings[1]),
+            right_predecessor: EdgeId::new(wings[2]),
+            right_successor: EdgeId::new(wings[3]),
+        };
+    let edges = vec![
+        edge(0, 3, 2, 0, [4, 5, 1, 2]),
+        edge(0, 1, 0, 3, [2, 0, 5, 3]),
+        edge(1, 3, 0, 1, [0, 1, 3, 4]),
+        edge(1, 2, 1, 3, [4, 2, 1, 5]),
+        edge(2, 3, 1, 2, [2, 3, 5, 0]),
+        edge(0, 2, 3, 2, [3, 1, 0, 4]),
+    ];
+    let positions = [Vec3::new(0.0, 0.0, 0.0), Vec3::X, Vec3::Y, Vec3::Z];
+    let vertices = [0, 1, 3, 4]
+        .iter()
+        .zip(positions)
+        .map(|(&e, position)| winged_edge::Vertex {
+            position,
+            incident_edge: Some(EdgeId::new(e)),
+        })
+        .collect();
+    let faces = [0, 2, 0, 1]
+        .iter()
+        .map(|&e| winged_edge::Face {
+            incident_edge: EdgeId::new(e),
+        })
+        .collect();
+    WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
+}
+
+fn library() -> (Program, Program) {
+    let mut programs = lang::library::load().expect("the library compiles");
+    let half = programs.pop().expect("two files");
+    let winged = programs.pop().expect("two files");
+    (winged, half)
+}
+
+fn trace_text(
+    program: &Program,
+    name: &str,
+    topology: &dyn Topology,
+    mesh: &str,
+    args: &[(&str, Value)],
+) -> String {
+    let algorithm = program.algorithm(name).expect("in the library");
+    let trace = lang::run(algorithm, &topology, args, RunOptions::default()).expect("inputs fit");
+    let shown: Vec<String> = args.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "# {} on the {mesh} ({}), {}",
+        algorithm.name,
+        algorithm.structure,
+        shown.join(", ")
+    );
+    out.push_str(&trace.render());
+    out
+}
+
+#[test]
+fn library_traces_render_as_recorded() {
+    let (winged_lib, half_lib) = library();
+    let tetra = tetrahedron();
+    let (we_tetra, he_tetra) = (winged(&tetra), half(&tetra));
+    let cube = cube();
+    let (we_cube, he_cube) = (winged(&cube), half(&cube));
+    let octa = octahedron();
+    let grid = quad_grid(2, 2);
+    let (we_grid, he_grid) = (winged(&grid), half(&grid));
+    let table_2 = table_2_tetrahedron();
+    let v = |i| [("v", Value::Vertex(i))];
+    let f = |i| [("f", Value::Face(i))];
+    let e = |i| [("e", Value::Edge(i))];
+    let cases: Vec<(&str, String)> = vec![
+        (
+            "table-2-vertexAdjacentEdge-A",
+            trace_text(
+                &winged_lib,
+                "vertexAdjacentEdge",
+                &table_2,
+                "tetrahedron of Table 2",
+                &v(0),
+            ),
+        ),
+        (
+            "winged-tetrahedron-vertexAdjacentEdge",
+            trace_text(
+                &winged_lib,
+                "vertexAdjacentEdge",
+                &we_tetra,
+                "tetrahedron",
+                &v(0),
+            ),
+        ),
+        (
+            "half-tetrahedron-vertexAdjacentEdge",
+            trace_text(
+                &half_lib,
+                "vertexAdjacentEdge",
+                &he_tetra,
+                "tetrahedron",
+                &v(0),
+            ),
+        ),
+        (
+            "winged-tetrahedron-vertexOppositeFace",
+            trace_text(
+                &winged_lib,
+                "vertexOppositeFace",
+                &we_tetra,
+                "tetrahedron",
+                &v(2),
+            ),
+        ),
+        (
+            "winged-cube-vertexValence",
+            trace_text(&winged_lib, "vertexValence", &we_cube, "cube", &v(0)),
+        ),
+        (
+            "half-cube-isExtraordinary",
+            trace_text(&half_lib, "isExtraordinary", &he_cube, "cube", &v(5)),
+        ),
+        (
+            "half-cube-faceAdjacentVertex",
+            trace_text(&half_lib, "faceAdjacentVertex", &he_cube, "cube", &f(0)),
+        ),
+        (
+            "winged-cube-faceOppositeFace",
+            trace_text(&winged_lib, "faceOppositeFace", &we_cube, "cube", &f(1)),
+        ),
+        (
+            "half-cube-vertexLink",
+            trace_text(&half_lib, "vertexLink", &he_cube, "cube", &v(0)),
+        ),
+        (
+            "half-octahedron-vertexOppositeVertex",
+            trace_text(
+                &half_lib,
+                "vertexOppositeVertex",
+                &half(&octa),
+                "octahedron",
+                &v(0),
+            ),
+        ),
+        (
+            "winged-grid-boundaryLoop",
+            trace_text(
+                &winged_lib,
+                "boundaryLoop",
+                &we_grid,
+                "2×2 quad grid",
+                &e(0),
+            ),
+        ),
+        (
+            "half-grid-vertexAdjacentFace-at-corner",
+            trace_text(
+                &half_lib,
+                "vertexAdjacentFace",
+                &he_grid,
+                "2×2 quad grid",
+                &v(0),
+            ),
+        ),
+        (
+            "winged-grid-vertexAdjacentFace-at-corner",
+            trace_text(
+                &winged_lib,
+                "vertexAdjacentFace",
+                &we_grid,
+                "2×2 quad grid",
+                &v(2),
+            ),
+        ),
+        (
+            "half-grid-vertexAdjacentFaceOpen-at-corner",
+            trace_text(
+                &half_lib,
+                "vertexAdjacentFaceOpen",
+                &he_grid,
+                "2×2 quad grid",
+                &v(0),
+            ),
+        ),
+    ];
+    let folder = golden_root().join("traces");
+    let problems = cases
+        .iter()
+        .filter_map(|(name, text)| compare(&folder.join(format!("{name}.txt")), text))
+        .collect();
+    finish(problems);
+}
+
+#[test]
+fn disassembly_renders_as_recorded() {
+    let (winged_lib, half_lib) = library();
+    let mut problems = Vec::new();
+    for (program, file) in [(&winged_lib, "winged-edge"), (&half_lib, "half-edge")] {
+        let text = lang::disassemble_all(program.algorithms.iter().map(|a| a.as_ref()));
+        problems.extend(compare(
+            &golden_root().join(format!("disasm/{file}.txt")),
+            &text,
+        ));
+    }
+    finish(problems);
+}
