@@ -96,10 +96,8 @@ impl Polygons {
 
     fn push_face_inner(&mut self, vertices: &[u32], line: usize) -> FaceId {
         let face = self.face_count();
-        if line != 0 && self.lines.is_empty() {
+        if line != 0 || !self.lines.is_empty() {
             self.lines.resize(face, 0);
-        }
-        if !self.lines.is_empty() {
             self.lines.push(line);
         }
         self.indices.extend_from_slice(vertices);
