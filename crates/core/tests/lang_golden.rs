@@ -40,7 +40,7 @@ fn compare(path: &Path, actual: &str) -> Option<String> {
     ))
 }
 
-fn finish(problems: Vec<String>) {
+fn finish(problems: &[String]) {
     assert!(problems.is_empty(), "{}", problems.join("\n\n"));
 }
 
@@ -70,7 +70,7 @@ fn error_corpus_renders_as_recorded() {
         let rendered = lang::render_all(&diagnostics, &source, Some(&name));
         problems.extend(compare(&case.with_extension("txt"), &rendered));
     }
-    finish(problems);
+    finish(&problems);
 }
 
 #[test]
@@ -288,11 +288,11 @@ fn library_traces_render_as_recorded() {
         ),
     ];
     let folder = golden_root().join("traces");
-    let problems = cases
+    let problems: Vec<String> = cases
         .iter()
         .filter_map(|(name, text)| compare(&folder.join(format!("{name}.txt")), text))
         .collect();
-    finish(problems);
+    finish(&problems);
 }
 
 #[test]
@@ -300,11 +300,11 @@ fn disassembly_renders_as_recorded() {
     let (winged_lib, half_lib) = library();
     let mut problems = Vec::new();
     for (program, file) in [(&winged_lib, "winged-edge"), (&half_lib, "half-edge")] {
-        let text = lang::disassemble_all(program.algorithms.iter().map(|a| a.as_ref()));
+        let text = lang::disassemble_all(program.algorithms.iter().map(AsRef::as_ref));
         problems.extend(compare(
             &golden_root().join(format!("disasm/{file}.txt")),
             &text,
         ));
     }
-    finish(problems);
+    finish(&problems);
 }

@@ -725,8 +725,13 @@ impl Parser<'_> {
         self.or_expression()
     }
 
-    fn binary(op: BinaryOp, left: Expr, right: Expr) -> Expr {
-        let span = left.span.to(right.span);
+    /// A binary expression's span runs from where its left operand began to
+    /// the last token read, so it includes any parentheses around operands.
+    fn binary(&self, start: u32, op: BinaryOp, left: Expr, right: Expr) -> Expr {
+        let span = Span {
+            start,
+            end: self.previous_span().end.max(start),
+        };
         Expr {
             kind: ExprKind::Binary {
                 op,
@@ -738,19 +743,21 @@ impl Parser<'_> {
     }
 
     fn or_expression(&mut self) -> Expr {
+        let start = self.token().span.start;
         let mut left = self.and_expression();
         while self.eat(T::Or).is_some() {
             let right = self.and_expression();
-            left = Self::binary(BinaryOp::Or, left, right);
+            left = self.binary(start, BinaryOp::Or, left, right);
         }
         left
     }
 
     fn and_expression(&mut self) -> Expr {
+        let start = self.token().span.start;
         let mut left = self.not_expression();
         while self.eat(T::And).is_some() {
             let right = self.not_expression();
-            left = Self::binary(BinaryOp::And, left, right);
+            left = self.binary(start, BinaryOp::And, left, right);
         }
         left
     }
@@ -758,7 +765,7 @@ impl Parser<'_> {
     fn not_expression(&mut self) -> Expr {
         if let Some(token) = self.eat(T::Not) {
             let operand = self.not_expression();
-            let span = token.span.to(operand.span);
+            let span = token.span.to(self.previous_span());
             return Expr {
                 kind: ExprKind::Unary {
                     op: UnaryOp::Not,
@@ -793,12 +800,13 @@ impl Parser<'_> {
     }
 
     fn comparison(&mut self) -> Expr {
+        let start = self.token().span.start;
         let left = self.additive();
         let Some(op) = self.comparison_operator() else {
             return left;
         };
         let right = self.additive();
-        let mut expr = Self::binary(op, left, right);
+        let mut expr = self.binary(start, op, left, right);
         let chained = self.token().span;
         if self.comparison_operator().is_some() {
             self.report(
@@ -813,6 +821,7 @@ impl Parser<'_> {
     }
 
     fn additive(&mut self) -> Expr {
+        let start = self.token().span.start;
         let mut left = self.multiplicative();
         loop {
             let op = match self.peek() {
@@ -822,11 +831,12 @@ impl Parser<'_> {
             };
             self.bump();
             let right = self.multiplicative();
-            left = Self::binary(op, left, right);
+            left = self.binary(start, op, left, right);
         }
     }
 
     fn multiplicative(&mut self) -> Expr {
+        let start = self.token().span.start;
         let mut left = self.unary();
         loop {
             let op = match self.peek() {
@@ -837,14 +847,14 @@ impl Parser<'_> {
             };
             self.bump();
             let right = self.unary();
-            left = Self::binary(op, left, right);
+            left = self.binary(start, op, left, right);
         }
     }
 
     fn unary(&mut self) -> Expr {
         if let Some(token) = self.eat(T::Minus) {
             let operand = self.unary();
-            let span = token.span.to(operand.span);
+            let span = token.span.to(self.previous_span());
             if let ExprKind::Integer(n) = operand.kind {
                 return Expr {
                     kind: ExprKind::Integer(n.wrapping_neg()),

@@ -163,14 +163,21 @@ impl TraceRecorder {
         final_variables: Vec<Value>,
         outcome: Outcome,
     ) -> Trace {
+        let mut recorder = self;
+        // Growth by doubling can leave half the step buffer unused.
+        recorder.steps.shrink_to_fit();
+        recorder.snapshots.shrink_to_fit();
+        recorder.marks.shrink_to_fit();
+        recorder.highlights.shrink_to_fit();
+        let recorder = recorder;
         Trace {
             algorithm,
             initial,
-            steps: self.steps,
-            snapshots: self.snapshots,
-            marks: self.marks,
-            highlights: self.highlights,
-            messages: self.messages,
+            steps: recorder.steps,
+            snapshots: recorder.snapshots,
+            marks: recorder.marks,
+            highlights: recorder.highlights,
+            messages: recorder.messages,
             final_variables,
             outcome,
         }

@@ -47,6 +47,15 @@ pub enum ElementKind {
 }
 
 impl ElementKind {
+    /// "vertices", "edges", "faces".
+    pub fn plural(self) -> &'static str {
+        match self {
+            ElementKind::Vertex => "vertices",
+            ElementKind::Edge => "edges",
+            ElementKind::Face => "faces",
+        }
+    }
+
     /// Lower-case, as elements are shown in traces: "vertex 3".
     pub fn prose(self) -> &'static str {
         match self {

@@ -106,8 +106,8 @@ impl fmt::Display for InputError {
             } => {
                 write!(
                     f,
-                    "parameter `{name}`: {element} does not exist (the mesh has {count} {}s)",
-                    element.kind().prose()
+                    "parameter `{name}`: {element} does not exist (the mesh has {count} {})",
+                    element.kind().plural()
                 )
             }
             InputError::Duplicate { name } => write!(f, "parameter `{name}` is given twice"),
