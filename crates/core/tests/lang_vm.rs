@@ -575,3 +575,65 @@ fn a_million_steps_stay_compact_and_reachable() {
     assert_eq!(state, expected);
     assert_eq!(trace.final_variables()[2], Value::Integer(120_000));
 }
+
+#[test]
+fn deep_nesting_is_refused_not_overflowing_the_stack() {
+    let deep_parens = format!(
+        "algorithm a(n : Integer) : HalfEdge; begin n := {}1{}; end",
+        "(".repeat(100_000),
+        ")".repeat(100_000)
+    );
+    let deep_blocks = format!(
+        "algorithm a(n : Integer) : HalfEdge; begin {} n := 1 {} end",
+        "begin ".repeat(100_000),
+        "end ".repeat(100_000)
+    );
+    let deep_nots = format!(
+        "algorithm a(b : Boolean) : HalfEdge; begin b := {} b; end",
+        "not ".repeat(100_000)
+    );
+    for source in [deep_parens, deep_blocks, deep_nots] {
+        let diagnostics = lang::check(&source);
+        assert!(
+            diagnostics
+                .iter()
+                .any(|d| d.message.contains("nested too deeply")),
+            "{diagnostics:?}"
+        );
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+
+    /// Whatever a student types, compiling it reports errors or succeeds;
+    /// it never panics. Inputs: the library with a random slice cut out
+    /// and random text spliced in.
+    #[test]
+    fn compiling_never_panics(cut in 0usize..20_000, len in 0usize..40, insert in "[ -~\\n]{0,12}") {
+        let library = lang::library::SOURCES[(cut / 7) % 2].1;
+        let start = cut % library.len();
+        let end = (start + len).min(library.len());
+        let (start, end) = (floor_char(library, start), floor_char(library, end));
+        let source = format!("{}{insert}{}", &library[..start], &library[end..]);
+        match lang::compile(&source) {
+            Ok(program) => {
+                for algorithm in &program.algorithms {
+                    let _ = lang::disassemble(algorithm);
+                }
+            }
+            Err(diagnostics) => {
+                proptest::prop_assert!(!diagnostics.is_empty());
+                let rendered = lang::render_all(&diagnostics, &source, Some("x.alg"));
+                proptest::prop_assert!(rendered.contains("error"));
+            }
+        }
+    }
+}
+
+fn floor_char(text: &str, mut index: usize) -> usize {
+    while !text.is_char_boundary(index) {
+        index -= 1;
+    }
+    index
+}

@@ -22,6 +22,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
         tokens,
         pos: 0,
         diagnostics,
+        depth: 0,
     };
     let file = parser.file();
     (file, parser.diagnostics)
@@ -33,7 +34,13 @@ struct Parser<'s> {
     tokens: Vec<Token>,
     pos: usize,
     diagnostics: Vec<Diagnostic>,
+    /// Current nesting of statements and expressions, bounded so that no
+    /// input can exhaust the stack.
+    depth: u32,
 }
+
+/// Deeper nesting than this is refused rather than recursed into.
+const MAX_NESTING: u32 = 100;
 
 /// Tokens that may begin a statement, used to decide whether a missing `;`
 /// can simply be assumed.
@@ -465,6 +472,18 @@ impl Parser<'_> {
     }
 
     fn statement(&mut self) -> Stmt {
+        if !self.enter() {
+            return Stmt {
+                kind: StmtKind::Error,
+                span: self.token().span,
+            };
+        }
+        let statement = self.statement_inner();
+        self.depth -= 1;
+        statement
+    }
+
+    fn statement_inner(&mut self) -> Stmt {
         let start = self.token().span;
         let kind = match self.peek() {
             T::If => return self.if_statement(),
@@ -722,7 +741,31 @@ impl Parser<'_> {
     // ---- expressions, loosest first ----
 
     fn expression(&mut self) -> Expr {
-        self.or_expression()
+        if !self.enter() {
+            return Expr {
+                kind: ExprKind::Error,
+                span: self.token().span,
+            };
+        }
+        let expr = self.or_expression();
+        self.depth -= 1;
+        expr
+    }
+
+    /// Counts one level of nesting; past the limit, reports it once and
+    /// skips the rest of the file, which ends every open construct.
+    fn enter(&mut self) -> bool {
+        if self.depth < MAX_NESTING {
+            self.depth += 1;
+            return true;
+        }
+        let span = self.token().span;
+        self.report(Diagnostic::error(
+            span,
+            format!("this is nested too deeply (more than {MAX_NESTING} levels)"),
+        ));
+        self.pos = self.tokens.len().saturating_sub(1);
+        false
     }
 
     /// A binary expression's span runs from where its left operand began to
@@ -764,7 +807,14 @@ impl Parser<'_> {
 
     fn not_expression(&mut self) -> Expr {
         if let Some(token) = self.eat(T::Not) {
+            if !self.enter() {
+                return Expr {
+                    kind: ExprKind::Error,
+                    span: token.span,
+                };
+            }
             let operand = self.not_expression();
+            self.depth -= 1;
             let span = token.span.to(self.previous_span());
             return Expr {
                 kind: ExprKind::Unary {
@@ -853,7 +903,14 @@ impl Parser<'_> {
 
     fn unary(&mut self) -> Expr {
         if let Some(token) = self.eat(T::Minus) {
+            if !self.enter() {
+                return Expr {
+                    kind: ExprKind::Error,
+                    span: token.span,
+                };
+            }
             let operand = self.unary();
+            self.depth -= 1;
             let span = token.span.to(self.previous_span());
             if let ExprKind::Integer(n) = operand.kind {
                 return Expr {
