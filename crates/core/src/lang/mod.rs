@@ -28,7 +28,7 @@
 //!              | "begin" statement-list "end"
 //!              | "break" | "continue"
 //!              | ("mark" | "highlight") expr | expr "." ("mark" | "highlight")
-//!              | "message" string { "," expr }
+//!              | "message" item { "," item }       item := string | expr
 //! expr        := or-expr;  "or" < "and" < "not" < comparisons
 //!                (= == <> < <= > >=, not chained) < + - < * div mod < unary -
 //!                < postfix lookups (expr "." lookup) < primary
@@ -37,7 +37,11 @@
 //! type        := "Vertex" | "Edge" | "Face" | "Integer" | "Boolean"
 //! ```
 //! Keywords, type names, structure names and lookup names ignore case;
-//! variable names do not. `//` starts a comment.
+//! variable names do not. `//` starts a comment. Element variables start as
+//! `null`, Integers (32-bit, overflow is a run-time error) as 0, Booleans as
+//! false. `and` and `or` short-circuit. Half-edge lookups accept the aliases
+//! `face`, `vertex` (end vertex), `pair`, `twin`, `successor`, `next`,
+//! `predecessor` and `prev`.
 
 pub mod ast;
 pub mod checker;

@@ -462,7 +462,7 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                 Op::Lookup { dst, base, field } => {
                     let base_value = self.get(base);
                     let Some(element) = base_value.element() else {
-                        let message = self.null_lookup_message(pc, base);
+                        let message = self.explain_null(base);
                         return self.fail(pc, message);
                     };
                     let result = match self.topology.lookup(element, field) {
@@ -696,10 +696,6 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
             );
         }
         "null has no lookups".to_owned()
-    }
-
-    fn null_lookup_message(&self, _pc: usize, base: Reg) -> String {
-        self.explain_null(base)
     }
 
     fn cannot_act_message(&self, word: &str, reg: Reg) -> String {
