@@ -53,7 +53,9 @@ async fn start_app() -> Result<(), String> {
         .await
         .map_err(|err| {
             format!(
-                "Edgewise could not start its 3D view: {}. It needs a browser with WebGPU or WebGL2 enabled.",
+                "Edgewise needs WebGPU or WebGL2 for its 3D view, and this browser offers neither. \
+                 Try a recent Chrome, Edge, Firefox or Safari, and check that hardware \
+                 acceleration is turned on.\n\nDetails: {}",
                 js_error_text(&err)
             )
         })?;

@@ -45,7 +45,7 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
-    match run(Cli::parse()) {
+    match run(&Cli::parse()) {
         Ok(()) => std::process::ExitCode::SUCCESS,
         Err(err) => {
             eprintln!("\nxtask: error: {err:#}");
@@ -54,7 +54,7 @@ fn main() -> std::process::ExitCode {
     }
 }
 
-fn run(cli: Cli) -> anyhow::Result<()> {
+fn run(cli: &Cli) -> anyhow::Result<()> {
     let root = workspace_root()?;
     std::env::set_current_dir(&root)
         .with_context(|| format!("cannot enter the workspace at {}", root.display()))?;
