@@ -6,6 +6,7 @@
 mod app;
 mod backend;
 pub mod state;
+pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
