@@ -2,18 +2,20 @@
 //!
 //! Both builds follow the same steps, all linear and without hashing:
 //!
-//! 1. check every face (size, index range, repeated vertices) and count the
-//!    corners at each vertex;
-//! 2. counting-sort the directed edges by their lower-numbered end, so each
-//!    bucket holds every use of the edges at that vertex; sorting a bucket puts
-//!    the uses of one edge side by side, which finds pairs, non-manifold edges
-//!    and orientation conflicts in one scan;
+//! 1. check every face (size, index range, repeated vertices), count the
+//!    corners at each vertex, and write the per-corner data;
+//! 2. bucket the directed edges by their lower-numbered end (a chain per
+//!    vertex, threaded through the not-yet-used pair fields), so each bucket
+//!    holds every use of the edges at that vertex; sorting a bucket puts the
+//!    uses of one edge side by side, which finds pairs, non-manifold edges and
+//!    orientation conflicts in one scan;
 //! 3. number the boundary half-edges and link them along the boundary loops;
 //! 4. walk once around every vertex to refuse non-manifold vertices.
 //!
 //! Interior half-edge `h` is corner `h` of the flat polygon list, so its start
-//! vertex is `indices[h]` and no per-half-edge table is needed until the final
-//! structure is written.
+//! vertex is `indices[h]`. The half-edge build writes its rows in the first
+//! pass and pairs straight into them; besides the rows it holds only a few
+//! per-vertex tables, so the peak stays near the final size.
 
 use super::error::{BuildError, BuildWarning, FaceRef};
 use super::ids::{FaceId, VertexId};
@@ -21,11 +23,18 @@ use super::polygons::Polygons;
 
 /// "No element" in the builder's raw `u32` tables.
 pub(crate) const NONE: u32 = u32::MAX;
+/// An interior half-edge whose pair is not known yet. Unlike [`NONE`] it is a
+/// value a typed id can hold, so half-edge rows can carry it during the build.
+pub(crate) const UNPAIRED: u32 = u32::MAX - 1;
 /// Marks a bucket entry whose half-edge runs from the bucket's vertex upwards.
 const FORWARD: u32 = 1 << 31;
-/// Half-edge numbers must leave the [`FORWARD`] bit free, and boundary
-/// half-edges (at most one per interior one) must stay below [`NONE`].
-const MAX_CORNERS: usize = (1 << 31) - 1;
+/// Ends a bucket chain (with or without the [`FORWARD`] bit, a value typed ids
+/// can hold and no half-edge has).
+const CHAIN_END: u32 = FORWARD - 2;
+/// Half-edge numbers must stay below [`CHAIN_END`] and leave the [`FORWARD`]
+/// bit free; boundary half-edges (at most one per interior one) then stay
+/// below [`UNPAIRED`].
+const MAX_CORNERS: usize = CHAIN_END as usize;
 
 /// How corners are grouped into faces: tells the successor, predecessor and
 /// face of an interior half-edge.
@@ -95,12 +104,37 @@ impl Layout for General<'_> {
     }
 }
 
-/// The result of the per-face checks.
-pub(crate) struct CheckedFaces {
+/// Where the pairing step writes pairs: the half-edge rows themselves for a
+/// half-edge build, a plain table for a winged-edge build.
+pub(crate) trait Pairs {
+    fn pair(&self, h: u32) -> u32;
+    fn set_pair(&mut self, h: u32, pair: u32);
+    /// The end vertex (`forward`) or start vertex of interior half-edge `h`,
+    /// read from wherever is cheapest.
+    fn end_or_start<L: Layout>(&self, layout: &L, indices: &[u32], h: u32, forward: bool) -> u32;
+}
+
+impl Pairs for Vec<u32> {
+    #[inline]
+    fn pair(&self, h: u32) -> u32 {
+        self[h as usize]
+    }
+    #[inline]
+    fn set_pair(&mut self, h: u32, pair: u32) {
+        self[h as usize] = pair;
+    }
+    #[inline]
+    fn end_or_start<L: Layout>(&self, layout: &L, indices: &[u32], h: u32, forward: bool) -> u32 {
+        indices[if forward { layout.next(h) } else { h } as usize]
+    }
+}
+
+/// The result of the face scan.
+pub(crate) struct Scanned {
     /// Corners at each vertex (= interior half-edges leaving it).
     pub valence: Vec<u32>,
-    /// Every face has exactly three corners.
-    pub triangles: bool,
+    /// The head of each vertex's bucket chain (see [`scan_faces`]).
+    pub heads: Vec<u32>,
     /// Unused vertices.
     pub warnings: Vec<BuildWarning>,
 }
@@ -112,15 +146,36 @@ fn face_ref(polygons: &Polygons, face: usize) -> FaceRef {
     }
 }
 
-/// Step 1: refuses faces that are too small, out of range or repeat a
-/// vertex, and counts the corners at each vertex.
-pub(crate) fn check_faces(polygons: &Polygons) -> Result<CheckedFaces, BuildError> {
+/// Whether every face has exactly three corners (then [`Triangles`] applies).
+pub(crate) fn all_triangles(polygons: &Polygons) -> bool {
+    polygons.corner_count() == 3 * polygons.face_count()
+        && polygons
+            .offsets()
+            .iter()
+            .enumerate()
+            .all(|(face, &start)| start == 3 * face)
+}
+
+/// Step 1, in one pass over the faces: refuses faces that are too small, out
+/// of range or repeat a vertex, counts the corners at each vertex, and hands
+/// every interior half-edge `h = a→b` of face `f` to `corner(h, a, b, f, link)`.
+///
+/// `link` threads the half-edges into one chain per bucket (the edges whose
+/// lower-numbered end is the same vertex): the caller stores it as the
+/// half-edge's pair until [`pair_up`] replaces it, so the buckets need no
+/// table of their own. It is the next half-edge of the chain (or
+/// [`CHAIN_END`]) plus the [`FORWARD`] bit when `a < b`.
+pub(crate) fn scan_faces(
+    polygons: &Polygons,
+    triangles: bool,
+    mut corner: impl FnMut(u32, u32, u32, u32, u32),
+) -> Result<Scanned, BuildError> {
     let vertex_count = polygons.vertex_count();
-    if vertex_count >= NONE as usize {
+    if vertex_count >= UNPAIRED as usize {
         return Err(BuildError::TooLarge {
             element: "vertices",
             count: vertex_count,
-            limit: NONE as usize - 1,
+            limit: UNPAIRED as usize - 1,
         });
     }
     let corners = polygons.corner_count();
@@ -132,58 +187,88 @@ pub(crate) fn check_faces(polygons: &Polygons) -> Result<CheckedFaces, BuildErro
         });
     }
     let indices = polygons.indices();
-    let offsets = polygons.offsets();
     let mut valence = vec![0u32; vertex_count];
-    // Only faces with many corners use this (last face that used each vertex).
-    let mut last_face: Vec<u32> = Vec::new();
-    let mut triangles = true;
-    for (face, window) in offsets.windows(2).enumerate() {
-        let &[start, end] = window else { continue };
-        let corners = indices.get(start..end).unwrap_or(&[]);
-        triangles &= corners.len() == 3;
-        if corners.len() < 3 {
-            return Err(BuildError::TooFewVertices {
-                face: face_ref(polygons, face),
-                count: corners.len(),
-            });
-        }
-        for &v in corners {
-            if v as usize >= vertex_count {
+    let mut heads = vec![CHAIN_END; vertex_count];
+    let mut half_edge = |h: u32, a: u32, b: u32, face: u32| {
+        let head = &mut heads[a.min(b) as usize];
+        corner(h, a, b, face, *head | if a < b { FORWARD } else { 0 });
+        *head = h;
+    };
+    if triangles {
+        for (face, corners) in (0u32..).zip(indices.chunks_exact(3)) {
+            let &[a, b, c] = corners else { continue };
+            if a.max(b).max(c) as usize >= vertex_count {
+                let index = [a, b, c]
+                    .into_iter()
+                    .find(|&v| v as usize >= vertex_count)
+                    .unwrap_or(a);
                 return Err(BuildError::IndexOutOfRange {
-                    face: face_ref(polygons, face),
-                    index: v,
+                    face: face_ref(polygons, face as usize),
+                    index,
                     vertex_count,
                 });
             }
-        }
-        let repeated = if corners.len() <= 16 {
-            corners
-                .iter()
-                .enumerate()
-                .find_map(|(i, &v)| corners[..i].contains(&v).then_some(v))
-        } else {
-            if last_face.is_empty() {
-                last_face = vec![NONE; vertex_count];
+            if a == b || a == c || b == c {
+                let vertex = VertexId::new(if a == b || a == c { a } else { b });
+                return Err(BuildError::RepeatedVertex {
+                    face: face_ref(polygons, face as usize),
+                    vertex,
+                });
             }
-            let mut repeated = None;
-            for &v in corners {
-                let slot = &mut last_face[v as usize];
-                if *slot == face as u32 {
-                    repeated = Some(v);
-                    break;
+            for v in [a, b, c] {
+                valence[v as usize] += 1;
+            }
+            let h = 3 * face;
+            half_edge(h, a, b, face);
+            half_edge(h + 1, b, c, face);
+            half_edge(h + 2, c, a, face);
+        }
+    } else {
+        // Only faces with many corners use this (last face that used each vertex).
+        let mut last_face: Vec<u32> = Vec::new();
+        for (face, window) in polygons.offsets().windows(2).enumerate() {
+            let &[start, end] = window else { continue };
+            let corners = indices.get(start..end).unwrap_or(&[]);
+            if corners.len() < 3 {
+                return Err(BuildError::TooFewVertices {
+                    face: face_ref(polygons, face),
+                    count: corners.len(),
+                });
+            }
+            if let Some(&index) = corners.iter().find(|&&v| v as usize >= vertex_count) {
+                return Err(BuildError::IndexOutOfRange {
+                    face: face_ref(polygons, face),
+                    index,
+                    vertex_count,
+                });
+            }
+            let repeated = if corners.len() <= 16 {
+                corners
+                    .iter()
+                    .enumerate()
+                    .find_map(|(i, &v)| corners[..i].contains(&v).then_some(v))
+            } else {
+                if last_face.is_empty() {
+                    last_face = vec![NONE; vertex_count];
                 }
-                *slot = face as u32;
+                corners.iter().copied().find(|&v| {
+                    let slot = &mut last_face[v as usize];
+                    let seen = *slot == face as u32;
+                    *slot = face as u32;
+                    seen
+                })
+            };
+            if let Some(v) = repeated {
+                return Err(BuildError::RepeatedVertex {
+                    face: face_ref(polygons, face),
+                    vertex: VertexId::new(v),
+                });
             }
-            repeated
-        };
-        if let Some(v) = repeated {
-            return Err(BuildError::RepeatedVertex {
-                face: face_ref(polygons, face),
-                vertex: VertexId::new(v),
-            });
-        }
-        for &v in corners {
-            valence[v as usize] += 1;
+            for (k, &a) in corners.iter().enumerate() {
+                valence[a as usize] += 1;
+                let b = corners.get(k + 1).copied().unwrap_or(corners[0]);
+                half_edge((start + k) as u32, a, b, face as u32);
+            }
         }
     }
     let warnings = valence
@@ -194,68 +279,39 @@ pub(crate) fn check_faces(polygons: &Polygons) -> Result<CheckedFaces, BuildErro
             vertex: VertexId::new(v as u32),
         })
         .collect();
-    Ok(CheckedFaces {
+    Ok(Scanned {
         valence,
-        triangles,
+        heads,
         warnings,
     })
 }
 
-/// The connectivity both structures are written from.
-pub(crate) struct Topology {
-    /// Number of interior half-edges (= face corners).
-    pub interior: u32,
-    /// Pair of each interior half-edge; `interior + i` is boundary half-edge `i`.
-    pub pair: Vec<u32>,
-    /// The interior pair of each boundary half-edge.
-    pub boundary_twin: Vec<u32>,
-    /// The successor of each boundary half-edge (a boundary half-edge number).
-    pub boundary_next: Vec<u32>,
-    /// The lowest-numbered half-edge ending at each vertex, or [`NONE`].
-    pub first_incoming: Vec<u32>,
-}
-
-/// Steps 2 to 4. `valence` comes from [`check_faces`], which also guarantees
-/// every index is in range (so the indexing below cannot fail).
-pub(crate) fn topology<L: Layout>(
+/// Step 2: pairs every interior half-edge, refusing edges with more than two
+/// faces or two faces running the same way. Each bucket chain (see
+/// [`scan_faces`]) is gathered and sorted by upper end, which puts the uses of
+/// one edge side by side. Replaces every link with the pair, or [`UNPAIRED`];
+/// returns the unpaired half-edges in increasing order.
+pub(crate) fn pair_up<L: Layout>(
     polygons: &Polygons,
     layout: &L,
-    valence: &[u32],
-) -> Result<Topology, BuildError> {
+    heads: &[u32],
+    pairs: &mut impl Pairs,
+) -> Result<Vec<u32>, BuildError> {
     let indices = polygons.indices();
-    let n = indices.len() as u32;
-    let vertex_count = valence.len();
-    let ends = |h: u32| (indices[h as usize], indices[layout.next(h) as usize]);
-
-    // Step 2: bucket every directed edge under its lower-numbered end.
-    let mut cursor = vec![0u32; vertex_count + 1];
-    for h in 0..n {
-        let (a, b) = ends(h);
-        cursor[a.min(b) as usize + 1] += 1;
-    }
-    for i in 1..cursor.len() {
-        cursor[i] += cursor[i - 1];
-    }
-    // Entry: the upper end in the high half (so sorting groups an edge's uses),
-    // the half-edge and its direction in the low half.
-    let mut entries = vec![0u64; n as usize];
-    for h in 0..n {
-        let (a, b) = ends(h);
-        let (low, high, tag) = if a < b {
-            (a, b, h | FORWARD)
-        } else {
-            (b, a, h)
-        };
-        let slot = &mut cursor[low as usize];
-        entries[*slot as usize] = (u64::from(high) << 32) | u64::from(tag);
-        *slot += 1;
-    }
-    // Now cursor[v] is the end of bucket v.
-    let mut pair = vec![NONE; n as usize];
-    let mut start = 0;
-    for (low, &end) in cursor.iter().take(vertex_count).enumerate() {
-        let bucket = &mut entries[start..end as usize];
-        start = end as usize;
+    let mut unpaired = Vec::new();
+    // Entry: the upper end in the high half, the half-edge and its direction
+    // in the low half. Reused for every bucket.
+    let mut bucket: Vec<u64> = Vec::new();
+    for (low, &head) in (0u32..).zip(heads) {
+        bucket.clear();
+        let mut h = head;
+        while h != CHAIN_END {
+            let link = pairs.pair(h);
+            let forward = link & FORWARD;
+            let high = pairs.end_or_start(layout, indices, h, forward != 0);
+            bucket.push((u64::from(high) << 32) | u64::from(h | forward));
+            h = link & !FORWARD;
+        }
         if bucket.len() > 1 {
             bucket.sort_unstable();
         }
@@ -267,15 +323,19 @@ pub(crate) fn topology<L: Layout>(
                 j += 1;
             }
             match j - i {
-                1 => {}
+                1 => {
+                    let h = bucket[i] as u32 & !FORWARD;
+                    pairs.set_pair(h, UNPAIRED);
+                    unpaired.push(h);
+                }
                 2 => {
                     let (x, y) = (bucket[i] as u32, bucket[i + 1] as u32);
                     let (hx, hy) = (x & !FORWARD, y & !FORWARD);
                     if (x ^ y) & FORWARD == 0 {
                         let (from, to) = if x & FORWARD != 0 {
-                            (low as u32, high)
+                            (low, high)
                         } else {
-                            (high, low as u32)
+                            (high, low)
                         };
                         let (fx, fy) = (layout.face(hx) as usize, layout.face(hy) as usize);
                         return Err(BuildError::InconsistentOrientation {
@@ -285,8 +345,8 @@ pub(crate) fn topology<L: Layout>(
                             second: face_ref(polygons, fx.max(fy)),
                         });
                     }
-                    pair[hx as usize] = hy;
-                    pair[hy as usize] = hx;
+                    pairs.set_pair(hx, hy);
+                    pairs.set_pair(hy, hx);
                 }
                 _ => {
                     let mut faces: Vec<usize> = bucket[i..j]
@@ -295,7 +355,7 @@ pub(crate) fn topology<L: Layout>(
                         .collect();
                     faces.sort_unstable();
                     return Err(BuildError::NonManifoldEdge {
-                        start: VertexId::new(low as u32),
+                        start: VertexId::new(low),
                         end: VertexId::new(high),
                         faces: faces.into_iter().map(|f| face_ref(polygons, f)).collect(),
                     });
@@ -304,36 +364,51 @@ pub(crate) fn topology<L: Layout>(
             i = j;
         }
     }
-    drop(entries);
-    drop(cursor);
+    unpaired.sort_unstable();
+    Ok(unpaired)
+}
 
-    // Step 3: boundary half-edges come after the interior ones, in the order of
-    // their interior pair.
-    let mut boundary_twin = Vec::new();
-    for h in 0..n {
-        if pair[h as usize] == NONE {
-            pair[h as usize] = n + boundary_twin.len() as u32;
-            boundary_twin.push(h);
-        }
+/// The boundary half-edges: boundary half-edge `i` is number `n + i`.
+pub(crate) struct Boundary {
+    /// The interior pair of each boundary half-edge.
+    pub twin: Vec<u32>,
+    /// The successor of each boundary half-edge (a boundary half-edge number).
+    pub next: Vec<u32>,
+}
+
+/// Step 3: numbers the boundary half-edges after the interior ones, in the
+/// order of their interior pair, records them as those pairs' pairs, and
+/// links them along the boundary loops.
+pub(crate) fn link_boundary<L: Layout>(
+    polygons: &Polygons,
+    layout: &L,
+    valence: &[u32],
+    twin: Vec<u32>,
+    pairs: &mut impl Pairs,
+) -> Result<Boundary, BuildError> {
+    let indices = polygons.indices();
+    let n = indices.len() as u32;
+    for (b, &h) in (n..).zip(&twin) {
+        pairs.set_pair(h, b);
     }
     // The boundary half-edge paired with h = a→b runs b→a; its successor is the
     // boundary half-edge leaving a, found by turning around a through the fan
     // of h until an unpaired edge. The turn never repeats (h has no pair to come
     // back through), so it ends within valence(a) steps.
-    let mut boundary_next = Vec::with_capacity(boundary_twin.len());
-    for &h in &boundary_twin {
+    let mut next = Vec::with_capacity(twin.len());
+    for &h in &twin {
         let a = indices[h as usize];
         let mut k = layout.prev(h);
-        let mut next = NONE;
+        let mut found = NONE;
         for _ in 0..=valence[a as usize] {
-            let p = pair[k as usize];
+            let p = pairs.pair(k);
             if p >= n {
-                next = p;
+                found = p;
                 break;
             }
             k = layout.prev(p);
         }
-        if next == NONE {
+        if found == NONE {
             let face = face_ref(polygons, layout.face(h) as usize);
             return Err(BuildError::NonManifoldVertex {
                 vertex: VertexId::new(a),
@@ -341,36 +416,27 @@ pub(crate) fn topology<L: Layout>(
                 second: face,
             });
         }
-        boundary_next.push(next);
+        next.push(found);
     }
+    Ok(Boundary { twin, next })
+}
 
-    let mut first_incoming = vec![NONE; vertex_count];
-    for h in 0..n {
-        let slot = &mut first_incoming[indices[layout.next(h) as usize] as usize];
-        if *slot == NONE {
-            *slot = h;
-        }
-    }
-
-    // Step 4: the paper's loop (successor, then pair) from the first incoming
-    // half-edge must meet every corner at the vertex, or the vertex joins
-    // several fans.
-    let rotate = |h: u32| {
-        let s = if h < n {
-            layout.next(h)
-        } else {
-            boundary_next[(h - n) as usize]
-        };
-        if s < n {
-            pair[s as usize]
-        } else {
-            boundary_twin[(s - n) as usize]
-        }
-    };
-    for (v, (&count, &first)) in valence.iter().zip(&first_incoming).enumerate() {
+/// Step 4: the paper's loop (successor, then pair) from the first half-edge
+/// ending at each vertex must meet every corner at the vertex, or the vertex
+/// joins several fans. `rotate` is one step of the loop.
+pub(crate) fn check_fans<L: Layout>(
+    polygons: &Polygons,
+    layout: &L,
+    valence: &[u32],
+    first_incoming: impl Fn(usize) -> u32,
+    rotate: impl Fn(u32) -> u32,
+) -> Result<(), BuildError> {
+    let n = polygons.corner_count() as u32;
+    for (v, &count) in valence.iter().enumerate() {
         if count == 0 {
             continue;
         }
+        let first = first_incoming(v);
         let mut h = first;
         let mut seen = 0;
         let mut closed = false;
@@ -386,14 +452,7 @@ pub(crate) fn topology<L: Layout>(
             return Err(fan_error(polygons, layout, v as u32, first, count, &rotate));
         }
     }
-
-    Ok(Topology {
-        interior: n,
-        pair,
-        boundary_twin,
-        boundary_next,
-        first_incoming,
-    })
+    Ok(())
 }
 
 /// Names a face of the fan reached from `first` and a face of another fan.
@@ -422,7 +481,7 @@ fn fan_error<L: Layout>(
         .filter(|&h| indices[h as usize] == v)
         .map(|h| layout.face(h))
         .find(|face| !fan.contains(face));
-    let first_face = layout.face(first);
+    let first_face = if first < n { layout.face(first) } else { 0 };
     BuildError::NonManifoldVertex {
         vertex: VertexId::new(v),
         first: face_ref(polygons, first_face as usize),

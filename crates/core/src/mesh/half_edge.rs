@@ -2,9 +2,11 @@
 //! half-edges, each storing its end vertex, adjacent face, pair edge and
 //! successor edge (the next half-edge counter-clockwise around its face).
 
+use std::sync::OnceLock;
+
 use glam::Vec3;
 
-use super::builder::{self, General, Layout, NONE, Topology, Triangles};
+use super::builder::{self, General, Layout, NONE, Pairs, Triangles};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
@@ -45,16 +47,43 @@ pub struct HalfEdge {
 ///
 /// Besides the three tables it keeps each half-edge's predecessor (the
 /// inverse of `successor_edge`), so [`Self::predecessor_edge`] is O(1) for the
-/// algorithm VM; that costs 4 bytes per half-edge (20% on top of the 20-byte
-/// half-edge rows) and is recomputed by [`Self::from_raw_parts`].
-#[derive(Clone, Debug, Default, PartialEq)]
+/// algorithm VM. That table is built on the first call (one pass over the
+/// half-edges) and then kept: 4 bytes per half-edge, a quarter on top of the
+/// 16-byte rows, paid only by code that asks for predecessors.
+#[derive(Clone, Debug, Default)]
 pub struct HalfEdgeMesh {
     pub(crate) vertices: Vec<Vertex>,
     pub(crate) faces: Vec<Face>,
     pub(crate) half_edges: Vec<HalfEdge>,
-    /// Inverse of the successor links; [`NONE`] where no half-edge has this
-    /// one as successor (only in broken tables).
-    pub(crate) predecessors: Vec<u32>,
+    /// Inverse of the successor links, built on first use; [`NONE`] where no
+    /// half-edge has this one as successor (only in broken tables).
+    predecessors: OnceLock<Vec<u32>>,
+}
+
+impl PartialEq for HalfEdgeMesh {
+    fn eq(&self, other: &Self) -> bool {
+        self.vertices == other.vertices
+            && self.faces == other.faces
+            && self.half_edges == other.half_edges
+    }
+}
+
+impl Pairs for Vec<HalfEdge> {
+    #[inline]
+    fn pair(&self, h: u32) -> u32 {
+        self[h as usize].pair_edge.raw()
+    }
+    #[inline]
+    fn set_pair(&mut self, h: u32, pair: u32) {
+        self[h as usize].pair_edge = HalfEdgeId::new(pair);
+    }
+    #[inline]
+    fn end_or_start<L: Layout>(&self, layout: &L, _: &[u32], h: u32, forward: bool) -> u32 {
+        // Both rows lie in the same face, usually in the same cache line.
+        self[if forward { h } else { layout.prev(h) } as usize]
+            .end_vertex
+            .raw()
+    }
 }
 
 impl HalfEdgeMesh {
@@ -81,66 +110,67 @@ impl HalfEdgeMesh {
     /// # Ok::<(), edgewise_core::mesh::BuildError>(())
     /// ```
     pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        let checked = builder::check_faces(polygons)?;
-        let mesh = if checked.triangles {
-            let topology = builder::topology(polygons, &Triangles, &checked.valence)?;
-            drop(checked.valence);
-            Self::assemble(polygons, &Triangles, topology)
+        if builder::all_triangles(polygons) {
+            Self::assemble(polygons, &Triangles, true)
         } else {
-            let layout = General::new(polygons);
-            let topology = builder::topology(polygons, &layout, &checked.valence)?;
-            drop(checked.valence);
-            Self::assemble(polygons, &layout, topology)
-        };
-        Ok((mesh, checked.warnings))
+            Self::assemble(polygons, &General::new(polygons), false)
+        }
     }
 
-    fn assemble<L: Layout>(polygons: &Polygons, layout: &L, topology: Topology) -> Self {
-        let Topology {
-            interior: n,
-            pair,
-            boundary_twin,
-            boundary_next,
-            first_incoming,
-        } = topology;
+    fn assemble<L: Layout>(
+        polygons: &Polygons,
+        layout: &L,
+        triangles: bool,
+    ) -> Result<(Self, Vec<BuildWarning>), BuildError> {
         let indices = polygons.indices();
-        let total = n as usize + boundary_twin.len();
-        let mut half_edges = Vec::with_capacity(total);
-        let mut predecessors = Vec::with_capacity(total);
-        for (h, &pair) in (0..n).zip(&pair) {
-            let next = layout.next(h);
+        let mut vertices: Vec<Vertex> = polygons
+            .positions()
+            .iter()
+            .map(|&position| Vertex {
+                position,
+                incident_edge: None,
+            })
+            .collect();
+        // Interior rows in corner order, with the bucket link as pair for now;
+        // the first half-edge to end at a vertex is its lowest-numbered one.
+        let mut half_edges = Vec::with_capacity(indices.len());
+        let scanned = builder::scan_faces(polygons, triangles, |h, _, end, face, link| {
             half_edges.push(HalfEdge {
-                end_vertex: VertexId::new(indices[next as usize]),
-                face: Some(FaceId::new(layout.face(h))),
-                pair_edge: HalfEdgeId::new(pair),
-                successor_edge: HalfEdgeId::new(next),
+                end_vertex: VertexId::new(end),
+                face: Some(FaceId::new(face)),
+                pair_edge: HalfEdgeId::new(link),
+                successor_edge: HalfEdgeId::new(layout.next(h)),
             });
-            predecessors.push(layout.prev(h));
-        }
-        drop(pair);
-        for (&twin, &next) in boundary_twin.iter().zip(&boundary_next) {
+            if let Some(vertex) = vertices.get_mut(end as usize)
+                && vertex.incident_edge.is_none()
+            {
+                vertex.incident_edge = Some(HalfEdgeId::new(h));
+            }
+        })?;
+        let valence = &scanned.valence;
+        let unpaired = builder::pair_up(polygons, layout, &scanned.heads, &mut half_edges)?;
+        let boundary =
+            builder::link_boundary(polygons, layout, valence, unpaired, &mut half_edges)?;
+        half_edges.reserve_exact(boundary.twin.len());
+        for (&twin, &next) in boundary.twin.iter().zip(&boundary.next) {
             half_edges.push(HalfEdge {
                 end_vertex: VertexId::new(indices[twin as usize]),
                 face: None,
                 pair_edge: HalfEdgeId::new(twin),
                 successor_edge: HalfEdgeId::new(next),
             });
-            predecessors.push(NONE);
         }
-        for (b, &next) in (n..).zip(&boundary_next) {
-            if let Some(slot) = predecessors.get_mut(next as usize) {
-                *slot = b;
-            }
-        }
-        let vertices = polygons
-            .positions()
-            .iter()
-            .zip(&first_incoming)
-            .map(|(&position, &first)| Vertex {
-                position,
-                incident_edge: (first != NONE).then_some(HalfEdgeId::new(first)),
-            })
-            .collect();
+        builder::check_fans(
+            polygons,
+            layout,
+            valence,
+            |v| vertices[v].incident_edge.map_or(NONE, HalfEdgeId::raw),
+            |h| {
+                half_edges[half_edges[h as usize].successor_edge.index()]
+                    .pair_edge
+                    .raw()
+            },
+        )?;
         let faces = polygons
             .offsets()
             .split_last()
@@ -150,12 +180,13 @@ impl HalfEdgeMesh {
                 incident_edge: HalfEdgeId::new(start as u32),
             })
             .collect();
-        Self {
+        let mesh = Self {
             vertices,
             faces,
             half_edges,
-            predecessors,
-        }
+            predecessors: OnceLock::new(),
+        };
+        Ok((mesh, scanned.warnings))
     }
 
     /// Takes the three tables as written (for example from a `.htb` file)
@@ -167,20 +198,28 @@ impl HalfEdgeMesh {
         faces: Vec<Face>,
         half_edges: Vec<HalfEdge>,
     ) -> Self {
-        let mut predecessors = vec![NONE; half_edges.len()];
-        for (h, half_edge) in (0u32..).zip(&half_edges) {
-            if let Some(slot) = predecessors.get_mut(half_edge.successor_edge.index())
-                && *slot == NONE
-            {
-                *slot = h;
-            }
-        }
         Self {
             vertices,
             faces,
             half_edges,
-            predecessors,
+            predecessors: OnceLock::new(),
         }
+    }
+
+    /// The predecessor table, built on first use: the first half-edge (in
+    /// number order) naming each half-edge as its successor.
+    fn predecessors(&self) -> &[u32] {
+        self.predecessors.get_or_init(|| {
+            let mut predecessors = vec![NONE; self.half_edges.len()];
+            for (h, half_edge) in (0u32..).zip(&self.half_edges) {
+                if let Some(slot) = predecessors.get_mut(half_edge.successor_edge.index())
+                    && *slot == NONE
+                {
+                    *slot = h;
+                }
+            }
+            predecessors
+        })
     }
 
     /// Gives the tables back, for editing.
@@ -254,11 +293,11 @@ impl HalfEdgeMesh {
         Some(self.half_edge(pair)?.end_vertex)
     }
 
-    /// The half-edge whose successor is `h` (derived, O(1) from a stored
-    /// inverse table).
+    /// The half-edge whose successor is `h` (derived; O(1) from a table built
+    /// on the first call).
     #[inline]
     pub fn predecessor_edge(&self, h: HalfEdgeId) -> Option<HalfEdgeId> {
-        self.predecessors
+        self.predecessors()
             .get(h.index())
             .filter(|&&p| p != NONE)
             .map(|&p| HalfEdgeId::new(p))

@@ -1,47 +1,80 @@
 //! Typed element ids, so a vertex number can never be used where an edge
 //! number is expected.
 //!
-//! Every id is a `u32`: it halves the memory of the link tables compared with
-//! `usize` on 64-bit targets, and no mesh the app can hold in memory gets near
-//! four billion elements.
+//! Every id is a `u32` (half the memory of `usize` on 64-bit targets; no mesh
+//! the app can hold gets near four billion elements), stored bit-inverted in a
+//! `NonZeroU32` so that `Option<Id>` is still four bytes: a half-edge row is 16
+//! bytes instead of 20 and a winged-edge row 32 instead of 40. The price is
+//! one reserved number, `u32::MAX`, which no element can have anyway (counts
+//! stay below it); `new(u32::MAX)` gives `u32::MAX - 1`, just as nonexistent.
 
+use std::cmp::Ordering;
 use std::fmt;
+use std::num::NonZeroU32;
 
 macro_rules! element_id {
     ($(#[$doc:meta])* $name:ident, $label:literal) => {
         $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-        pub struct $name(u32);
+        #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        pub struct $name(NonZeroU32);
 
         impl $name {
-            /// The id of the element with this number.
+            /// The id of the element with this number. `u32::MAX` is reserved
+            /// (see the module notes) and becomes `u32::MAX - 1`.
             #[inline]
             pub const fn new(index: u32) -> Self {
-                Self(index)
+                match NonZeroU32::new(!index) {
+                    Some(inverted) => Self(inverted),
+                    None => Self(NonZeroU32::MIN),
+                }
             }
 
             /// The number of the element, for indexing its table.
             #[inline]
             pub const fn index(self) -> usize {
-                self.0 as usize
+                self.raw() as usize
             }
 
-            /// The number of the element as stored.
+            /// The number of the element.
             #[inline]
             pub const fn raw(self) -> u32 {
-                self.0
+                !self.0.get()
             }
 
-            /// The id for a table index, or `None` if it does not fit in a `u32`.
+            /// The id for a table index, or `None` if it does not fit.
             #[inline]
             pub fn from_index(index: usize) -> Option<Self> {
-                u32::try_from(index).ok().map(Self)
+                u32::try_from(index).ok().filter(|&i| i != u32::MAX).map(Self::new)
+            }
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                Self::new(0)
+            }
+        }
+
+        impl PartialOrd for $name {
+            fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+                Some(self.cmp(other))
+            }
+        }
+
+        impl Ord for $name {
+            fn cmp(&self, other: &Self) -> Ordering {
+                self.raw().cmp(&other.raw())
+            }
+        }
+
+        impl fmt::Debug for $name {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                write!(f, concat!(stringify!($name), "({})"), self.raw())
             }
         }
 
         impl fmt::Display for $name {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                write!(f, concat!($label, " {}"), self.0)
+                write!(f, concat!($label, " {}"), self.raw())
             }
         }
 
@@ -87,5 +120,15 @@ mod tests {
         assert_eq!(HalfEdgeId::new(5).to_string(), "half-edge 5");
         assert_eq!(HalfEdgeId::new(5).index(), 5);
         assert_eq!(VertexId::from_index(4), Some(VertexId::new(4)));
+        assert_eq!(VertexId::from_index(u32::MAX as usize), None);
+        assert_eq!(format!("{:?}", EdgeId::new(9)), "EdgeId(9)");
+    }
+
+    #[test]
+    fn optional_ids_cost_nothing() {
+        assert_eq!(size_of::<Option<FaceId>>(), 4);
+        assert!(FaceId::new(2) < FaceId::new(10));
+        assert_eq!(FaceId::new(u32::MAX).raw(), u32::MAX - 1);
+        assert_eq!(HalfEdgeId::default().raw(), 0);
     }
 }

@@ -9,7 +9,7 @@
 
 use glam::Vec3;
 
-use super::builder::{self, General, Layout, NONE, Topology, Triangles};
+use super::builder::{self, General, Layout, NONE, Triangles};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
@@ -86,30 +86,55 @@ impl WingedEdgeMesh {
     /// # Ok::<(), edgewise_core::mesh::BuildError>(())
     /// ```
     pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        let checked = builder::check_faces(polygons)?;
-        let mesh = if checked.triangles {
-            let topology = builder::topology(polygons, &Triangles, &checked.valence)?;
-            drop(checked.valence);
-            Self::assemble(polygons, &Triangles, topology)
+        if builder::all_triangles(polygons) {
+            Self::assemble(polygons, &Triangles, true)
         } else {
-            let layout = General::new(polygons);
-            let topology = builder::topology(polygons, &layout, &checked.valence)?;
-            drop(checked.valence);
-            Self::assemble(polygons, &layout, topology)
-        };
-        Ok((mesh, checked.warnings))
+            Self::assemble(polygons, &General::new(polygons), false)
+        }
     }
 
-    fn assemble<L: Layout>(polygons: &Polygons, layout: &L, topology: Topology) -> Self {
-        let Topology {
-            interior: n,
-            pair,
-            boundary_twin,
-            boundary_next,
-            first_incoming,
-        } = topology;
-        drop(first_incoming);
+    fn assemble<L: Layout>(
+        polygons: &Polygons,
+        layout: &L,
+        triangles: bool,
+    ) -> Result<(Self, Vec<BuildWarning>), BuildError> {
         let indices = polygons.indices();
+        let n = indices.len() as u32;
+        // The pair of each interior half-edge (the bucket link for now), and the
+        // lowest-numbered half-edge ending at each vertex.
+        let mut pair = Vec::with_capacity(indices.len());
+        let mut first_incoming = vec![NONE; polygons.vertex_count()];
+        let scanned = builder::scan_faces(polygons, triangles, |h, _, end, _, link| {
+            pair.push(link);
+            if let Some(slot) = first_incoming.get_mut(end as usize)
+                && *slot == NONE
+            {
+                *slot = h;
+            }
+        })?;
+        let valence = &scanned.valence;
+        let unpaired = builder::pair_up(polygons, layout, &scanned.heads, &mut pair)?;
+        let boundary = builder::link_boundary(polygons, layout, valence, unpaired, &mut pair)?;
+        builder::check_fans(
+            polygons,
+            layout,
+            valence,
+            |v| first_incoming[v],
+            |h| {
+                let s = if h < n {
+                    layout.next(h)
+                } else {
+                    boundary.next[(h - n) as usize]
+                };
+                if s < n {
+                    pair[s as usize]
+                } else {
+                    boundary.twin[(s - n) as usize]
+                }
+            },
+        )?;
+        drop(first_incoming);
+        let (boundary_twin, boundary_next) = (boundary.twin, boundary.next);
         // Number the edges in place: an interior half-edge whose pair comes later
         // (or is a boundary half-edge) is the first appearance of its edge.
         let mut edge_of = pair;
@@ -195,11 +220,14 @@ impl WingedEdgeMesh {
                 incident_edge: (e != NONE).then_some(EdgeId::new(e)),
             })
             .collect();
-        Self {
-            vertices,
-            faces,
-            edges,
-        }
+        Ok((
+            Self {
+                vertices,
+                faces,
+                edges,
+            },
+            scanned.warnings,
+        ))
     }
 
     /// Takes the three tables as written (for example from a `.wtb` file)
