@@ -101,7 +101,10 @@ mod tests {
         std::fs::write(dist.join("index.html"), "x").unwrap();
         std::fs::write(dist.join("sub/a.js"), "x").unwrap();
         assert_eq!(resolve(&dist, "/"), Some(dist.join("index.html")));
-        assert_eq!(resolve(&dist, "/?embed=1#m=abc"), Some(dist.join("index.html")));
+        assert_eq!(
+            resolve(&dist, "/?embed=1#m=abc"),
+            Some(dist.join("index.html"))
+        );
         assert_eq!(resolve(&dist, "/sub/a.js"), Some(dist.join("sub/a.js")));
         assert_eq!(resolve(&dist, "/../etc/passwd"), None);
         assert_eq!(resolve(&dist, "/sub/../../x"), None);
@@ -111,6 +114,9 @@ mod tests {
     #[test]
     fn wasm_is_served_as_wasm() {
         assert_eq!(content_type(Path::new("a_bg.wasm")), "application/wasm");
-        assert_eq!(content_type(Path::new("a.js")), "text/javascript; charset=utf-8");
+        assert_eq!(
+            content_type(Path::new("a.js")),
+            "text/javascript; charset=utf-8"
+        );
     }
 }

@@ -20,7 +20,10 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
     let mut timings = Timings::default();
 
     timings.step("formatting", || {
-        process::run("cargo fmt --check", cargo().args(["fmt", "--all", "--", "--check"]))
+        process::run(
+            "cargo fmt --check",
+            cargo().args(["fmt", "--all", "--", "--check"]),
+        )
     })?;
     timings.step("clippy (native)", || {
         process::run(
@@ -41,7 +44,13 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
     timings.step("native tests", || {
         process::run(
             "native tests",
-            cargo().args(["test", "--locked", "--workspace", "--exclude", BROWSER_TESTS]),
+            cargo().args([
+                "test",
+                "--locked",
+                "--workspace",
+                "--exclude",
+                BROWSER_TESTS,
+            ]),
         )
     })?;
     let dist = timings.step("wasm build", || {

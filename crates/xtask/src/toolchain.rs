@@ -88,7 +88,13 @@ impl WasmToolchain {
             Self::Debian => {
                 let mut cmd = Command::new(DEBIAN_CARGO);
                 // rustup's variables would point Debian's cargo at rustup's compiler.
-                for var in ["RUSTUP_TOOLCHAIN", "RUSTUP_HOME", "CARGO", "RUSTC", "RUSTDOC"] {
+                for var in [
+                    "RUSTUP_TOOLCHAIN",
+                    "RUSTUP_HOME",
+                    "CARGO",
+                    "RUSTC",
+                    "RUSTDOC",
+                ] {
                     cmd.env_remove(var);
                 }
                 cmd.env("RUSTC", DEBIAN_RUSTC)

@@ -82,7 +82,9 @@ fn copy_file(from: &Path, to: &Path) -> anyhow::Result<()> {
 
 /// Copies the files of `from` (recursively) into `to`.
 fn copy_dir(from: &Path, to: &Path) -> anyhow::Result<()> {
-    for entry in std::fs::read_dir(from).with_context(|| format!("cannot read {}", from.display()))? {
+    for entry in
+        std::fs::read_dir(from).with_context(|| format!("cannot read {}", from.display()))?
+    {
         let entry = entry?;
         let target = to.join(entry.file_name());
         if entry.file_type()?.is_dir() {
