@@ -10,6 +10,9 @@ use super::polygons::Polygons;
 pub const TORUS_MAJOR_RADIUS: f32 = 2.0;
 /// Minor radius of [`torus`].
 pub const TORUS_MINOR_RADIUS: f32 = 0.6;
+/// The largest grid [`torus`] generates: its 6 corners per vertex stay within
+/// the builder's limit of 2³¹ − 2 half-edges.
+pub const TORUS_MAX_VERTICES: u64 = (1 << 28) - 1;
 
 /// A triangulated torus grid of `nu × nv` vertices and `2·nu·nv` triangles,
 /// the benchmark mesh (so figures compare with other libraries):
@@ -20,13 +23,17 @@ pub const TORUS_MINOR_RADIUS: f32 = 0.6;
 ///   d = (i, j+1), taken mod nu and nv, gives triangles (a, b, c), (a, c, d).
 ///
 /// Needs `nu, nv ≥ 3` to be a manifold; smaller grids give polygons the
-/// builder refuses.
+/// builder refuses. Grids of more than [`TORUS_MAX_VERTICES`] vertices (whose
+/// half-edges could not be numbered) give an empty list.
 ///
 /// ```
 /// let torus = edgewise_core::mesh::generate::torus(100, 50);
 /// assert_eq!((torus.vertex_count(), torus.face_count()), (5_000, 10_000));
 /// ```
 pub fn torus(nu: u32, nv: u32) -> Polygons {
+    if u64::from(nu) * u64::from(nv) > TORUS_MAX_VERTICES {
+        return Polygons::new();
+    }
     let (count_u, count_v) = (nu as usize, nv as usize);
     let mut polygons = Polygons::with_capacity(
         count_u * count_v,
