@@ -4,6 +4,7 @@
 //! This crate has no UI or browser dependency, so the app (native and wasm32)
 //! and the `edgewise` command share exactly the same logic.
 
+pub mod formats;
 pub mod lang;
 pub mod mesh;
 
@@ -15,7 +16,12 @@ mod tests {
     #[test]
     fn version_is_semver() {
         let parts: Vec<&str> = super::VERSION.split('.').collect();
-        assert_eq!(parts.len(), 3, "version {} is not major.minor.patch", super::VERSION);
+        assert_eq!(
+            parts.len(),
+            3,
+            "version {} is not major.minor.patch",
+            super::VERSION
+        );
         assert!(parts.iter().all(|p| p.parse::<u32>().is_ok()));
     }
 }

@@ -1,0 +1,895 @@
+//! Stanford PLY: ASCII, binary little-endian and binary big-endian.
+//!
+//! The `vertex` element gives x, y and z (of any numeric type); the `face`
+//! element gives a list named `vertex_indices` or `vertex_index` (any count
+//! and integer index types). Other properties (normals, colours) and other
+//! elements are skipped.
+//!
+//! Our own reader rather than ply-rs-bw: on a 200k-face binary file it is
+//! several times faster and needs no dependency (figures in
+//! `benches/formats.rs`). Before reading any data it checks that the counts
+//! in the header fit in the bytes that follow, so a 200-byte file claiming
+//! four billion vertices is refused instead of reserving gigabytes.
+
+use std::fmt::Write as _;
+
+use glam::Vec3;
+
+use super::error::{FormatError, Location, Problem, SaveError};
+use super::rows::is_decimal;
+use crate::mesh::Polygons;
+
+/// How a PLY file stores its data.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum PlyEncoding {
+    /// Text, one element per line.
+    #[default]
+    Ascii,
+    /// Binary, least significant byte first.
+    BinaryLittleEndian,
+    /// Binary, most significant byte first.
+    BinaryBigEndian,
+}
+
+impl PlyEncoding {
+    fn header_name(self) -> &'static str {
+        match self {
+            Self::Ascii => "ascii",
+            Self::BinaryLittleEndian => "binary_little_endian",
+            Self::BinaryBigEndian => "binary_big_endian",
+        }
+    }
+}
+
+/// A PLY scalar type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Scalar {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Scalar {
+    fn parse(name: &str) -> Option<Self> {
+        Some(match name {
+            "char" | "int8" => Self::I8,
+            "uchar" | "uint8" => Self::U8,
+            "short" | "int16" => Self::I16,
+            "ushort" | "uint16" => Self::U16,
+            "int" | "int32" => Self::I32,
+            "uint" | "uint32" => Self::U32,
+            "float" | "float32" => Self::F32,
+            "double" | "float64" => Self::F64,
+            _ => return None,
+        })
+    }
+
+    fn size(self) -> usize {
+        match self {
+            Self::I8 | Self::U8 => 1,
+            Self::I16 | Self::U16 => 2,
+            Self::I32 | Self::U32 | Self::F32 => 4,
+            Self::F64 => 8,
+        }
+    }
+
+    fn is_integer(self) -> bool {
+        !matches!(self, Self::F32 | Self::F64)
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Scalar(Scalar),
+    List { count: Scalar, item: Scalar },
+}
+
+#[derive(Debug)]
+struct Property {
+    name: String,
+    kind: Kind,
+}
+
+#[derive(Debug)]
+struct Element {
+    name: String,
+    count: usize,
+    properties: Vec<Property>,
+    line: usize,
+}
+
+impl Element {
+    /// The fewest bytes one row can take: binary scalars and list counts, or
+    /// for ASCII one character and one separator per value.
+    fn min_row_bytes(&self, encoding: PlyEncoding) -> usize {
+        match encoding {
+            PlyEncoding::Ascii => 2 * self.properties.len().max(1),
+            _ => self
+                .properties
+                .iter()
+                .map(|p| match p.kind {
+                    Kind::Scalar(s) => s.size(),
+                    Kind::List { count, .. } => count.size(),
+                })
+                .sum::<usize>()
+                .max(1),
+        }
+    }
+
+    /// The fixed size of a binary row, if it has no list.
+    fn fixed_row_bytes(&self) -> Option<usize> {
+        self.properties
+            .iter()
+            .map(|p| match p.kind {
+                Kind::Scalar(s) => Some(s.size()),
+                Kind::List { .. } => None,
+            })
+            .sum()
+    }
+}
+
+struct Header {
+    encoding: PlyEncoding,
+    elements: Vec<Element>,
+    /// Byte offset of the first data byte.
+    data_start: usize,
+    /// Line number of `end_header`.
+    end_line: usize,
+}
+
+fn header_error(line: usize, message: impl Into<String>) -> FormatError {
+    FormatError::new(Location::line(line), message)
+}
+
+fn parse_header(bytes: &[u8]) -> Result<Header, FormatError> {
+    if !(bytes.starts_with(b"ply\n") || bytes.starts_with(b"ply\r\n")) {
+        return Err(header_error(
+            1,
+            "expected the magic word \"ply\" alone on the first line",
+        ));
+    }
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    let mut offset = 0;
+    for (index, raw) in bytes.split(|&b| b == b'\n').enumerate() {
+        let number = index + 1;
+        offset += raw.len() + 1;
+        if index == 0 {
+            continue;
+        }
+        let line = std::str::from_utf8(raw.strip_suffix(b"\r").unwrap_or(raw))
+            .map_err(|_| header_error(number, "the header holds a byte that is not text"))?;
+        let words: Vec<&str> = line.split_ascii_whitespace().collect();
+        match words.as_slice() {
+            [] | ["comment" | "obj_info", ..] => {}
+            ["format", name, version] => {
+                encoding = Some(match *name {
+                    "ascii" => PlyEncoding::Ascii,
+                    "binary_little_endian" => PlyEncoding::BinaryLittleEndian,
+                    "binary_big_endian" => PlyEncoding::BinaryBigEndian,
+                    other => {
+                        return Err(header_error(
+                            number,
+                            format!(
+                                "unknown format \"{other}\"; expected ascii, binary_little_endian \
+                                 or binary_big_endian"
+                            ),
+                        ));
+                    }
+                });
+                if *version != "1.0" && *version != "1" {
+                    return Err(header_error(
+                        number,
+                        format!("PLY version {version} is not supported; expected 1.0"),
+                    ));
+                }
+            }
+            ["element", name, count] => {
+                let count = count.parse::<u32>().map_err(|_| {
+                    header_error(
+                        number,
+                        format!(
+                            "expected the number of {name} rows (0 to {}), found \"{count}\"",
+                            u32::MAX
+                        ),
+                    )
+                })?;
+                elements.push(Element {
+                    name: (*name).to_owned(),
+                    count: count as usize,
+                    properties: Vec::new(),
+                    line: number,
+                });
+            }
+            ["property", rest @ ..] => {
+                let Some(element) = elements.last_mut() else {
+                    return Err(header_error(
+                        number,
+                        "a property before any element; expected \"element <name> <count>\" first",
+                    ));
+                };
+                let scalar = |name: &str| {
+                    Scalar::parse(name).ok_or_else(|| {
+                        header_error(
+                            number,
+                            format!(
+                                "unknown type \"{name}\"; expected char, uchar, short, ushort, \
+                                 int, uint, float or double (or int8 … float64)"
+                            ),
+                        )
+                    })
+                };
+                let (kind, name) = match rest {
+                    ["list", count, item, name] => {
+                        let count = scalar(count)?;
+                        if !count.is_integer() {
+                            return Err(header_error(
+                                number,
+                                format!("the count type of list {name} must be an integer type"),
+                            ));
+                        }
+                        (
+                            Kind::List {
+                                count,
+                                item: scalar(item)?,
+                            },
+                            name,
+                        )
+                    }
+                    [ty, name] => (Kind::Scalar(scalar(ty)?), name),
+                    _ => {
+                        return Err(header_error(
+                            number,
+                            format!(
+                                "expected \"property <type> <name>\" or \"property list <count type> \
+                                 <item type> <name>\", found \"{line}\""
+                            ),
+                        ));
+                    }
+                };
+                element.properties.push(Property {
+                    name: (*name).to_owned(),
+                    kind,
+                });
+            }
+            ["end_header"] => {
+                let encoding = encoding.ok_or_else(|| {
+                    header_error(
+                        number,
+                        "the header has no \"format\" line before end_header",
+                    )
+                })?;
+                return Ok(Header {
+                    encoding,
+                    elements,
+                    data_start: offset.min(bytes.len()),
+                    end_line: number,
+                });
+            }
+            _ => {
+                return Err(header_error(
+                    number,
+                    format!(
+                        "unexpected header line \"{}\"; expected format, comment, element, \
+                         property or end_header",
+                        line.chars().take(60).collect::<String>()
+                    ),
+                ));
+            }
+        }
+        if number > 10_000 {
+            break;
+        }
+    }
+    Err(header_error(
+        1,
+        "the header never ends: expected an \"end_header\" line",
+    ))
+}
+
+/// Which properties the mesh uses.
+struct Roles {
+    vertex: usize,
+    /// Property index of x, y and z in the vertex element.
+    xyz: [usize; 3],
+    face: usize,
+    /// Property index of the index list in the face element.
+    indices: usize,
+}
+
+fn roles(header: &Header) -> Result<Roles, FormatError> {
+    let find = |name: &str| header.elements.iter().position(|e| e.name == name);
+    let vertex = find("vertex").ok_or_else(|| {
+        header_error(
+            header.end_line,
+            "the header declares no \"vertex\" element; expected \"element vertex <count>\"",
+        )
+    })?;
+    let face = find("face").ok_or_else(|| {
+        header_error(
+            header.end_line,
+            "the header declares no \"face\" element; a mesh needs faces \
+             (\"element face <count>\" with a vertex_indices list)",
+        )
+    })?;
+    let mut xyz = [0; 3];
+    let vertex_element = header.elements.get(vertex);
+    for (slot, axis) in xyz.iter_mut().zip(["x", "y", "z"]) {
+        let found = vertex_element.and_then(|e| {
+            e.properties
+                .iter()
+                .position(|p| p.name == axis && matches!(p.kind, Kind::Scalar(_)))
+        });
+        *slot = found.ok_or_else(|| {
+            header_error(
+                vertex_element.map_or(header.end_line, |e| e.line),
+                format!("the vertex element has no scalar property \"{axis}\""),
+            )
+        })?;
+    }
+    let face_element = header.elements.get(face);
+    let indices = face_element
+        .and_then(|e| {
+            e.properties.iter().position(|p| {
+                (p.name == "vertex_indices" || p.name == "vertex_index")
+                    && matches!(p.kind, Kind::List { .. })
+            })
+        })
+        .ok_or_else(|| {
+            header_error(
+                face_element.map_or(header.end_line, |e| e.line),
+                "the face element has no list property \"vertex_indices\" or \"vertex_index\"",
+            )
+        })?;
+    if let Some(Property {
+        kind: Kind::List { item, .. },
+        name,
+    }) = face_element.and_then(|e| e.properties.get(indices))
+        && !item.is_integer()
+    {
+        return Err(header_error(
+            face_element.map_or(header.end_line, |e| e.line),
+            format!(
+                "the face list \"{name}\" holds floating-point numbers; expected an integer type"
+            ),
+        ));
+    }
+    Ok(Roles {
+        vertex,
+        xyz,
+        face,
+        indices,
+    })
+}
+
+/// Refuses counts the data cannot hold, before anything is reserved.
+fn check_counts(header: &Header, available: usize) -> Result<(), FormatError> {
+    let mut needed: u128 = 0;
+    for element in &header.elements {
+        let row = element.min_row_bytes(header.encoding);
+        let bytes = element.count as u128 * row as u128;
+        needed += bytes;
+        if needed > available as u128 {
+            let unit = match header.encoding {
+                PlyEncoding::Ascii => "characters",
+                _ => "bytes",
+            };
+            return Err(header_error(
+                element.line,
+                format!(
+                    "the header announces {} {} rows of at least {row} {unit} each, but only \
+                     {available} bytes of data follow the header",
+                    element.count, element.name
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The elements read so far: positions and faces.
+struct Mesh {
+    positions: Vec<Vec3>,
+    indices: Vec<u32>,
+    /// Face start offsets into `indices` with the line of each face (0 for
+    /// binary data).
+    faces: Vec<(usize, usize)>,
+}
+
+pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError> {
+    let header = parse_header(bytes)?;
+    let roles = roles(&header)?;
+    let data = bytes.get(header.data_start..).unwrap_or(&[]);
+    check_counts(&header, data.len())?;
+    let mut warnings = Vec::new();
+    for (i, element) in header.elements.iter().enumerate() {
+        if i != roles.vertex && i != roles.face && element.count > 0 {
+            warnings.push(Problem::new(
+                Location::line(element.line),
+                format!(
+                    "the {} rows of element \"{}\" are skipped; only vertex and face make the mesh",
+                    element.count, element.name
+                ),
+            ));
+        }
+    }
+    let vertex_count = header.elements.get(roles.vertex).map_or(0, |e| e.count);
+    let face_count = header.elements.get(roles.face).map_or(0, |e| e.count);
+    if face_count == 0 {
+        return Err(header_error(
+            header
+                .elements
+                .get(roles.face)
+                .map_or(header.end_line, |e| e.line),
+            "the file has no faces (element face 0); a mesh needs at least one face",
+        ));
+    }
+    // Counts are backed by data (checked above), so these reservations are
+    // bounded by the file size.
+    let mut mesh = Mesh {
+        positions: Vec::with_capacity(vertex_count),
+        indices: Vec::with_capacity(face_count * 3),
+        faces: Vec::with_capacity(face_count),
+    };
+    match header.encoding {
+        PlyEncoding::Ascii => read_ascii(bytes, &header, &roles, &mut mesh)?,
+        encoding => {
+            let big = encoding == PlyEncoding::BinaryBigEndian;
+            let mut reader = Binary {
+                bytes,
+                offset: header.data_start,
+                big,
+            };
+            read_binary(&mut reader, &header, &roles, &mut mesh)?;
+        }
+    }
+    let mut polygons =
+        Polygons::with_capacity(mesh.positions.len(), mesh.faces.len(), mesh.indices.len());
+    for &position in &mesh.positions {
+        polygons.push_vertex(position);
+    }
+    let vertex_count = mesh.positions.len() as u64;
+    let ends = mesh
+        .faces
+        .iter()
+        .skip(1)
+        .map(|&(start, _)| start)
+        .chain(std::iter::once(mesh.indices.len()));
+    for (&(start, line), end) in mesh.faces.iter().zip(ends) {
+        let face = mesh.indices.get(start..end).unwrap_or(&[]);
+        if line == 0
+            && let Some(&bad) = face.iter().find(|&&v| u64::from(v) >= vertex_count)
+        {
+            // Binary faces have no line; name the face instead.
+            return Err(FormatError::new(
+                Location::File,
+                format!(
+                    "face {} refers to vertex {bad}, but the file has {vertex_count} vertices \
+                     (0 to {})",
+                    polygons.face_count(),
+                    vertex_count.saturating_sub(1)
+                ),
+            ));
+        }
+        if line == 0 {
+            polygons.push_face(face);
+        } else {
+            polygons.push_face_from_line(face, line);
+        }
+    }
+    Ok((polygons, warnings))
+}
+
+/// A cursor over binary data.
+struct Binary<'a> {
+    bytes: &'a [u8],
+    offset: usize,
+    big: bool,
+}
+
+impl Binary<'_> {
+    fn take<const N: usize>(&mut self, what: &dyn Fn() -> String) -> Result<[u8; N], FormatError> {
+        let chunk = self
+            .bytes
+            .get(self.offset..self.offset + N)
+            .and_then(|s| <[u8; N]>::try_from(s).ok());
+        match chunk {
+            Some(mut chunk) => {
+                self.offset += N;
+                if self.big == cfg!(target_endian = "little") {
+                    chunk.reverse();
+                }
+                Ok(chunk)
+            }
+            None => Err(FormatError::new(
+                Location::Byte(self.offset as u64),
+                format!(
+                    "the file ends inside {}: expected {N} more bytes, {} are left",
+                    what(),
+                    self.bytes.len().saturating_sub(self.offset)
+                ),
+            )),
+        }
+    }
+
+    fn number(&mut self, scalar: Scalar, what: &dyn Fn() -> String) -> Result<f64, FormatError> {
+        Ok(match scalar {
+            Scalar::I8 => f64::from(i8::from_ne_bytes(self.take::<1>(what)?)),
+            Scalar::U8 => f64::from(u8::from_ne_bytes(self.take::<1>(what)?)),
+            Scalar::I16 => f64::from(i16::from_ne_bytes(self.take::<2>(what)?)),
+            Scalar::U16 => f64::from(u16::from_ne_bytes(self.take::<2>(what)?)),
+            Scalar::I32 => f64::from(i32::from_ne_bytes(self.take::<4>(what)?)),
+            Scalar::U32 => f64::from(u32::from_ne_bytes(self.take::<4>(what)?)),
+            Scalar::F32 => f64::from(f32::from_ne_bytes(self.take::<4>(what)?)),
+            Scalar::F64 => f64::from_ne_bytes(self.take::<8>(what)?),
+        })
+    }
+
+    fn integer(&mut self, scalar: Scalar, what: &dyn Fn() -> String) -> Result<i64, FormatError> {
+        Ok(match scalar {
+            Scalar::I8 => i64::from(i8::from_ne_bytes(self.take::<1>(what)?)),
+            Scalar::U8 => i64::from(u8::from_ne_bytes(self.take::<1>(what)?)),
+            Scalar::I16 => i64::from(i16::from_ne_bytes(self.take::<2>(what)?)),
+            Scalar::U16 => i64::from(u16::from_ne_bytes(self.take::<2>(what)?)),
+            Scalar::I32 => i64::from(i32::from_ne_bytes(self.take::<4>(what)?)),
+            Scalar::U32 => i64::from(u32::from_ne_bytes(self.take::<4>(what)?)),
+            // Refused in the header for index lists and list counts.
+            Scalar::F32 | Scalar::F64 => self.number(scalar, what)? as i64,
+        })
+    }
+
+    fn skip(&mut self, count: usize, what: &dyn Fn() -> String) -> Result<(), FormatError> {
+        if self.bytes.len().saturating_sub(self.offset) < count {
+            return Err(FormatError::new(
+                Location::Byte(self.offset as u64),
+                format!(
+                    "the file ends inside {}: expected {count} more bytes, {} are left",
+                    what(),
+                    self.bytes.len().saturating_sub(self.offset)
+                ),
+            ));
+        }
+        self.offset += count;
+        Ok(())
+    }
+}
+
+fn read_binary(
+    reader: &mut Binary<'_>,
+    header: &Header,
+    roles: &Roles,
+    mesh: &mut Mesh,
+) -> Result<(), FormatError> {
+    for (e, element) in header.elements.iter().enumerate() {
+        let is_vertex = e == roles.vertex;
+        let is_face = e == roles.face;
+        if !is_vertex
+            && !is_face
+            && let Some(size) = element.fixed_row_bytes()
+        {
+            let what = || format!("element {}", element.name);
+            reader.skip(element.count.saturating_mul(size), &what)?;
+            continue;
+        }
+        for row in 0..element.count {
+            let mut xyz = [0.0f32; 3];
+            for (p, property) in element.properties.iter().enumerate() {
+                let what = || format!("{} {row} (property {})", element.name, property.name);
+                match property.kind {
+                    Kind::Scalar(scalar) => {
+                        let value = reader.number(scalar, &what)?;
+                        if is_vertex && let Some(axis) = roles.xyz.iter().position(|&i| i == p) {
+                            let start = reader.offset - scalar.size();
+                            let value = value as f32;
+                            if !value.is_finite() {
+                                return Err(FormatError::new(
+                                    Location::Byte(start as u64),
+                                    format!(
+                                        "vertex {row} has {} = {value}; coordinates must be \
+                                         finite numbers",
+                                        ["x", "y", "z"].get(axis).copied().unwrap_or("x")
+                                    ),
+                                ));
+                            }
+                            if let Some(slot) = xyz.get_mut(axis) {
+                                *slot = value;
+                            }
+                        }
+                    }
+                    Kind::List { count, item } => {
+                        let start = reader.offset;
+                        let n = reader.integer(count, &what)?;
+                        let n = usize::try_from(n).map_err(|_| {
+                            FormatError::new(
+                                Location::Byte(start as u64),
+                                format!("{} {row} has a list of {n} items", element.name),
+                            )
+                        })?;
+                        let size = n.saturating_mul(item.size());
+                        if reader.bytes.len().saturating_sub(reader.offset) < size {
+                            return Err(FormatError::new(
+                                Location::Byte(start as u64),
+                                format!(
+                                    "{} {row} announces a list of {n} items ({size} bytes), but \
+                                     only {} bytes are left",
+                                    element.name,
+                                    reader.bytes.len().saturating_sub(reader.offset)
+                                ),
+                            ));
+                        }
+                        if is_face && p == roles.indices {
+                            mesh.faces.push((mesh.indices.len(), 0));
+                            for _ in 0..n {
+                                let at = reader.offset;
+                                let index = reader.integer(item, &what)?;
+                                let index = u32::try_from(index).map_err(|_| {
+                                    FormatError::new(
+                                        Location::Byte(at as u64),
+                                        format!(
+                                            "face {row} refers to vertex {index}; vertex numbers \
+                                             start at 0"
+                                        ),
+                                    )
+                                })?;
+                                mesh.indices.push(index);
+                            }
+                        } else {
+                            reader.skip(size, &what)?;
+                        }
+                    }
+                }
+            }
+            if is_vertex {
+                mesh.positions.push(Vec3::from(xyz));
+            }
+        }
+    }
+    let left = reader.bytes.len().saturating_sub(reader.offset);
+    if left > 0 {
+        return Err(FormatError::new(
+            Location::Byte(reader.offset as u64),
+            format!(
+                "{left} bytes are left after the last element; the counts in the header do not \
+                 match the data"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn read_ascii(
+    bytes: &[u8],
+    header: &Header,
+    roles: &Roles,
+    mesh: &mut Mesh,
+) -> Result<(), FormatError> {
+    let data = bytes.get(header.data_start..).unwrap_or(&[]);
+    let mut lines = data
+        .split(|&b| b == b'\n')
+        .enumerate()
+        .map(|(i, line)| (header.end_line + 1 + i, line))
+        .filter(|(_, line)| !line.trim_ascii().is_empty());
+    let mut words: Vec<(usize, &[u8])> = Vec::new();
+    for (e, element) in header.elements.iter().enumerate() {
+        let is_vertex = e == roles.vertex;
+        let is_face = e == roles.face;
+        for row in 0..element.count {
+            let Some((number, line)) = lines.next() else {
+                return Err(FormatError::new(
+                    Location::line(header.end_line + 1 + data.split(|&b| b == b'\n').count()),
+                    format!(
+                        "the file ends after {row} of the {} {} rows announced on line {}",
+                        element.count, element.name, element.line
+                    ),
+                ));
+            };
+            words.clear();
+            let mut offset = 0;
+            for word in line.split(u8::is_ascii_whitespace) {
+                if !word.is_empty() {
+                    words.push((offset, word));
+                }
+                offset += word.len() + 1;
+            }
+            let at = |index: usize| {
+                let offset = words.get(index).map_or(line.len(), |&(o, _)| o);
+                Location::at(number, offset + 1)
+            };
+            let word = |index: usize| {
+                words
+                    .get(index)
+                    .and_then(|(_, w)| std::str::from_utf8(w).ok())
+                    .unwrap_or("")
+            };
+            let mut next = 0;
+            let mut xyz = [0.0f32; 3];
+            for (p, property) in element.properties.iter().enumerate() {
+                let missing = || {
+                    FormatError::new(
+                        Location::line(number),
+                        format!(
+                            "{} {row} ends before property {}; expected one row per line",
+                            element.name, property.name
+                        ),
+                    )
+                };
+                match property.kind {
+                    Kind::Scalar(_) => {
+                        let text = word(next);
+                        if next >= words.len() {
+                            return Err(missing());
+                        }
+                        if is_vertex && let Some(axis) = roles.xyz.iter().position(|&i| i == p) {
+                            let value = text.parse::<f32>().ok().filter(|v| v.is_finite());
+                            match value {
+                                Some(value) if is_decimal(text) => {
+                                    if let Some(slot) = xyz.get_mut(axis) {
+                                        *slot = value;
+                                    }
+                                }
+                                _ => {
+                                    return Err(FormatError::new(
+                                        at(next),
+                                        format!(
+                                            "expected a finite number for {} of vertex {row}, \
+                                             found \"{text}\"",
+                                            property.name
+                                        ),
+                                    ));
+                                }
+                            }
+                        } else if text.parse::<f64>().is_err() {
+                            return Err(FormatError::new(
+                                at(next),
+                                format!(
+                                    "expected a number for {} of {} {row}, found \"{text}\"",
+                                    property.name, element.name
+                                ),
+                            ));
+                        }
+                        next += 1;
+                    }
+                    Kind::List { .. } => {
+                        if next >= words.len() {
+                            return Err(missing());
+                        }
+                        let count_at = next;
+                        let n = word(next).parse::<usize>().map_err(|_| {
+                            FormatError::new(
+                                at(count_at),
+                                format!(
+                                    "expected the item count of list {}, found \"{}\"",
+                                    property.name,
+                                    word(count_at)
+                                ),
+                            )
+                        })?;
+                        next += 1;
+                        if words.len().saturating_sub(next) < n {
+                            return Err(FormatError::new(
+                                at(count_at),
+                                format!(
+                                    "the list {} announces {n} items, but only {} values follow \
+                                     on this line",
+                                    property.name,
+                                    words.len().saturating_sub(next)
+                                ),
+                            ));
+                        }
+                        if is_face && p == roles.indices {
+                            mesh.faces.push((mesh.indices.len(), number));
+                            for k in next..next + n {
+                                let index = word(k).parse::<u32>().map_err(|_| {
+                                    FormatError::new(
+                                        at(k),
+                                        format!(
+                                            "expected a vertex number (0 or more), found \"{}\"",
+                                            word(k)
+                                        ),
+                                    )
+                                })?;
+                                mesh.indices.push(index);
+                            }
+                        }
+                        next += n;
+                    }
+                }
+            }
+            if next < words.len() {
+                return Err(FormatError::new(
+                    at(next),
+                    format!(
+                        "{} {row} has {} values, but its properties take {next}; expected one \
+                         row per line",
+                        element.name,
+                        words.len()
+                    ),
+                ));
+            }
+            if is_vertex {
+                mesh.positions.push(Vec3::from(xyz));
+            }
+        }
+    }
+    if let Some((number, _)) = lines.next() {
+        return Err(FormatError::new(
+            Location::line(number),
+            "more data follows the last element; the counts in the header do not match the data",
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn write(polygons: &Polygons, encoding: PlyEncoding) -> Result<Vec<u8>, SaveError> {
+    let largest = polygons.faces().map(<[u32]>::len).max().unwrap_or(0);
+    let count_type = if largest <= usize::from(u8::MAX) {
+        "uchar"
+    } else {
+        "int"
+    };
+    let mut header = String::new();
+    let _ = write!(
+        header,
+        "ply\nformat {} 1.0\ncomment Written by Edgewise; faces are counter-clockwise seen from outside\n\
+         element vertex {}\nproperty float x\nproperty float y\nproperty float z\n\
+         element face {}\nproperty list {count_type} int vertex_indices\nend_header\n",
+        encoding.header_name(),
+        polygons.vertex_count(),
+        polygons.face_count()
+    );
+    if polygons.vertex_count() > i32::MAX as usize {
+        return Err(SaveError::Unsupported(format!(
+            "{} vertices do not fit PLY's int vertex numbers",
+            polygons.vertex_count()
+        )));
+    }
+    let mut out = header.into_bytes();
+    match encoding {
+        PlyEncoding::Ascii => {
+            let mut text = String::new();
+            for p in polygons.positions() {
+                let _ = writeln!(text, "{} {} {}", p.x, p.y, p.z);
+            }
+            for face in polygons.faces() {
+                let _ = write!(text, "{}", face.len());
+                for &v in face {
+                    let _ = write!(text, " {v}");
+                }
+                text.push('\n');
+            }
+            out.extend_from_slice(text.as_bytes());
+        }
+        PlyEncoding::BinaryLittleEndian | PlyEncoding::BinaryBigEndian => {
+            let big = encoding == PlyEncoding::BinaryBigEndian;
+            out.reserve(polygons.vertex_count() * 12 + polygons.corner_count() * 4);
+            let put = |bytes: [u8; 4], out: &mut Vec<u8>| {
+                if big {
+                    out.extend(bytes.iter().rev());
+                } else {
+                    out.extend_from_slice(&bytes);
+                }
+            };
+            for p in polygons.positions() {
+                for c in [p.x, p.y, p.z] {
+                    put(c.to_le_bytes(), &mut out);
+                }
+            }
+            for face in polygons.faces() {
+                if count_type == "uchar" {
+                    out.push(face.len() as u8);
+                } else {
+                    put((face.len() as u32).to_le_bytes(), &mut out);
+                }
+                for &v in face {
+                    put(v.to_le_bytes(), &mut out);
+                }
+            }
+        }
+    }
+    Ok(out)
+}
