@@ -5,11 +5,13 @@
 //! and integer index types). Other properties (normals, colours) and other
 //! elements are skipped.
 //!
-//! Our own reader rather than ply-rs-bw: on a 200k-face binary file it is
-//! several times faster and needs no dependency (figures in
-//! `benches/formats.rs`). Before reading any data it checks that the counts
-//! in the header fit in the bytes that follow, so a 200-byte file claiming
-//! four billion vertices is refused instead of reserving gigabytes.
+//! Our own reader rather than ply-rs-bw: reading the 200k-face benchmark
+//! torus into polygons it took 25 ms against 31 ms for binary and 70 ms
+//! against 200 ms for ASCII (`benches/formats.rs`), it needs no dependency,
+//! and its errors carry a line or byte offset. Before reading any data it
+//! checks that the counts in the header fit in the bytes that follow, so a
+//! 200-byte file claiming four billion vertices is refused instead of
+//! reserving gigabytes.
 
 use std::fmt::Write as _;
 
@@ -615,8 +617,8 @@ fn read_binary(
                             return Err(FormatError::new(
                                 Location::Byte(start as u64),
                                 format!(
-                                    "{} {row} announces a list of {n} items ({size} bytes), but \
-                                     only {} bytes are left",
+                                    "the file ends inside {} {row}: its list announces {n} items \
+                                     ({size} bytes), but only {} bytes are left",
                                     element.name,
                                     reader.bytes.len().saturating_sub(reader.offset)
                                 ),
