@@ -126,7 +126,7 @@ pub(super) fn header(rows: &mut Rows<'_>, magic: &str, other: &str) -> Result<()
     if !rows.advance() {
         return Err(FormatError::new(
             Location::line(rows.line),
-            format!("the file is empty; expected {expected}"),
+            format!("the file ends before the header; expected {expected}"),
         ));
     }
     let first = rows.tokens.first().map_or("", |t| t.text);
