@@ -1,12 +1,494 @@
-//! The `edgewise` command.
+//! The `edgewise` command: inspect, check, convert and trace winged-edge and
+//! half-edge meshes and the algorithms that walk them.
+//!
+//! Exit codes: 0 when all is well, 1 when an input (mesh or algorithm file)
+//! is bad or cannot be read, 2 for a wrong command line. Problems go to
+//! stderr as `file:line[:column]: message`, like a compiler's.
 
-use clap::Parser;
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use edgewise_core::formats::{self, Format, Loaded, PlyEncoding, SaveOptions};
+use edgewise_core::lang::{self, Algorithm, Program, RunOptions, Value};
+use edgewise_core::mesh::{Mesh, MeshStats, Structure};
 
 /// Inspect, check, convert and trace winged-edge and half-edge meshes.
+///
+/// Mesh files: .obj, .ply (ASCII or binary), .wtb (winged-edge tables) and
+/// .htb (half-edge tables); `-` reads standard input and guesses the format
+/// from the content. Exit codes: 0 fine, 1 bad input, 2 usage.
 #[derive(Parser, Debug)]
-#[command(name = "edgewise", version = edgewise_core::VERSION, about)]
-struct Cli {}
+#[command(name = "edgewise", version = edgewise_core::VERSION, about, long_about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
 
-fn main() {
-    let _cli = Cli::parse();
+/// The structure to build or convert to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum StructureArg {
+    /// Winged-edge: edge, vertex and face tables.
+    Winged,
+    /// Half-edge: half-edge, vertex and face tables.
+    Half,
+}
+
+impl From<StructureArg> for Structure {
+    fn from(arg: StructureArg) -> Self {
+        match arg {
+            StructureArg::Winged => Structure::WingedEdge,
+            StructureArg::Half => Structure::HalfEdge,
+        }
+    }
+}
+
+/// How to write a PLY file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum PlyArg {
+    /// Text.
+    Ascii,
+    /// Binary, little-endian.
+    Binary,
+    /// Binary, big-endian.
+    BinaryBigEndian,
+}
+
+impl From<PlyArg> for PlyEncoding {
+    fn from(arg: PlyArg) -> Self {
+        match arg {
+            PlyArg::Ascii => PlyEncoding::Ascii,
+            PlyArg::Binary => PlyEncoding::BinaryLittleEndian,
+            PlyArg::BinaryBigEndian => PlyEncoding::BinaryBigEndian,
+        }
+    }
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Print the format, structure, counts, boundary loops, components, Euler
+    /// characteristic, genus and warnings of a mesh file.
+    Info {
+        /// The mesh file (`-` for standard input).
+        file: PathBuf,
+        /// The structure to build (default: a table file's own, else winged).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+    },
+    /// Validate a mesh file: list every problem and exit 1 if there is any.
+    Check {
+        /// The mesh file (`-` for standard input).
+        file: PathBuf,
+        /// The structure to build (default: a table file's own, else winged).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+    },
+    /// Convert a mesh file to another format, chosen by OUT's extension.
+    Convert {
+        /// The mesh file to read (`-` for standard input).
+        input: PathBuf,
+        /// The file to write: .obj, .ply, .wtb or .htb.
+        output: PathBuf,
+        /// The structure to build when reading (default: the output's own,
+        /// else the input's own, else half-edge, which keeps faces as listed).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+        /// The PLY encoding to write.
+        #[arg(long, value_enum, default_value = "ascii")]
+        ply: PlyArg,
+    },
+    /// Print the vertex, face and edge (or half-edge) tables.
+    Tables {
+        /// The mesh file (`-` for standard input).
+        file: PathBuf,
+        /// The structure to show (default: a table file's own, else winged).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+    },
+    /// Run an algorithm on a mesh and print every step, then what it marked.
+    Trace {
+        /// The algorithm file.
+        algfile: PathBuf,
+        /// The algorithm's name in that file.
+        name: String,
+        /// The mesh file, built in the structure the algorithm declares.
+        meshfile: PathBuf,
+        /// A parameter value, such as `v=3` (repeat for each parameter).
+        #[arg(long = "arg", value_name = "NAME=VALUE")]
+        args: Vec<String>,
+        /// The most operations to run before stopping the algorithm.
+        #[arg(long, default_value_t = lang::DEFAULT_STEP_LIMIT)]
+        step_limit: usize,
+    },
+    /// Check an algorithm file: print every error and exit 1 if there is any.
+    CheckAlg {
+        /// The algorithm file.
+        algfile: PathBuf,
+    },
+    /// Print the compiled code of one algorithm, or of every algorithm in a file.
+    Disasm {
+        /// The algorithm file.
+        algfile: PathBuf,
+        /// The algorithm to show (default: all of them).
+        name: Option<String>,
+    },
+}
+
+/// How a command ended, mapped to the exit code.
+enum Failure {
+    /// The input is bad (exit 1); the message is already printed.
+    Input,
+    /// The command line is wrong (exit 2); the message is already printed.
+    Usage,
+}
+
+type Outcome = Result<(), Failure>;
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let outcome = match cli.command {
+        Command::Info { file, structure } => info(&file, structure),
+        Command::Check { file, structure } => check(&file, structure),
+        Command::Convert {
+            input,
+            output,
+            structure,
+            ply,
+        } => convert(&input, &output, structure, ply),
+        Command::Tables { file, structure } => tables(&file, structure),
+        Command::Trace {
+            algfile,
+            name,
+            meshfile,
+            args,
+            step_limit,
+        } => trace(&algfile, &name, &meshfile, &args, step_limit),
+        Command::CheckAlg { algfile } => check_alg(&algfile),
+        Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
+    };
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Input) => ExitCode::from(1),
+        Err(Failure::Usage) => ExitCode::from(2),
+    }
+}
+
+/// Writes to stdout; a closed pipe (`edgewise tables big.ply | head`) just
+/// ends the output.
+fn emit(text: &str) {
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout.write_all(text.as_bytes());
+    let _ = stdout.flush();
+}
+
+/// The name a file is shown under in messages.
+fn shown(path: &Path) -> String {
+    if path == Path::new("-") {
+        "<stdin>".to_owned()
+    } else {
+        path.display().to_string()
+    }
+}
+
+fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
+    let result = if path == Path::new("-") {
+        let mut bytes = Vec::new();
+        std::io::stdin().read_to_end(&mut bytes).map(|_| bytes)
+    } else {
+        std::fs::read(path)
+    };
+    result.map_err(|error| {
+        eprintln!("{}: cannot read the file: {error}", shown(path));
+        Failure::Input
+    })
+}
+
+fn read_text(path: &Path) -> Result<String, Failure> {
+    let bytes = read_bytes(path)?;
+    String::from_utf8(bytes).map_err(|error| {
+        eprintln!(
+            "{}: byte {} is not UTF-8 text; an algorithm file is text",
+            shown(path),
+            error.utf8_error().valid_up_to()
+        );
+        Failure::Input
+    })
+}
+
+/// The format of a mesh file: by extension, by content for `-` or a name
+/// without one.
+fn format_of(path: &Path, bytes: &[u8]) -> Result<Format, Failure> {
+    let name = if path == Path::new("-") {
+        String::new()
+    } else {
+        path.to_string_lossy().into_owned()
+    };
+    Format::detect(bytes, &name).map_err(|error| {
+        eprint!("{}", error.render(&shown(path)));
+        Failure::Input
+    })
+}
+
+/// Reads and builds a mesh file, printing its problems on failure.
+fn load(path: &Path, structure: impl FnOnce(Format) -> Structure) -> Result<Loaded, Failure> {
+    let bytes = read_bytes(path)?;
+    let format = format_of(path, &bytes)?;
+    formats::load_as(&bytes, format, structure(format)).map_err(|error| {
+        eprint!("{}", error.render(&shown(path)));
+        Failure::Input
+    })
+}
+
+/// The structure to build: the one asked for, else a table file's own, else
+/// winged-edge.
+fn default_structure(asked: Option<StructureArg>) -> impl FnOnce(Format) -> Structure {
+    move |format| {
+        asked
+            .map(Structure::from)
+            .or(format.native_structure())
+            .unwrap_or(Structure::WingedEdge)
+    }
+}
+
+fn structure_name(structure: Structure) -> &'static str {
+    match structure {
+        Structure::WingedEdge => "winged-edge",
+        Structure::HalfEdge => "half-edge",
+    }
+}
+
+fn genus_text(stats: &MeshStats) -> String {
+    match stats.components.as_slice() {
+        [] => "- (no faces)".to_owned(),
+        [only] => only.genus.map_or_else(
+            || "- (the surface has a boundary)".to_owned(),
+            |g| g.to_string(),
+        ),
+        _ => "- (several components; see below)".to_owned(),
+    }
+}
+
+fn info(path: &Path, structure: Option<StructureArg>) -> Outcome {
+    let loaded = load(path, default_structure(structure))?;
+    let stats = loaded.mesh.stats();
+    let name = shown(path);
+    let mut structure_text = structure_name(loaded.mesh.structure()).to_owned();
+    if let Some(from) = loaded.converted_from {
+        structure_text.push_str(&format!(
+            " (converted from the file's {} tables)",
+            structure_name(from)
+        ));
+    }
+    let mut out = String::new();
+    let mut line = |label: &str, value: &str| out.push_str(&format!("{label:<22}{value}\n"));
+    line("file:", &name);
+    line("format:", loaded.format.description());
+    line("structure:", &structure_text);
+    line("vertices:", &stats.vertices.to_string());
+    line("edges:", &stats.edges.to_string());
+    line("faces:", &stats.faces.to_string());
+    line("half-edges:", &stats.half_edges.to_string());
+    line("boundary loops:", &stats.boundary_loops.to_string());
+    line("components:", &stats.connected_components().to_string());
+    line(
+        "Euler characteristic:",
+        &stats.euler_characteristic.to_string(),
+    );
+    line("genus:", &genus_text(&stats));
+    if stats.components.len() > 1 {
+        for c in &stats.components {
+            out.push_str(&format!(
+                "  component from {}: V {}, E {}, F {}, boundary loops {}, χ {}, genus {}\n",
+                c.first_vertex,
+                c.vertices,
+                c.edges,
+                c.faces,
+                c.boundary_loops,
+                c.euler_characteristic,
+                c.genus.map_or_else(|| "-".to_owned(), |g| g.to_string())
+            ));
+        }
+    }
+    if loaded.warnings.is_empty() {
+        out.push_str(&format!("{:<22}none\n", "warnings:"));
+    } else {
+        out.push_str(&format!("{:<22}{}\n", "warnings:", loaded.warnings.len()));
+        for warning in &loaded.warnings {
+            out.push_str(&format!("  {}\n", warning.render(&name)));
+        }
+    }
+    emit(&out);
+    Ok(())
+}
+
+fn check(path: &Path, structure: Option<StructureArg>) -> Outcome {
+    let loaded = load(path, default_structure(structure))?;
+    let name = shown(path);
+    // Loading already validated; a non-empty list here would be a builder bug,
+    // but it is reported the same way rather than trusted away.
+    let issues = loaded.mesh.validate();
+    for issue in &issues {
+        eprintln!("{name}: {issue}");
+    }
+    for warning in &loaded.warnings {
+        eprintln!("{}", warning.render(&name).replacen(": ", ": warning: ", 1));
+    }
+    if !issues.is_empty() {
+        return Err(Failure::Input);
+    }
+    let mesh = &loaded.mesh;
+    emit(&format!(
+        "{name}: ok ({} vertices, {} edges, {} faces; {})\n",
+        mesh.vertex_count(),
+        mesh.edge_count(),
+        mesh.face_count(),
+        structure_name(mesh.structure())
+    ));
+    Ok(())
+}
+
+fn convert(input: &Path, output: &Path, structure: Option<StructureArg>, ply: PlyArg) -> Outcome {
+    let Some(target) =
+        Format::from_name(&output.to_string_lossy()).filter(|_| output.extension().is_some())
+    else {
+        eprintln!(
+            "edgewise: cannot tell the format of {}: give it a .obj, .ply, .wtb or .htb extension",
+            output.display()
+        );
+        return Err(Failure::Usage);
+    };
+    let loaded = load(input, |format| {
+        structure
+            .map(Structure::from)
+            .or(target.native_structure())
+            .or(format.native_structure())
+            .unwrap_or(Structure::HalfEdge)
+    })?;
+    let options = SaveOptions {
+        ply_encoding: ply.into(),
+    };
+    let bytes = formats::save(&loaded.mesh, target, &options).map_err(|error| {
+        eprintln!("{}: {error}", shown(input));
+        Failure::Input
+    })?;
+    std::fs::write(output, &bytes).map_err(|error| {
+        eprintln!("{}: cannot write the file: {error}", output.display());
+        Failure::Input
+    })?;
+    emit(&format!(
+        "{} -> {}: {} vertices, {} faces, {} bytes\n",
+        shown(input),
+        output.display(),
+        loaded.mesh.vertex_count(),
+        loaded.mesh.face_count(),
+        bytes.len()
+    ));
+    Ok(())
+}
+
+fn tables(path: &Path, structure: Option<StructureArg>) -> Outcome {
+    let loaded = load(path, default_structure(structure))?;
+    emit(&formats::listing(&loaded.mesh));
+    Ok(())
+}
+
+/// Compiles an algorithm file, printing its errors on failure.
+fn compile(path: &Path) -> Result<Program, Failure> {
+    let source = read_text(path)?;
+    lang::compile_rendered(&source, Some(&shown(path))).map_err(|rendered| {
+        eprint!("{rendered}");
+        Failure::Input
+    })
+}
+
+fn find<'p>(program: &'p Program, path: &Path, name: &str) -> Result<&'p Arc<Algorithm>, Failure> {
+    program.algorithm(name).ok_or_else(|| {
+        let names: Vec<&str> = program.names().collect();
+        eprintln!(
+            "{}: no algorithm is named `{name}`; the file has: {}",
+            shown(path),
+            names.join(", ")
+        );
+        Failure::Usage
+    })
+}
+
+fn trace(
+    algfile: &Path,
+    name: &str,
+    meshfile: &Path,
+    args: &[String],
+    step_limit: usize,
+) -> Outcome {
+    let program = compile(algfile)?;
+    let algorithm = find(&program, algfile, name)?;
+    let mut inputs: Vec<(String, Value)> = Vec::with_capacity(args.len());
+    for arg in args {
+        let parsed = algorithm.parse_argument(arg).map_err(|error| {
+            eprintln!("edgewise: --arg {arg}: {error}");
+            Failure::Usage
+        })?;
+        inputs.push(parsed);
+    }
+    let structure = Structure::from(algorithm.structure);
+    let loaded = load(meshfile, |_| structure)?;
+    let inputs: Vec<(&str, Value)> = inputs.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+    let options = RunOptions { step_limit };
+    let run = match &loaded.mesh {
+        Mesh::Winged(mesh) => lang::run(algorithm, mesh, &inputs, options),
+        Mesh::Half(mesh) => lang::run(algorithm, mesh, &inputs, options),
+    };
+    let trace = run.map_err(|error| {
+        eprintln!("edgewise: {error}");
+        Failure::Usage
+    })?;
+    let mut out = String::new();
+    for index in 0..trace.len() {
+        out.push_str(&trace.render_line(index));
+        out.push('\n');
+    }
+    out.push_str(&trace.render_marked());
+    out.push('\n');
+    emit(&out);
+    if let Some(error) = trace.outcome().error() {
+        eprintln!(
+            "{}:{}: error: {}",
+            shown(algfile),
+            error.line,
+            error.message
+        );
+        return Err(Failure::Input);
+    }
+    Ok(())
+}
+
+fn check_alg(path: &Path) -> Outcome {
+    let source = read_text(path)?;
+    let name = shown(path);
+    match lang::compile(&source) {
+        Ok(program) => {
+            let mut out = format!("{name}: ok, {} algorithms\n", program.algorithms.len());
+            for algorithm in &program.algorithms {
+                out.push_str(&format!("  {}\n", algorithm.signature()));
+            }
+            emit(&out);
+            Ok(())
+        }
+        Err(diagnostics) => {
+            eprint!("{}", lang::render_all(&diagnostics, &source, Some(&name)));
+            Err(Failure::Input)
+        }
+    }
+}
+
+fn disasm(path: &Path, name: Option<&str>) -> Outcome {
+    let program = compile(path)?;
+    let text = match name {
+        Some(name) => lang::disassemble(find(&program, path, name)?),
+        None => lang::disassemble_all(program.algorithms.iter().map(AsRef::as_ref)),
+    };
+    emit(&text);
+    Ok(())
 }

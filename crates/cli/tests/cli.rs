@@ -1,0 +1,409 @@
+//! The built `edgewise` binary: output, stderr messages and exit codes
+//! (0 fine, 1 bad input, 2 usage) of every command.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// Runs `edgewise` in `dir` with `args` and optional standard input.
+fn run_in(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_edgewise"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(if stdin.is_some() {
+            Stdio::piped()
+        } else {
+            Stdio::null()
+        })
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("edgewise runs");
+    if let (Some(bytes), Some(mut pipe)) = (stdin, child.stdin.take()) {
+        pipe.write_all(bytes).expect("stdin");
+    }
+    child.wait_with_output().expect("edgewise finishes")
+}
+
+fn run(args: &[&str]) -> Output {
+    run_in(&root(), args, None)
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+fn code(output: &Output) -> i32 {
+    output.status.code().unwrap_or(-1)
+}
+
+#[test]
+fn info_prints_counts_topology_and_warnings() {
+    let output = run(&["info", "meshes/torus.obj"]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    assert_eq!(
+        stdout(&output),
+        "file:                 meshes/torus.obj\n\
+         format:               OBJ (.obj)\n\
+         structure:            winged-edge\n\
+         vertices:             288\n\
+         edges:                576\n\
+         faces:                288\n\
+         half-edges:           1152\n\
+         boundary loops:       0\n\
+         components:           1\n\
+         Euler characteristic: 0\n\
+         genus:                1\n\
+         warnings:             none\n"
+    );
+}
+
+#[test]
+fn info_names_a_converted_table_file_and_boundaries() {
+    let output = run(&["info", "meshes/annulus.htb", "--structure", "winged"]);
+    assert_eq!(code(&output), 0);
+    let text = stdout(&output);
+    assert!(
+        text.contains(
+            "structure:            winged-edge (converted from the file's half-edge tables)\n"
+        ),
+        "{text}"
+    );
+    assert!(text.contains("boundary loops:       2\n"), "{text}");
+    assert!(
+        text.contains("genus:                - (the surface has a boundary)\n"),
+        "{text}"
+    );
+}
+
+#[test]
+fn info_lists_warnings_with_their_lines() {
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n";
+    let output = run_in(&root(), &["info", "-"], Some(obj));
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(
+        text.contains("format:               OBJ (.obj)\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("warnings:             1\n  <stdin>:4: vertex 3 is not used by any face; it is kept as an isolated vertex\n"),
+        "{text}"
+    );
+    assert!(text.contains("components:           2\n"), "{text}");
+}
+
+#[test]
+fn standard_input_is_recognised_by_content() {
+    let wtb = std::fs::read(root().join("meshes/open-square.wtb")).expect("sample");
+    let output = run_in(&root(), &["check", "-"], Some(&wtb));
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    assert_eq!(
+        stdout(&output),
+        "<stdin>: ok (4 vertices, 5 edges, 2 faces; winged-edge)\n"
+    );
+}
+
+#[test]
+fn check_accepts_every_sample() {
+    for entry in std::fs::read_dir(root().join("meshes")).expect("meshes/") {
+        let name = entry
+            .expect("entry")
+            .file_name()
+            .to_string_lossy()
+            .into_owned();
+        if name.ends_with(".md") {
+            continue;
+        }
+        let output = run_in(&root().join("meshes"), &["check", &name], None);
+        assert_eq!(code(&output), 0, "{name}: {}", stderr(&output));
+        assert!(
+            stdout(&output).starts_with(&format!("{name}: ok (")),
+            "{}",
+            stdout(&output)
+        );
+        assert_eq!(stderr(&output), "", "{name}");
+    }
+}
+
+/// `edgewise check` prints exactly what the corpus expects, and exits 1.
+#[test]
+fn check_refuses_every_bad_input_with_its_expected_messages() {
+    let dir = root().join("tests/bad-inputs");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(&dir).expect("corpus") {
+        let name = entry
+            .expect("entry")
+            .file_name()
+            .to_string_lossy()
+            .into_owned();
+        if name.ends_with(".expected") || name == "README.md" {
+            continue;
+        }
+        let stem = name.rsplit_once('.').map_or(name.as_str(), |(s, _)| s);
+        let expected =
+            std::fs::read_to_string(dir.join(format!("{stem}.expected"))).expect("expected");
+        let output = run_in(&dir, &["check", &name], None);
+        assert_eq!(code(&output), 1, "{name}");
+        assert_eq!(stderr(&output), expected, "{name}");
+        assert_eq!(stdout(&output), "", "{name}");
+        checked += 1;
+    }
+    assert!(checked >= 40);
+}
+
+#[test]
+fn a_missing_file_is_bad_input() {
+    let output = run(&["check", "meshes/no-such-mesh.obj"]);
+    assert_eq!(code(&output), 1);
+    assert!(stderr(&output).starts_with("meshes/no-such-mesh.obj: cannot read the file: "));
+}
+
+#[test]
+fn convert_goes_through_every_format_and_back() {
+    let dir = std::env::temp_dir().join(format!("edgewise-cli-convert-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let source = root().join("meshes/dodecahedron.obj");
+    let steps = [
+        (source.clone(), dir.join("a.ply"), "binary"),
+        (dir.join("a.ply"), dir.join("b.wtb"), "ascii"),
+        (dir.join("b.wtb"), dir.join("c.htb"), "ascii"),
+        (dir.join("c.htb"), dir.join("d.ply"), "binary-big-endian"),
+        (dir.join("d.ply"), dir.join("e.obj"), "ascii"),
+    ];
+    for (input, output, ply) in &steps {
+        let input = input.to_string_lossy();
+        let out = output.to_string_lossy();
+        let result = run(&["convert", &input, &out, "--ply", ply]);
+        assert_eq!(code(&result), 0, "{input} -> {out}: {}", stderr(&result));
+        assert!(
+            stdout(&result).contains("20 vertices, 12 faces"),
+            "{}",
+            stdout(&result)
+        );
+    }
+    let info = |path: &Path| {
+        let text = stdout(&run(&["info", &path.to_string_lossy()]));
+        text.lines().skip(3).collect::<Vec<_>>().join("\n")
+    };
+    assert_eq!(info(&dir.join("e.obj")), info(&source));
+    assert_eq!(info(&dir.join("b.wtb")), info(&source));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn convert_to_an_unknown_format_is_a_usage_error() {
+    let out = std::env::temp_dir().join("edgewise-cli-out.stl");
+    let output = run(&["convert", "meshes/cube.htb", &out.to_string_lossy()]);
+    assert_eq!(code(&output), 2);
+    assert!(stderr(&output).contains("give it a .obj, .ply, .wtb or .htb extension"));
+}
+
+#[test]
+fn tables_prints_the_three_tables() {
+    let output = run_in(&root().join("meshes"), &["tables", "open-square.wtb"], None);
+    assert_eq!(code(&output), 0);
+    let expected =
+        std::fs::read_to_string(root().join("tests/golden/formats/open-square.winged.tables.txt"))
+            .expect("golden");
+    assert_eq!(stdout(&output), expected);
+    let output = run_in(
+        &root().join("meshes"),
+        &["tables", "open-square.wtb", "--structure", "half"],
+        None,
+    );
+    let expected =
+        std::fs::read_to_string(root().join("tests/golden/formats/open-square.half.tables.txt"))
+            .expect("golden");
+    assert_eq!(stdout(&output), expected);
+}
+
+#[test]
+fn trace_prints_each_step_and_the_marked_elements() {
+    let output = run(&[
+        "trace",
+        "algorithms/winged-edge.alg",
+        "vertexAdjacentEdge",
+        "meshes/tetrahedron.wtb",
+        "--arg",
+        "v=3",
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[0].starts_with("step 1  line "), "{text}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("  lookup e.startVertex -> vertex ")),
+        "{text}"
+    );
+    // Vertex D of the paper's Table 2: its incident edge is e (4); the loop
+    // visits e, a and c.
+    assert_eq!(lines.last(), Some(&"marked: edge 4, edge 0, edge 2"));
+}
+
+#[test]
+fn trace_builds_the_structure_the_algorithm_declares() {
+    let output = run(&[
+        "trace",
+        "algorithms/half-edge.alg",
+        "vertexAdjacentEdge",
+        "meshes/tetrahedron.wtb",
+        "--arg",
+        "v=0",
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    assert!(
+        stdout(&output)
+            .lines()
+            .last()
+            .is_some_and(|l| l.starts_with("marked: edge "))
+    );
+}
+
+#[test]
+fn trace_stops_at_the_step_limit_with_exit_1() {
+    let output = run(&[
+        "trace",
+        "algorithms/winged-edge.alg",
+        "vertexAdjacentEdge",
+        "meshes/cube.htb",
+        "--arg",
+        "v=1",
+        "--step-limit",
+        "5",
+    ]);
+    assert_eq!(code(&output), 1);
+    assert_eq!(
+        stdout(&output).lines().count(),
+        6,
+        "five steps and the marked line"
+    );
+    assert!(
+        stdout(&output).ends_with("marked: edge 2\n"),
+        "{}",
+        stdout(&output)
+    );
+    let err = stderr(&output);
+    assert!(err.starts_with("algorithms/winged-edge.alg:"), "{err}");
+    assert!(err.contains("step limit"), "{err}");
+}
+
+#[test]
+fn trace_command_line_mistakes_are_usage_errors() {
+    let base = ["trace", "algorithms/winged-edge.alg"];
+    for (extra, message) in [
+        (
+            vec!["noSuchAlgorithm", "meshes/cube.htb"],
+            "no algorithm is named `noSuchAlgorithm`",
+        ),
+        (
+            vec!["vertexAdjacentEdge", "meshes/cube.htb", "--arg", "v=99"],
+            "vertex 99 does not exist",
+        ),
+        (
+            vec!["vertexAdjacentEdge", "meshes/cube.htb", "--arg", "w=1"],
+            "has no parameter `w`",
+        ),
+        (
+            vec!["vertexAdjacentEdge", "meshes/cube.htb"],
+            "no value given for parameter `v`",
+        ),
+    ] {
+        let args: Vec<&str> = base.iter().copied().chain(extra).collect();
+        let output = run(&args);
+        assert_eq!(code(&output), 2, "{args:?}");
+        assert!(
+            stderr(&output).contains(message),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+    }
+}
+
+#[test]
+fn trace_on_a_bad_mesh_or_algorithm_is_bad_input() {
+    let output = run(&[
+        "trace",
+        "tests/algorithms/errors/03-misspelled-lookup.alg",
+        "x",
+        "meshes/cube.htb",
+    ]);
+    assert_eq!(code(&output), 1);
+    assert!(
+        stderr(&output).contains("error: unknown lookup"),
+        "{}",
+        stderr(&output)
+    );
+    let output = run(&[
+        "trace",
+        "algorithms/winged-edge.alg",
+        "vertexAdjacentEdge",
+        "tests/bad-inputs/wtb-bad-wing.wtb",
+        "--arg",
+        "v=0",
+    ]);
+    assert_eq!(code(&output), 1);
+    assert!(stderr(&output).contains("wtb-bad-wing.wtb:24:71: edge 2 left_predecessor"));
+}
+
+#[test]
+fn check_alg_reports_errors_with_exit_1() {
+    let errors = root().join("tests/algorithms/errors");
+    let output = run_in(&errors, &["check-alg", "03-misspelled-lookup.alg"], None);
+    assert_eq!(code(&output), 1);
+    let expected =
+        std::fs::read_to_string(root().join("tests/algorithms/errors/03-misspelled-lookup.txt"))
+            .expect("the language's golden message");
+    assert_eq!(stderr(&output).trim_end(), expected.trim_end());
+    let output = run(&["check-alg", "algorithms/half-edge.alg"]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    assert!(stdout(&output).starts_with("algorithms/half-edge.alg: ok, "));
+    assert!(stdout(&output).contains("  vertexAdjacentEdge(v : Vertex) : HalfEdge\n"));
+}
+
+#[test]
+fn disasm_lists_one_or_every_algorithm() {
+    let one = run(&["disasm", "algorithms/half-edge.alg", "vertexAdjacentEdge"]);
+    assert_eq!(code(&one), 0);
+    assert!(stdout(&one).starts_with("algorithm vertexAdjacentEdge(v : Vertex) : HalfEdge\n"));
+    let all = run(&["disasm", "algorithms/half-edge.alg"]);
+    assert_eq!(code(&all), 0);
+    assert!(stdout(&all).len() > stdout(&one).len());
+    assert_eq!(
+        code(&run(&["disasm", "algorithms/half-edge.alg", "nope"])),
+        2
+    );
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    assert_eq!(code(&run(&["no-such-command"])), 2);
+    assert_eq!(code(&run(&["info"])), 2);
+    assert_eq!(
+        code(&run(&["info", "meshes/cube.htb", "--structure", "quad"])),
+        2
+    );
+    let help = run(&["--help"]);
+    assert_eq!(code(&help), 0);
+    for command in [
+        "info",
+        "check",
+        "convert",
+        "tables",
+        "trace",
+        "check-alg",
+        "disasm",
+    ] {
+        assert!(stdout(&help).contains(command), "--help lists {command}");
+    }
+}

@@ -1,0 +1,70 @@
+//! Golden files for the writers: two samples written in every format and
+//! encoding, and their tables as `edgewise tables` prints them, compared byte
+//! for byte with tests/golden/formats/. `EDGEWISE_BLESS=1` rewrites them.
+
+use std::path::PathBuf;
+
+use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
+use edgewise_core::mesh::Structure;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// Compares `actual` with the golden file `name`, or rewrites it when
+/// blessing; returns a description of the difference.
+fn compare(name: &str, actual: &[u8]) -> Option<String> {
+    let path = root().join("tests/golden/formats").join(name);
+    if std::env::var_os("EDGEWISE_BLESS").is_some() {
+        std::fs::write(&path, actual).expect("writable");
+        return None;
+    }
+    let expected = std::fs::read(&path).unwrap_or_default();
+    (expected != actual).then(|| {
+        format!(
+            "{name} differs from the golden file (run with EDGEWISE_BLESS=1 to accept):\n{}",
+            String::from_utf8_lossy(actual)
+        )
+    })
+}
+
+#[test]
+fn writers_match_their_golden_files() {
+    let mut failures = Vec::new();
+    for (sample, structure) in [
+        ("tetrahedron.wtb", Structure::WingedEdge),
+        ("open-square.wtb", Structure::WingedEdge),
+        ("annulus.htb", Structure::HalfEdge),
+    ] {
+        let bytes = std::fs::read(root().join("meshes").join(sample)).expect("sample");
+        let mesh = formats::load(&bytes, sample, structure)
+            .expect("loads")
+            .mesh;
+        let stem = sample.rsplit_once('.').map_or(sample, |(s, _)| s);
+        for (suffix, format, ply_encoding) in [
+            ("obj", Format::Obj, PlyEncoding::Ascii),
+            ("ascii.ply", Format::Ply, PlyEncoding::Ascii),
+            ("le.ply", Format::Ply, PlyEncoding::BinaryLittleEndian),
+            ("be.ply", Format::Ply, PlyEncoding::BinaryBigEndian),
+            ("wtb", Format::Wtb, PlyEncoding::Ascii),
+            ("htb", Format::Htb, PlyEncoding::Ascii),
+        ] {
+            let written =
+                formats::save(&mesh, format, &SaveOptions { ply_encoding }).expect("saves");
+            failures.extend(compare(&format!("{stem}.{suffix}"), &written));
+        }
+        for other in [Structure::WingedEdge, Structure::HalfEdge] {
+            let converted = mesh.convert_to(other).expect("converts");
+            let label = match other {
+                Structure::WingedEdge => "winged",
+                Structure::HalfEdge => "half",
+            };
+            let listing = formats::listing(&converted);
+            failures.extend(compare(
+                &format!("{stem}.{label}.tables.txt"),
+                listing.as_bytes(),
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
