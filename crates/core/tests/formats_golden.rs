@@ -68,3 +68,44 @@ fn writers_match_their_golden_files() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+/// docs/formats.md quotes the tetrahedron in both table formats and some
+/// refusals; they must stay what the code produces.
+#[test]
+fn the_format_documentation_quotes_real_output() {
+    let docs = std::fs::read_to_string(root().join("docs/formats.md")).expect("docs/formats.md");
+    let read = |path: &str| std::fs::read_to_string(root().join(path)).expect("quoted file");
+    for whole in [
+        "meshes/tetrahedron.wtb",
+        "tests/golden/formats/tetrahedron.htb",
+        "tests/bad-inputs/wtb-bad-wing.expected",
+    ] {
+        assert!(
+            docs.contains(&read(whole)),
+            "docs/formats.md does not quote {whole} as it is"
+        );
+    }
+    let mut lines = 0;
+    for line in docs.lines() {
+        let Some((file, _)) = line.split_once(':') else {
+            continue;
+        };
+        let Some(stem) = file
+            .strip_suffix(".wtb")
+            .or(file.strip_suffix(".htb"))
+            .or(file.strip_suffix(".ply"))
+            .or(file.strip_suffix(".obj"))
+        else {
+            continue;
+        };
+        let expected = format!("tests/bad-inputs/{stem}.expected");
+        if root().join(&expected).exists() {
+            assert!(
+                read(&expected).lines().any(|l| l == line),
+                "docs/formats.md: {line}"
+            );
+            lines += 1;
+        }
+    }
+    assert!(lines >= 10, "only {lines} quoted messages found");
+}
