@@ -213,3 +213,19 @@ proptest! {
         let _ = formats::load_as(&bytes, Format::Ply, Structure::HalfEdge);
     }
 }
+
+#[test]
+fn the_format_comes_from_the_extension_or_else_the_content() {
+    let detect = |bytes: &[u8], name: &str| Format::detect(bytes, name).expect("detected");
+    let wtb = b"# a comment\n\nwtb 1\n";
+    assert_eq!(detect(wtb, ""), Format::Wtb);
+    assert_eq!(detect(b"htb 1\n", "pasted"), Format::Htb);
+    assert_eq!(detect(b"ply\r\nformat ascii 1.0\n", ""), Format::Ply);
+    assert_eq!(detect(b"v 0 0 0\n", ""), Format::Obj);
+    // The extension wins over the content, in any case, as a name or bare.
+    assert_eq!(detect(wtb, "dir.v2/cube.OBJ"), Format::Obj);
+    assert_eq!(detect(wtb, "ply"), Format::Ply);
+    assert_eq!(detect(wtb, ".htb"), Format::Htb);
+    let error = Format::detect(wtb, "cube.stl").expect_err("unknown extension");
+    assert!(error.first().message.starts_with("cannot read .stl files"));
+}

@@ -130,13 +130,14 @@ impl Format {
         Self::Obj
     }
 
-    /// The format of a file: by the extension of `name` if it has one, by
-    /// content if `name` has no extension. An extension no reader knows is
-    /// an error rather than a guess.
+    /// The format of a file: by the extension of `name` if it has one (or if
+    /// `name` is a bare extension such as `"obj"`), by content if `name` is
+    /// empty or has no extension. An extension no reader knows is an error
+    /// rather than a guess.
     pub fn detect(bytes: &[u8], name: &str) -> Result<Self, FormatError> {
         let base = name.rsplit(['/', '\\']).next().unwrap_or(name);
         match base.rsplit_once('.') {
-            None => Ok(Self::sniff(bytes)),
+            None => Ok(Self::from_name(base).unwrap_or_else(|| Self::sniff(bytes))),
             Some((_, extension)) => Self::from_name(extension).ok_or_else(|| {
                 FormatError::new(
                     Location::File,
