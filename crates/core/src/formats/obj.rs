@@ -4,7 +4,7 @@
 //!
 //! Our own reader rather than tobj: tobj's errors carry no line number, and a
 //! student's hand-edited OBJ needs `cube.obj:12:7: …` to be fixable. It is
-//! also faster on the 200k-face benchmark torus (99 ms against 163 ms,
+//! also faster on the 200k-face benchmark torus (88 ms against 121 ms,
 //! `benches/formats.rs`).
 
 use std::fmt::Write as _;
