@@ -1,1 +1,824 @@
 //! The 3D view: the mesh drawn with wgpu inside egui, with camera and picking.
+//!
+//! - Vertices are spheres, edges arrows pointing at their end vertex (a
+//!   half-edge mesh shows each edge as two arrows, each inset into its own
+//!   face), faces are filled and mostly see-through.
+//! - Drawing goes through an egui paint callback ([`gpu::ViewCallback`]):
+//!   instanced, one draw per element kind; geometry buffers are rebuilt only
+//!   when the mesh changes and style buffers only when the styles'
+//!   generation changes.
+//! - Labels, pointers and the hover preview are egui shapes painted over it.
+//! - Camera, picking and labels work without a GPU (headless UI tests).
+//!
+//! The app must run eframe with `depth_buffer: 24` ([`gpu::DEPTH_BITS`]).
+
+mod arrows;
+mod axes;
+mod bvh;
+mod camera;
+mod faces;
+mod gpu;
+mod labels;
+mod orientation;
+mod picking;
+mod scene;
+mod spheres;
+mod style;
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use eframe::egui_wgpu;
+use egui::{PointerButton, Rect, Sense};
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+pub use camera::{Camera, Ray, ViewTransforms};
+pub use gpu::DEPTH_BITS;
+pub use style::Palette;
+
+use gpu::{
+    DrawFlags, FrameUniform, GeometryUpload, Pipelines, StyleUpload, UploadState, ViewCallback,
+};
+use picking::{PickAccel, PickQuery};
+use scene::Scene;
+
+/// The mesh as the view draws it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshGeometry {
+    pub positions: Vec<Vec3>,
+    /// One per drawn arrow: a winged edge, or a half-edge (then `face` is its
+    /// own face, None on the boundary, and `pair` its pair index so offsets
+    /// go to opposite sides).
+    pub edges: Vec<EdgeGeometry>,
+    /// Each face's vertex ids in CCW (OBJ) order.
+    pub faces: Vec<Vec<u32>>,
+    pub half_edges: bool,
+}
+
+impl MeshGeometry {
+    /// The geometry of a winged-edge or half-edge mesh: one arrow per winged
+    /// edge or per half-edge, numbered like the structure's edge table.
+    pub fn from_mesh(mesh: &edgewise_core::mesh::Mesh) -> Self {
+        use edgewise_core::mesh::{HalfEdgeId, Mesh};
+        let faces = mesh.to_polygons().faces().map(<[u32]>::to_vec).collect();
+        match mesh {
+            Mesh::Winged(winged) => Self {
+                positions: mesh.positions(),
+                edges: winged
+                    .edges()
+                    .iter()
+                    .map(|e| EdgeGeometry {
+                        start: e.start_vertex.raw(),
+                        end: e.end_vertex.raw(),
+                        face: None,
+                        pair: None,
+                    })
+                    .collect(),
+                faces,
+                half_edges: false,
+            },
+            Mesh::Half(half) => Self {
+                positions: mesh.positions(),
+                edges: (0_u32..)
+                    .zip(half.half_edges())
+                    .map(|(h, edge)| EdgeGeometry {
+                        start: half
+                            .start_vertex(HalfEdgeId::new(h))
+                            .map_or(edge.end_vertex.raw(), edgewise_core::mesh::VertexId::raw),
+                        end: edge.end_vertex.raw(),
+                        face: edge.face.map(edgewise_core::mesh::FaceId::raw),
+                        pair: Some(edge.pair_edge.raw()),
+                    })
+                    .collect(),
+                faces,
+                half_edges: true,
+            },
+        }
+    }
+}
+
+/// One drawn arrow.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EdgeGeometry {
+    pub start: u32,
+    pub end: u32,
+    pub face: Option<u32>,
+    pub pair: Option<u32>,
+}
+
+/// Per-element look, indexed like the geometry; rebuilt by the app when
+/// selection or trace changes. `generation` increases on every change so the
+/// view re-uploads colours only then.
+#[derive(Clone, Debug, Default)]
+pub struct SceneStyles {
+    pub generation: u64,
+    pub vertices: Vec<ElementStyle>,
+    pub edges: Vec<ElementStyle>,
+    pub faces: Vec<ElementStyle>,
+    pub pointers: Vec<Pointer>,
+}
+
+/// How one element looks.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ElementStyle {
+    /// None = base colour.
+    pub colour: Option<egui::Color32>,
+    pub faded: bool,
+    /// E.g. "3: Left Predecessor"; None = just the id.
+    pub label: Option<String>,
+}
+
+/// A comparison arrow pointing at an element (the journal draws one per
+/// side; the same element twice gets two).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pointer {
+    pub target: Pick,
+    pub colour: egui::Color32,
+}
+
+/// A picked element.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Serialize, Deserialize)]
+pub enum Pick {
+    Vertex(u32),
+    Edge(u32),
+    Face(u32),
+}
+
+impl Pick {
+    pub fn kind(self) -> PickKind {
+        match self {
+            Self::Vertex(_) => PickKind::Vertex,
+            Self::Edge(_) => PickKind::Edge,
+            Self::Face(_) => PickKind::Face,
+        }
+    }
+}
+
+/// The kinds of element.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Serialize, Deserialize)]
+pub enum PickKind {
+    Vertex,
+    Edge,
+    Face,
+}
+
+/// Which elements clicks can pick (an algorithm asking for a face makes only
+/// faces pickable).
+#[derive(Clone, Copy, PartialEq, Eq, Debug, Default, Serialize, Deserialize)]
+pub enum PickFilter {
+    #[default]
+    All,
+    Only(PickKind),
+}
+
+/// When element ids are drawn.
+#[derive(Clone, Copy, PartialEq, Eq, Debug, Default, Serialize, Deserialize)]
+pub enum DrawIds {
+    /// Only for elements with a highlight or a label.
+    #[default]
+    Highlighted,
+    Always,
+    Never,
+}
+
+/// The view options the user controls.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ViewOptions {
+    pub draw_ids: DrawIds,
+    /// Thickness of vertices and edges (1 = default).
+    pub mesh_scale: f32,
+    /// Size of labels (1 = default).
+    pub label_scale: f32,
+    pub show_axes: bool,
+    pub show_orientation: bool,
+    pub solid_faces: bool,
+    pub pickable: PickFilter,
+    pub dark: bool,
+}
+
+impl Default for ViewOptions {
+    fn default() -> Self {
+        Self {
+            draw_ids: DrawIds::Highlighted,
+            mesh_scale: 1.0,
+            label_scale: 1.0,
+            show_axes: false,
+            show_orientation: false,
+            solid_faces: false,
+            pickable: PickFilter::All,
+            dark: false,
+        }
+    }
+}
+
+/// What happened in the view this frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ViewResponse {
+    /// An element was clicked.
+    pub clicked: Option<Pick>,
+    /// The element under the pointer (the preview).
+    pub hovered: Option<Pick>,
+    /// The background was clicked (the selection should clear).
+    pub background_clicked: bool,
+}
+
+/// Ids for views and uploads, unique in the process.
+fn next_id() -> u64 {
+    static NEXT: AtomicU64 = AtomicU64::new(1);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
+/// The link to the GPU side, when there is one.
+struct GpuLink {
+    renderer: Arc<egui::mutex::RwLock<egui_wgpu::Renderer>>,
+    uploaded: Arc<UploadState>,
+    /// CPU copies waiting for the next `prepare`.
+    geometry: Option<Arc<GeometryUpload>>,
+    styles: Option<Arc<StyleUpload>>,
+}
+
+/// Inputs that decide the hovered element; picking reruns only when they
+/// change.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct HoverKey {
+    pointer: egui::Pos2,
+    camera: Camera,
+    viewport: Rect,
+    geometry_id: u64,
+    sizes_key: u32,
+    filter: PickFilter,
+    solid: bool,
+}
+
+/// The 3D view.
+pub struct View3d {
+    id: u64,
+    camera: Camera,
+    scene: Scene,
+    accel: PickAccel,
+    geometry_id: u64,
+    styles_id: u64,
+    /// (styles generation, dark, geometry id) the current styles were built for.
+    styles_key: Option<(u64, bool, u64)>,
+    /// Elements with a colour or label, for the labels pass.
+    highlighted: Vec<Pick>,
+    last_aspect: f32,
+    frame_pending: bool,
+    hover: Option<(HoverKey, Option<Pick>)>,
+    gpu: Option<GpuLink>,
+}
+
+impl View3d {
+    /// Creates pipelines if a wgpu render state exists (None in headless UI
+    /// tests).
+    pub fn new(render_state: Option<&egui_wgpu::RenderState>) -> Self {
+        let gpu = render_state.map(|render_state| {
+            Pipelines::install(render_state);
+            GpuLink {
+                renderer: render_state.renderer.clone(),
+                uploaded: Arc::new(UploadState::default()),
+                geometry: None,
+                styles: None,
+            }
+        });
+        let mut view = Self {
+            id: next_id(),
+            camera: Camera::default(),
+            scene: Scene::new(MeshGeometry::default()),
+            accel: PickAccel::default(),
+            geometry_id: 0,
+            styles_id: 0,
+            styles_key: None,
+            highlighted: Vec::new(),
+            last_aspect: 1.5,
+            frame_pending: false,
+            hover: None,
+            gpu,
+        };
+        view.set_geometry(MeshGeometry::default(), false);
+        view
+    }
+
+    /// Replaces the geometry (a new mesh or a structure switch) and frames it
+    /// if `frame` is true.
+    pub fn set_geometry(&mut self, geometry: MeshGeometry, frame: bool) {
+        self.scene = Scene::new(geometry);
+        self.accel = PickAccel::new(&self.scene);
+        self.geometry_id = next_id();
+        self.styles_key = None;
+        self.highlighted.clear();
+        self.hover = None;
+        if let Some(gpu) = &mut self.gpu {
+            gpu.geometry = Some(Arc::new(GeometryUpload {
+                id: self.geometry_id,
+                spheres: spheres::instances(&self.scene),
+                arrows: arrows::instances(&self.scene),
+                faces: faces::corners(&self.scene),
+                marks: orientation::instances(&self.scene),
+            }));
+            gpu.styles = None;
+        }
+        if frame {
+            self.frame_all();
+            // The viewport's shape is known at the next `ui`.
+            self.frame_pending = true;
+        }
+    }
+
+    /// Frames the whole mesh.
+    pub fn frame_all(&mut self) {
+        self.camera
+            .frame(self.scene.center, self.scene.radius, self.last_aspect);
+    }
+
+    /// The camera, as plain data.
+    pub fn camera(&self) -> Camera {
+        self.camera
+    }
+
+    pub fn set_camera(&mut self, camera: Camera) {
+        self.camera = camera.sanitized();
+        self.frame_pending = false;
+    }
+
+    /// The transforms of the last known viewport (for tests and the app's
+    /// own projections).
+    pub fn transforms(&self, viewport: Rect) -> ViewTransforms {
+        ViewTransforms::new(self.camera, viewport, self.scene.center, self.scene.radius)
+    }
+
+    /// The element under a point of `viewport`, as a click there would pick.
+    pub fn pick_at(
+        &self,
+        viewport: Rect,
+        pointer: egui::Pos2,
+        options: &ViewOptions,
+    ) -> Option<Pick> {
+        let transforms = self.transforms(viewport);
+        PickQuery {
+            scene: &self.scene,
+            accel: &self.accel,
+            transforms: &transforms,
+            sizes: self.scene.sizes(options.mesh_scale),
+            filter: options.pickable,
+            solid_faces: options.solid_faces,
+        }
+        .pick(pointer)
+    }
+
+    /// Where an element's label attaches, in world space (None for an id out
+    /// of range).
+    pub fn anchor(&self, pick: Pick) -> Option<Vec3> {
+        self.scene.anchor(pick)
+    }
+
+    /// Draws the view filling `ui`'s available rect and handles camera input
+    /// and picking.
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        styles: &SceneStyles,
+        options: &ViewOptions,
+    ) -> ViewResponse {
+        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        if rect.width() < 1.0 || rect.height() < 1.0 {
+            return ViewResponse::default();
+        }
+        self.last_aspect = rect.aspect_ratio();
+        if self.frame_pending {
+            self.frame_all();
+            self.frame_pending = false;
+        }
+        let palette = Palette::new(options.dark);
+        self.handle_camera_input(ui, &response, rect);
+        self.update_styles(styles, options.dark, &palette);
+
+        let transforms = self.transforms(rect);
+        let sizes = self.scene.sizes(options.mesh_scale);
+        let query = PickQuery {
+            scene: &self.scene,
+            accel: &self.accel,
+            transforms: &transforms,
+            sizes,
+            filter: options.pickable,
+            solid_faces: options.solid_faces,
+        };
+
+        let dragging = response.dragged() || ui.input(|i| i.pointer.any_down());
+        let hovered = match response.hover_pos() {
+            Some(pointer) if !dragging => {
+                let key = HoverKey {
+                    pointer,
+                    camera: self.camera,
+                    viewport: rect,
+                    geometry_id: self.geometry_id,
+                    sizes_key: options.mesh_scale.to_bits(),
+                    filter: options.pickable,
+                    solid: options.solid_faces,
+                };
+                match self.hover {
+                    Some((cached, pick)) if cached == key => pick,
+                    _ => {
+                        let pick = query.pick(pointer);
+                        self.hover = Some((key, pick));
+                        pick
+                    }
+                }
+            }
+            _ => None,
+        };
+
+        let mut view_response = ViewResponse {
+            hovered,
+            ..ViewResponse::default()
+        };
+        if response.clicked()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            match query.pick(pointer) {
+                Some(pick) => view_response.clicked = Some(pick),
+                None => view_response.background_clicked = true,
+            }
+        }
+        if hovered.is_some() && !dragging {
+            ui.ctx().set_cursor_icon(egui::CursorIcon::PointingHand);
+        } else if response.dragged() {
+            ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
+        }
+
+        // Paint: background, the 3D callback, then overlays.
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, palette.background);
+        self.add_callback(&painter, rect, &transforms, options, &palette);
+        let overlay = labels::Overlay {
+            painter: &painter,
+            transforms: &transforms,
+            scene: &self.scene,
+            styles,
+            options,
+            sizes,
+            palette,
+        };
+        if let Some(pick) = hovered {
+            overlay.paint_hover(pick);
+        }
+        overlay.paint_labels(&self.highlighted, hovered);
+        overlay.paint_pointers();
+        if options.show_axes {
+            overlay.paint_axis_letters();
+        }
+        view_response
+    }
+
+    fn handle_camera_input(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect) {
+        let (shift, scroll, zoom) =
+            ui.input(|i| (i.modifiers.shift, i.smooth_scroll_delta, i.zoom_delta()));
+        let delta = response.drag_delta();
+        if response.dragged_by(PointerButton::Primary) {
+            if shift {
+                self.camera.pan(delta, rect.height());
+            } else {
+                self.camera.orbit(delta);
+            }
+        }
+        if response.dragged_by(PointerButton::Middle) {
+            self.camera.pan(delta, rect.height());
+        }
+        if response.dragged_by(PointerButton::Secondary) {
+            self.camera.zoom((-delta.y * 0.01).exp());
+        }
+        if response.contains_pointer() {
+            if scroll.y != 0.0 {
+                self.camera.zoom((scroll.y * 0.0025).exp());
+                ui.ctx()
+                    .input_mut(|i| i.smooth_scroll_delta = egui::Vec2::ZERO);
+            }
+            if zoom != 1.0 {
+                self.camera.zoom(zoom);
+            }
+        }
+        if response.double_clicked() {
+            self.frame_all();
+        }
+    }
+
+    /// Rebuilds the per-element GPU styles and the highlighted list when the
+    /// styles' generation, the theme or the mesh changed.
+    fn update_styles(&mut self, styles: &SceneStyles, dark: bool, palette: &Palette) {
+        let key = (styles.generation, dark, self.geometry_id);
+        if self.styles_key == Some(key) {
+            return;
+        }
+        self.styles_key = Some(key);
+        self.styles_id = next_id();
+        self.highlighted.clear();
+        type Kind<'a> = (&'a [ElementStyle], fn(u32) -> Pick, usize);
+        let kinds: [Kind<'_>; 3] = [
+            (&styles.vertices, Pick::Vertex, self.scene.vertex_count()),
+            (&styles.edges, Pick::Edge, self.scene.edge_count()),
+            (&styles.faces, Pick::Face, self.scene.face_count()),
+        ];
+        for (list, make, count) in kinds {
+            for (i, s) in list.iter().enumerate().take(count) {
+                if style::is_highlighted(s)
+                    && let Ok(id) = u32::try_from(i)
+                {
+                    self.highlighted.push(make(id));
+                }
+            }
+        }
+        if let Some(gpu) = &mut self.gpu {
+            gpu.styles = Some(Arc::new(style::build(
+                &self.scene,
+                styles,
+                palette,
+                self.styles_id,
+            )));
+        }
+    }
+
+    fn add_callback(
+        &mut self,
+        painter: &egui::Painter,
+        rect: Rect,
+        transforms: &ViewTransforms,
+        options: &ViewOptions,
+        palette: &Palette,
+    ) {
+        let Some(gpu) = &mut self.gpu else {
+            return;
+        };
+        // Drop CPU copies the GPU side has taken.
+        if gpu
+            .geometry
+            .as_ref()
+            .is_some_and(|g| gpu.uploaded.geometry.load(Ordering::Acquire) == g.id)
+        {
+            gpu.geometry = None;
+        }
+        if gpu
+            .styles
+            .as_ref()
+            .is_some_and(|s| gpu.uploaded.styles.load(Ordering::Acquire) == s.id)
+        {
+            gpu.styles = None;
+        }
+        let sizes = self.scene.sizes(options.mesh_scale);
+        let (right, up) = transforms.screen_axes();
+        let light = (self.camera.backward() + up * 0.7 - right * 0.45).normalize_or_zero();
+        let [r, g, b, _] = palette.orientation.to_normalized_gamma_f32();
+        let frame = FrameUniform {
+            clip_from_world: transforms.clip_from_world.to_cols_array_2d(),
+            eye: transforms.eye.extend(1.0).to_array(),
+            light: light.extend(0.0).to_array(),
+            sizes: [
+                sizes.vertex_radius,
+                sizes.shaft_radius,
+                sizes.head_radius,
+                sizes.head_length,
+            ],
+            params: [0.0, self.scene.arrow_gap(), self.scene.unit * 0.004, 0.0],
+            orientation_colour: [r, g, b, 1.0],
+        };
+        let (axes, axes_styles) = axes::instances(&self.scene, &sizes, palette);
+        let callback = ViewCallback {
+            view_id: self.id,
+            frame,
+            geometry_id: self.geometry_id,
+            styles_id: self.styles_id,
+            geometry: gpu.geometry.clone(),
+            styles: gpu.styles.clone(),
+            axes,
+            axes_styles,
+            flags: DrawFlags {
+                axes: options.show_axes,
+                orientation: options.show_orientation,
+                solid_faces: options.solid_faces,
+            },
+            uploaded: gpu.uploaded.clone(),
+        };
+        painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+    }
+}
+
+impl Drop for View3d {
+    fn drop(&mut self) {
+        if let Some(gpu) = &self.gpu {
+            let mut renderer = gpu.renderer.write();
+            Pipelines::remove_view(&mut renderer.callback_resources, self.id);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use egui::{Event, Modifiers, Pos2, Rect, Vec2};
+
+    use super::*;
+
+    fn screen() -> Rect {
+        Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0))
+    }
+
+    fn square() -> MeshGeometry {
+        MeshGeometry {
+            positions: vec![
+                Vec3::new(0.0, 0.0, 0.0),
+                Vec3::new(1.0, 0.0, 0.0),
+                Vec3::new(1.0, 1.0, 0.0),
+                Vec3::new(0.0, 1.0, 0.0),
+            ],
+            edges: [(0, 1), (1, 2), (2, 3), (3, 0)]
+                .into_iter()
+                .map(|(start, end)| EdgeGeometry {
+                    start,
+                    end,
+                    face: None,
+                    pair: None,
+                })
+                .collect(),
+            faces: vec![vec![0, 1, 2, 3]],
+            half_edges: false,
+        }
+    }
+
+    fn frame(ctx: &egui::Context, view: &mut View3d, events: Vec<Event>) -> ViewResponse {
+        let mut response = ViewResponse::default();
+        let raw = egui::RawInput {
+            screen_rect: Some(screen()),
+            events,
+            ..Default::default()
+        };
+        ctx.run_ui(raw, |ui| {
+            response = view.ui(ui, &SceneStyles::default(), &ViewOptions::default());
+        })
+        .drop_without_applying_deltas();
+        response
+    }
+
+    fn button(pos: Pos2, pressed: bool) -> Event {
+        Event::PointerButton {
+            pos,
+            button: PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        }
+    }
+
+    fn click(ctx: &egui::Context, view: &mut View3d, pos: Pos2) -> ViewResponse {
+        frame(ctx, view, vec![Event::PointerMoved(pos), button(pos, true)]);
+        frame(ctx, view, vec![button(pos, false)])
+    }
+
+    #[test]
+    fn headless_view_hovers_clicks_and_clears() {
+        let ctx = egui::Context::default();
+        let mut view = View3d::new(None);
+        view.set_geometry(square(), true);
+        frame(&ctx, &mut view, Vec::new());
+        let transforms = view.transforms(screen());
+        let (corner, _) = transforms.project(Vec3::new(1.0, 1.0, 0.0)).unwrap();
+        let hover = frame(&ctx, &mut view, vec![Event::PointerMoved(corner)]);
+        assert_eq!(hover.hovered, Some(Pick::Vertex(2)));
+
+        let response = click(&ctx, &mut view, corner);
+        assert_eq!(response.clicked, Some(Pick::Vertex(2)));
+        assert!(!response.background_clicked);
+
+        let center = transforms.project(Vec3::new(0.5, 0.45, 0.0)).unwrap().0;
+        assert_eq!(click(&ctx, &mut view, center).clicked, Some(Pick::Face(0)));
+
+        let response = click(&ctx, &mut view, Pos2::new(5.0, 5.0));
+        assert_eq!(response.clicked, None);
+        assert!(response.background_clicked);
+    }
+
+    #[test]
+    fn drag_orbits_and_scroll_zooms() {
+        let ctx = egui::Context::default();
+        let mut view = View3d::new(None);
+        view.set_geometry(square(), true);
+        frame(&ctx, &mut view, Vec::new());
+        let before = view.camera();
+        let start = Pos2::new(400.0, 300.0);
+        frame(
+            &ctx,
+            &mut view,
+            vec![Event::PointerMoved(start), button(start, true)],
+        );
+        for i in 1..=5 {
+            frame(
+                &ctx,
+                &mut view,
+                vec![Event::PointerMoved(start + Vec2::new(20.0 * i as f32, 0.0))],
+            );
+        }
+        let end = start + Vec2::new(100.0, 0.0);
+        let released = frame(&ctx, &mut view, vec![button(end, false)]);
+        assert_eq!(released.clicked, None, "a drag is not a click");
+        let after = view.camera();
+        assert!(
+            (after.yaw - before.yaw).abs() > 0.1,
+            "{before:?} → {after:?}"
+        );
+        assert_eq!(after.distance, before.distance);
+
+        frame(
+            &ctx,
+            &mut view,
+            vec![Event::MouseWheel {
+                unit: egui::MouseWheelUnit::Point,
+                delta: Vec2::new(0.0, 120.0),
+                phase: egui::TouchPhase::Move,
+                modifiers: Modifiers::NONE,
+                source: egui::MouseWheelSource::Wheel,
+            }],
+        );
+        for _ in 0..30 {
+            frame(&ctx, &mut view, Vec::new());
+        }
+        assert!(
+            view.camera().distance < after.distance,
+            "scrolling up zooms in"
+        );
+    }
+
+    #[test]
+    fn new_geometry_is_framed_and_cameras_round_trip() {
+        let mut view = View3d::new(None);
+        let mut far = square();
+        for p in &mut far.positions {
+            *p += Vec3::new(100.0, 0.0, 0.0);
+        }
+        view.set_geometry(far, true);
+        assert!((view.camera().target()[0] - 100.5).abs() < 1e-3);
+        let camera = Camera {
+            target: [1.0, 2.0, 3.0],
+            yaw: 1.0,
+            pitch: 0.5,
+            distance: 7.0,
+        };
+        view.set_camera(camera);
+        assert_eq!(view.camera(), camera);
+        let json = serde_json::to_string(&camera).unwrap();
+        assert_eq!(serde_json::from_str::<Camera>(&json).unwrap(), camera);
+        // Replacing the mesh without framing keeps the camera.
+        view.set_geometry(square(), false);
+        assert_eq!(view.camera(), camera);
+    }
+
+    #[test]
+    fn odd_meshes_do_not_panic() {
+        let ctx = egui::Context::default();
+        let odd = [
+            MeshGeometry::default(),
+            MeshGeometry {
+                positions: vec![Vec3::ONE; 3],
+                edges: vec![EdgeGeometry {
+                    start: 0,
+                    end: 9,
+                    face: Some(4),
+                    pair: Some(7),
+                }],
+                faces: vec![vec![0, 1, 2], vec![], vec![5, 6, 7, 8]],
+                half_edges: true,
+            },
+        ];
+        for geometry in odd {
+            let mut view = View3d::new(None);
+            view.set_geometry(geometry, true);
+            let styles = SceneStyles {
+                generation: 3,
+                vertices: vec![ElementStyle {
+                    colour: Some(egui::Color32::RED),
+                    faded: false,
+                    label: Some("x".to_owned()),
+                }],
+                edges: Vec::new(),
+                faces: Vec::new(),
+                pointers: vec![Pointer {
+                    target: Pick::Face(99),
+                    colour: egui::Color32::RED,
+                }],
+            };
+            let options = ViewOptions {
+                draw_ids: DrawIds::Always,
+                show_axes: true,
+                show_orientation: true,
+                ..ViewOptions::default()
+            };
+            for pos in [Pos2::new(400.0, 300.0), Pos2::new(1.0, 1.0)] {
+                let raw = egui::RawInput {
+                    screen_rect: Some(screen()),
+                    events: vec![Event::PointerMoved(pos)],
+                    ..Default::default()
+                };
+                ctx.run_ui(raw, |ui| {
+                    view.ui(ui, &styles, &options);
+                })
+                .drop_without_applying_deltas();
+            }
+        }
+    }
+}

@@ -1,0 +1,223 @@
+//! A window with only the 3D view and its options, for trying the view by
+//! hand: `cargo run -p edgewise-app --example view3d_demo [torus|cube|grid] [--half]`.
+//!
+//! Clicking an element highlights it yellow and labels it; hovering shows
+//! the preview. The side panel holds the view options.
+
+use edgewise_app::view3d::{
+    DrawIds, ElementStyle, MeshGeometry, Pick, PickFilter, PickKind, Pointer, SceneStyles, View3d,
+    ViewOptions,
+};
+use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
+use egui::Color32;
+use glam::Vec3;
+
+struct Demo {
+    view: View3d,
+    geometry: MeshGeometry,
+    styles: SceneStyles,
+    options: ViewOptions,
+    selected: Option<Pick>,
+    hovered: Option<Pick>,
+}
+
+fn polygons(name: &str) -> Polygons {
+    match name {
+        "cube" => {
+            let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+            Polygons::from_faces(
+                vec![
+                    p(-1.0, -1.0, -1.0),
+                    p(1.0, -1.0, -1.0),
+                    p(1.0, 1.0, -1.0),
+                    p(-1.0, 1.0, -1.0),
+                    p(-1.0, -1.0, 1.0),
+                    p(1.0, -1.0, 1.0),
+                    p(1.0, 1.0, 1.0),
+                    p(-1.0, 1.0, 1.0),
+                ],
+                [
+                    [0, 3, 2, 1],
+                    [4, 5, 6, 7],
+                    [0, 1, 5, 4],
+                    [2, 3, 7, 6],
+                    [1, 2, 6, 5],
+                    [0, 4, 7, 3],
+                ],
+            )
+        }
+        "grid" => {
+            let mut polygons = Polygons::new();
+            for j in 0..4 {
+                for i in 0..5 {
+                    polygons.push_vertex(Vec3::new(
+                        i as f32,
+                        j as f32,
+                        ((i + j) as f32 * 0.7).sin() * 0.3,
+                    ));
+                }
+            }
+            for j in 0..3_u32 {
+                for i in 0..4_u32 {
+                    let a = j * 5 + i;
+                    polygons.push_face(&[a, a + 1, a + 6, a + 5]);
+                }
+            }
+            polygons
+        }
+        "torus200k" => generate::torus(400, 250),
+        "torus20k" => generate::torus(100, 100),
+        _ => generate::torus(24, 12),
+    }
+}
+
+impl Demo {
+    fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let args: Vec<String> = std::env::args().skip(1).collect();
+        let name = args
+            .iter()
+            .find(|a| !a.starts_with("--"))
+            .map_or("torus", String::as_str);
+        let structure = if args.iter().any(|a| a == "--half") {
+            Structure::HalfEdge
+        } else {
+            Structure::WingedEdge
+        };
+        let geometry = match Mesh::build(&polygons(name), structure) {
+            Ok((mesh, _)) => MeshGeometry::from_mesh(&mesh),
+            Err(error) => {
+                eprintln!("cannot build {name}: {error}");
+                MeshGeometry::default()
+            }
+        };
+        let mut view = View3d::new(cc.wgpu_render_state.as_ref());
+        view.set_geometry(geometry.clone(), true);
+        let mut demo = Self {
+            view,
+            geometry,
+            styles: SceneStyles::default(),
+            options: ViewOptions::default(),
+            selected: None,
+            hovered: None,
+        };
+        demo.restyle();
+        demo
+    }
+
+    fn restyle(&mut self) {
+        let generation = self.styles.generation + 1;
+        let mut styles = SceneStyles {
+            generation,
+            vertices: vec![ElementStyle::default(); self.geometry.positions.len()],
+            edges: vec![ElementStyle::default(); self.geometry.edges.len()],
+            faces: vec![ElementStyle::default(); self.geometry.faces.len()],
+            pointers: Vec::new(),
+        };
+        if let Some(pick) = self.selected {
+            let highlight = |style: &mut ElementStyle, name: String| {
+                style.colour = Some(Color32::from_rgb(232, 196, 40));
+                style.label = Some(name);
+            };
+            match pick {
+                Pick::Vertex(v) => {
+                    if let Some(s) = styles.vertices.get_mut(v as usize) {
+                        highlight(s, format!("{v}: picked"));
+                    }
+                }
+                Pick::Edge(e) => {
+                    if let Some(s) = styles.edges.get_mut(e as usize) {
+                        highlight(s, format!("{e}: picked"));
+                    }
+                }
+                Pick::Face(f) => {
+                    if let Some(s) = styles.faces.get_mut(f as usize) {
+                        highlight(s, format!("{f}: picked"));
+                    }
+                }
+            }
+            styles.pointers.push(Pointer {
+                target: pick,
+                colour: Color32::from_rgb(80, 180, 230),
+            });
+        }
+        self.styles = styles;
+    }
+
+    fn options_ui(&mut self, ui: &mut egui::Ui) {
+        let o = &mut self.options;
+        ui.heading("View options");
+        egui::ComboBox::from_label("Draw ids")
+            .selected_text(format!("{:?}", o.draw_ids))
+            .show_ui(ui, |ui| {
+                for ids in [DrawIds::Highlighted, DrawIds::Always, DrawIds::Never] {
+                    ui.selectable_value(&mut o.draw_ids, ids, format!("{ids:?}"));
+                }
+            });
+        ui.add(egui::Slider::new(&mut o.mesh_scale, 0.2..=4.0).text("Mesh scale"));
+        ui.add(egui::Slider::new(&mut o.label_scale, 0.5..=3.0).text("Label scale"));
+        ui.checkbox(&mut o.show_axes, "Axes");
+        ui.checkbox(&mut o.show_orientation, "Face orientation");
+        ui.checkbox(&mut o.solid_faces, "Solid faces");
+        ui.checkbox(&mut o.dark, "Dark");
+        egui::ComboBox::from_label("Pickable")
+            .selected_text(format!("{:?}", o.pickable))
+            .show_ui(ui, |ui| {
+                for filter in [
+                    PickFilter::All,
+                    PickFilter::Only(PickKind::Vertex),
+                    PickFilter::Only(PickKind::Edge),
+                    PickFilter::Only(PickKind::Face),
+                ] {
+                    ui.selectable_value(&mut o.pickable, filter, format!("{filter:?}"));
+                }
+            });
+        ui.separator();
+        if ui.button("Frame all").clicked() {
+            self.view.frame_all();
+        }
+        ui.label(format!("selected: {:?}", self.selected));
+        ui.label(format!("hovered: {:?}", self.hovered));
+        ui.label(format!(
+            "{} vertices, {} arrows, {} faces",
+            self.geometry.positions.len(),
+            self.geometry.edges.len(),
+            self.geometry.faces.len()
+        ));
+        let dt = ui.input(|i| i.unstable_dt);
+        ui.label(format!("frame: {:.1} ms", dt * 1000.0));
+    }
+}
+
+impl eframe::App for Demo {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        egui::Panel::left("options").show(ui, |ui| self.options_ui(ui));
+        egui::CentralPanel::default()
+            .frame(egui::Frame::NONE)
+            .show(ui, |ui| {
+                let response = self.view.ui(ui, &self.styles, &self.options);
+                self.hovered = response.hovered;
+                if let Some(pick) = response.clicked {
+                    self.selected = Some(pick);
+                    self.restyle();
+                } else if response.background_clicked {
+                    self.selected = None;
+                    self.restyle();
+                }
+            });
+    }
+}
+
+fn main() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Edgewise 3D view")
+            .with_inner_size([1100.0, 750.0]),
+        depth_buffer: edgewise_app::view3d::DEPTH_BITS,
+        ..Default::default()
+    };
+    eframe::run_native(
+        "view3d demo",
+        options,
+        Box::new(|cc| Ok(Box::new(Demo::new(cc)))),
+    )
+}

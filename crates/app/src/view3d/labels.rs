@@ -1,0 +1,403 @@
+//! Screen-space overlays painted with egui after the 3D pass: id/label boxes,
+//! comparison pointers, the hover preview and the axis letters.
+//!
+//! Labels are culled to the view and capped: highlighted ones always show,
+//! the rest (in the Always mode) nearest first, skipping any that would
+//! overlap one already placed, up to [`MAX_LABELS`].
+
+use std::collections::HashSet;
+
+use super::camera::ViewTransforms;
+use super::scene::{Scene, Sizes};
+use super::style::Palette;
+use super::{DrawIds, Pick, SceneStyles, ViewOptions, axes, style};
+use egui::{Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, Vec2, vec2};
+
+/// Most labels drawn in one frame besides the highlighted ones.
+pub const MAX_LABELS: usize = 600;
+
+/// Everything the overlays need for one frame.
+pub struct Overlay<'a> {
+    pub painter: &'a Painter,
+    pub transforms: &'a ViewTransforms,
+    pub scene: &'a Scene,
+    pub styles: &'a SceneStyles,
+    pub options: &'a ViewOptions,
+    pub sizes: Sizes,
+    pub palette: Palette,
+}
+
+/// A label ready to place: where its box attaches on screen and how.
+struct Placed {
+    pick: Pick,
+    /// Bottom-center of the box for vertices and winged edges (drawn above
+    /// the element), center for faces and half-edges.
+    anchor: Pos2,
+    above: bool,
+    depth: f32,
+}
+
+impl Overlay<'_> {
+    fn viewport(&self) -> Rect {
+        self.transforms.viewport
+    }
+
+    fn font(&self) -> FontId {
+        let scale = if self.options.label_scale.is_finite() {
+            self.options.label_scale.clamp(0.2, 8.0)
+        } else {
+            1.0
+        };
+        FontId::proportional(11.0 * scale)
+    }
+
+    /// Projected radius of a vertex sphere in points at `depth`.
+    fn vertex_radius_points(&self, depth: f32) -> f32 {
+        self.sizes.vertex_radius / self.transforms.world_per_point(depth).max(1e-30)
+    }
+
+    /// Where `pick`'s label attaches on screen, or `None` off screen.
+    fn place(&self, pick: Pick) -> Option<Placed> {
+        let world = self.scene.anchor(pick)?;
+        let (pos, depth) = self.transforms.project(world)?;
+        if !self.viewport().expand(20.0).contains(pos) {
+            return None;
+        }
+        let (anchor, above) = match pick {
+            Pick::Vertex(_) => (
+                pos - vec2(0.0, self.vertex_radius_points(depth) + 2.0),
+                true,
+            ),
+            Pick::Edge(_) if !self.scene.geometry.half_edges => (pos - vec2(0.0, 4.0), true),
+            Pick::Edge(_) | Pick::Face(_) => (pos, false),
+        };
+        Some(Placed {
+            pick,
+            anchor,
+            above,
+            depth,
+        })
+    }
+
+    fn element_style(&self, pick: Pick) -> Option<&super::ElementStyle> {
+        match pick {
+            Pick::Vertex(i) => self.styles.vertices.get(i as usize),
+            Pick::Edge(i) => self.styles.edges.get(i as usize),
+            Pick::Face(i) => self.styles.faces.get(i as usize),
+        }
+    }
+
+    fn text(&self, pick: Pick) -> String {
+        match self.element_style(pick).and_then(|s| s.label.clone()) {
+            Some(label) => label,
+            None => match pick {
+                Pick::Vertex(i) | Pick::Edge(i) | Pick::Face(i) => i.to_string(),
+            },
+        }
+    }
+
+    /// Lays out and paints one label box; returns its rectangle.
+    fn paint_label(&self, placed: &Placed, border: Option<Color32>) -> Rect {
+        let galley = self.painter.layout_no_wrap(
+            self.text(placed.pick),
+            self.font(),
+            self.palette.label_text,
+        );
+        let padding = vec2(3.0, 1.0);
+        let size = galley.size() + padding * 2.0;
+        let min = if placed.above {
+            placed.anchor - vec2(size.x * 0.5, size.y)
+        } else {
+            placed.anchor - size * 0.5
+        };
+        let rect = Rect::from_min_size(min, size);
+        let corner = match placed.pick {
+            Pick::Vertex(_) => size.y * 0.5,
+            Pick::Edge(_) => 2.0,
+            Pick::Face(_) => 0.0,
+        };
+        let stroke = match border {
+            Some(colour) => Stroke::new(1.5, colour),
+            None => Stroke::new(1.0, self.palette.label_stroke),
+        };
+        self.painter.rect(
+            rect,
+            corner,
+            self.palette.label_fill,
+            stroke,
+            StrokeKind::Inside,
+        );
+        self.painter
+            .galley(rect.min + padding, galley, self.palette.label_text);
+        rect
+    }
+
+    /// Paints the id/label boxes. `highlighted` lists the elements with a
+    /// colour or a label (cached by the view).
+    pub fn paint_labels(&self, highlighted: &[Pick], hovered: Option<Pick>) {
+        if self.options.draw_ids == DrawIds::Never {
+            return;
+        }
+        // Highlighted labels: all of them, far ones first so near ones are
+        // painted on top.
+        let mut important: Vec<Placed> = highlighted
+            .iter()
+            .filter(|&&p| Some(p) != hovered)
+            .filter_map(|&p| self.place(p))
+            .collect();
+        important.sort_by(|a, b| b.depth.total_cmp(&a.depth));
+
+        let mut occupied = Occupancy::new(self.font().size);
+        let mut rects = Vec::with_capacity(important.len());
+        for placed in &important {
+            let border = self.element_style(placed.pick).and_then(|s| s.colour);
+            rects.push(self.paint_label(placed, border));
+        }
+        for rect in &rects {
+            occupied.claim(*rect);
+        }
+
+        if self.options.draw_ids == DrawIds::Always {
+            let mut rest = self.visible_unhighlighted();
+            if rest.len() > MAX_LABELS * 4 {
+                rest.select_nth_unstable_by(MAX_LABELS * 4, |a, b| a.depth.total_cmp(&b.depth));
+                rest.truncate(MAX_LABELS * 4);
+            }
+            rest.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+            let mut drawn = 0;
+            for placed in &rest {
+                if drawn >= MAX_LABELS {
+                    break;
+                }
+                let estimate = self.estimate_rect(placed);
+                if occupied.is_free(estimate) {
+                    occupied.claim(estimate);
+                    self.paint_label(placed, None);
+                    drawn += 1;
+                }
+            }
+        }
+
+        if let Some(pick) = hovered
+            && let Some(placed) = self.place(pick)
+        {
+            self.paint_label(&placed, Some(self.palette.hover));
+        }
+    }
+
+    /// A box size estimate without laying text out (digits are about 0.6 em).
+    fn estimate_rect(&self, placed: &Placed) -> Rect {
+        let size = self.font().size;
+        let characters = match placed.pick {
+            Pick::Vertex(i) | Pick::Edge(i) | Pick::Face(i) => i.checked_ilog10().unwrap_or(0) + 1,
+        };
+        let box_size = vec2(characters as f32 * size * 0.6 + 6.0, size * 1.3 + 2.0);
+        if placed.above {
+            Rect::from_min_size(placed.anchor - vec2(box_size.x * 0.5, box_size.y), box_size)
+        } else {
+            Rect::from_center_size(placed.anchor, box_size)
+        }
+    }
+
+    /// Every element not highlighted whose label would be on screen.
+    fn visible_unhighlighted(&self) -> Vec<Placed> {
+        let is_plain =
+            |style: Option<&super::ElementStyle>| !style.is_some_and(style::is_highlighted);
+        let mut out = Vec::new();
+        let viewport = self.viewport();
+        for v in 0..self.scene.vertex_count() {
+            let Ok(id) = u32::try_from(v) else { break };
+            if is_plain(self.styles.vertices.get(v))
+                && let Some(p) = self.place(Pick::Vertex(id))
+                && viewport.contains(p.anchor)
+            {
+                out.push(p);
+            }
+        }
+        for e in 0..self.scene.edge_count() {
+            let Ok(id) = u32::try_from(e) else { break };
+            if is_plain(self.styles.edges.get(e))
+                && let Some(p) = self.place(Pick::Edge(id))
+                && viewport.contains(p.anchor)
+            {
+                out.push(p);
+            }
+        }
+        for f in 0..self.scene.face_count() {
+            let Ok(id) = u32::try_from(f) else { break };
+            if is_plain(self.styles.faces.get(f))
+                && let Some(p) = self.place(Pick::Face(id))
+                && viewport.contains(p.anchor)
+            {
+                out.push(p);
+            }
+        }
+        out
+    }
+
+    /// Outlines the hovered element.
+    pub fn paint_hover(&self, pick: Pick) {
+        let colour = self.palette.hover;
+        match pick {
+            Pick::Vertex(v) => {
+                if let Some((pos, depth)) = self.transforms.project(self.scene.position(v)) {
+                    let radius = self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX + 3.0;
+                    self.painter
+                        .circle_stroke(pos, radius.max(5.0), Stroke::new(2.0, colour));
+                }
+            }
+            Pick::Edge(e) => {
+                if let Some((a, b)) = self.scene.drawn_arrow(e as usize, &self.sizes)
+                    && let (Some((pa, _)), Some((pb, _))) =
+                        (self.transforms.project(a), self.transforms.project(b))
+                {
+                    self.painter
+                        .line_segment([pa, pb], Stroke::new(5.0, colour.gamma_multiply(0.45)));
+                }
+            }
+            Pick::Face(f) => {
+                let Some(face) = self.scene.geometry.faces.get(f as usize) else {
+                    return;
+                };
+                if face.len() > 256 {
+                    return;
+                }
+                let points: Option<Vec<Pos2>> = face
+                    .iter()
+                    .map(|&v| {
+                        self.transforms
+                            .project(self.scene.position(v))
+                            .map(|(p, _)| p)
+                    })
+                    .collect();
+                if let Some(mut points) = points
+                    && points.len() >= 2
+                {
+                    if let Some(&first) = points.first() {
+                        points.push(first);
+                    }
+                    self.painter
+                        .add(egui::Shape::line(points, Stroke::new(2.0, colour)));
+                }
+            }
+        }
+    }
+
+    /// Comparison pointers: an arrow towards each target; a second pointer
+    /// at the same element comes from the other side.
+    pub fn paint_pointers(&self) {
+        let mut seen: Vec<Pick> = Vec::new();
+        for pointer in &self.styles.pointers {
+            let nth = seen.iter().filter(|&&p| p == pointer.target).count();
+            seen.push(pointer.target);
+            let Some(world) = self.scene.anchor(pointer.target) else {
+                continue;
+            };
+            let Some((pos, depth)) = self.transforms.project(world) else {
+                continue;
+            };
+            if !self.viewport().contains(pos) {
+                continue;
+            }
+            let gap = match pointer.target {
+                Pick::Vertex(_) => self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX + 3.0,
+                Pick::Edge(_) | Pick::Face(_) => 4.0,
+            };
+            // From the lower left, then the lower right, then around.
+            let angle = std::f32::consts::FRAC_PI_4 * (3.0 - 2.0 * nth as f32);
+            let direction = Vec2::angled(angle);
+            let tip = pos + direction * gap;
+            let tail = tip + direction * 40.0;
+            paint_arrow(
+                self.painter,
+                tail,
+                tip,
+                pointer.colour,
+                self.palette.background,
+            );
+        }
+    }
+
+    /// The axis letters at the axis tips.
+    pub fn paint_axis_letters(&self) {
+        for (world, letter, colour) in axes::letters(self.scene, &self.palette) {
+            if let Some((pos, _)) = self.transforms.project(world)
+                && self.viewport().contains(pos)
+            {
+                self.painter.text(
+                    pos,
+                    egui::Align2::CENTER_CENTER,
+                    letter,
+                    FontId::proportional(14.0),
+                    colour,
+                );
+            }
+        }
+    }
+}
+
+/// A thick arrow with an outline in `halo` so it reads on any background.
+fn paint_arrow(painter: &Painter, tail: Pos2, tip: Pos2, colour: Color32, halo: Color32) {
+    let along = (tip - tail).normalized();
+    let side = along.rot90();
+    let head_base = tip - along * 13.0;
+    let head = vec![tip, head_base + side * 7.0, head_base - side * 7.0];
+    painter.line_segment([tail, head_base], Stroke::new(6.0, halo));
+    painter.add(egui::Shape::convex_polygon(
+        head.clone(),
+        halo,
+        Stroke::new(2.5, halo),
+    ));
+    painter.line_segment([tail, head_base], Stroke::new(3.5, colour));
+    painter.add(egui::Shape::convex_polygon(head, colour, Stroke::NONE));
+}
+
+/// A coarse grid of screen cells taken by labels, to skip overlapping ones.
+struct Occupancy {
+    cell: f32,
+    cells: HashSet<(i32, i32)>,
+}
+
+impl Occupancy {
+    fn new(font_size: f32) -> Self {
+        Self {
+            cell: (font_size * 1.2).max(4.0),
+            cells: HashSet::new(),
+        }
+    }
+
+    fn cells_of(&self, rect: Rect) -> impl Iterator<Item = (i32, i32)> + use<> {
+        let cell = self.cell;
+        let to_cell = move |x: f32| (x / cell).floor() as i32;
+        let (x0, x1) = (to_cell(rect.min.x), to_cell(rect.max.x));
+        let (y0, y1) = (to_cell(rect.min.y), to_cell(rect.max.y));
+        (x0..=x1).flat_map(move |x| (y0..=y1).map(move |y| (x, y)))
+    }
+
+    fn is_free(&self, rect: Rect) -> bool {
+        self.cells_of(rect.shrink(1.0))
+            .all(|c| !self.cells.contains(&c))
+    }
+
+    fn claim(&mut self, rect: Rect) {
+        let cells: Vec<_> = self.cells_of(rect.shrink(1.0)).collect();
+        self.cells.extend(cells);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use egui::pos2;
+
+    use super::*;
+
+    #[test]
+    fn occupancy_rejects_overlaps() {
+        let mut grid = Occupancy::new(12.0);
+        let a = Rect::from_min_size(pos2(0.0, 0.0), vec2(30.0, 15.0));
+        assert!(grid.is_free(a));
+        grid.claim(a);
+        assert!(!grid.is_free(a.translate(vec2(5.0, 0.0))));
+        assert!(grid.is_free(a.translate(vec2(100.0, 0.0))));
+    }
+}

@@ -1,0 +1,109 @@
+//! Face orientation marks: a small curved arrow in each face turning
+//! counter-clockwise about its normal, the order its vertices are listed in.
+
+use std::f32::consts::{PI, TAU};
+
+use super::gpu::{MarkInstance, PipelineFactory, PipelineSpec};
+use super::scene::Scene;
+
+const SHADER: &str = concat!(
+    include_str!("shaders/common.wgsl"),
+    include_str!("shaders/orientation.wgsl")
+);
+
+const ARC_SEGMENTS: usize = 20;
+/// The arc runs from this angle for `ARC_SPAN` radians, counter-clockwise.
+const ARC_START: f32 = 0.35 * PI;
+const ARC_SPAN: f32 = 1.45 * PI;
+const WIDTH: f32 = 0.16;
+const HEAD_WIDTH: f32 = 0.42;
+const HEAD_LENGTH: f32 = 0.5;
+
+/// The unit mark (radius 1) as a triangle list in its own plane.
+pub fn template() -> Vec<[f32; 2]> {
+    let point = |angle: f32, radius: f32| {
+        let (sin, cos) = angle.sin_cos();
+        [cos * radius, sin * radius]
+    };
+    let (inner, outer) = (1.0 - WIDTH * 0.5, 1.0 + WIDTH * 0.5);
+    let mut out = Vec::with_capacity(ARC_SEGMENTS * 6 + 3);
+    for i in 0..ARC_SEGMENTS {
+        let a0 = ARC_START + ARC_SPAN * i as f32 / ARC_SEGMENTS as f32;
+        let a1 = ARC_START + ARC_SPAN * (i + 1) as f32 / ARC_SEGMENTS as f32;
+        let (p0, p1, q0, q1) = (
+            point(a0, inner),
+            point(a1, inner),
+            point(a0, outer),
+            point(a1, outer),
+        );
+        out.extend([p0, q0, q1, p0, q1, p1]);
+    }
+    // Head at the end of the arc, pointing along the counter-clockwise tangent.
+    let end = ARC_START + ARC_SPAN;
+    let tip_angle = end + HEAD_LENGTH;
+    out.extend([
+        point(end, 1.0 - HEAD_WIDTH * 0.5),
+        point(end, 1.0 + HEAD_WIDTH * 0.5),
+        point(tip_angle.min(end + TAU), 1.0),
+    ]);
+    out
+}
+
+/// One mark per face with room for it, scaled to fit inside the face.
+pub fn instances(scene: &Scene) -> Vec<MarkInstance> {
+    let mut out = Vec::with_capacity(scene.face_count());
+    for (f, face) in scene.geometry.faces.iter().enumerate() {
+        let (Some(&radius), Some(&normal), Some(&center)) = (
+            scene.orientation_radius.get(f),
+            scene.face_normals.get(f),
+            scene.face_centroids.get(f),
+        ) else {
+            continue;
+        };
+        let Some(&first) = face.first() else {
+            continue;
+        };
+        if radius <= 0.0 {
+            continue;
+        }
+        let toward_first = scene.position(first) - center;
+        let u = (toward_first - normal * toward_first.dot(normal)).normalize_or_zero();
+        if u == glam::Vec3::ZERO {
+            continue;
+        }
+        // v = n × u, so increasing angle turns counter-clockwise about n.
+        let v = normal.cross(u);
+        out.push(MarkInstance {
+            center: center.to_array(),
+            u: (u * radius).to_array(),
+            v: (v * radius).to_array(),
+        });
+    }
+    out
+}
+
+pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
+    let shader = factory.shader("view3d orientation", SHADER);
+    let template = wgpu::vertex_attr_array![0 => Float32x2];
+    let instance = wgpu::vertex_attr_array![1 => Float32x3, 2 => Float32x3, 3 => Float32x3];
+    factory.create(&PipelineSpec {
+        label: "view3d orientation",
+        shader: &shader,
+        vertex_entry: "vs_orientation",
+        fragment_entry: "fs_orientation",
+        buffers: &[
+            Some(wgpu::VertexBufferLayout {
+                array_stride: 8,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &template,
+            }),
+            Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<MarkInstance>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &instance,
+            }),
+        ],
+        transparent: false,
+        depth_bias: false,
+    })
+}

@@ -1,0 +1,278 @@
+//! What the view derives from a mesh once, when it is set: bounds, face
+//! centroids and normals, the triangulation, where each arrow is drawn and
+//! the element sizes. Everything else (GPU buffers, picking, labels) reads
+//! this.
+
+use glam::Vec3;
+
+use super::MeshGeometry;
+
+/// How far a half-edge arrow is pulled from its edge towards its face's
+/// centroid, as a fraction of each end's distance to that centroid.
+pub const HALF_EDGE_INSET: f32 = 0.14;
+
+/// The mesh with everything derived from it.
+pub struct Scene {
+    pub geometry: MeshGeometry,
+    /// Center and radius of a sphere holding every vertex.
+    pub center: Vec3,
+    pub radius: f32,
+    /// The mean edge length: the unit that vertex and arrow sizes scale with.
+    pub unit: f32,
+    pub face_centroids: Vec<Vec3>,
+    /// Unit normals by Newell's method (zero for a degenerate face).
+    pub face_normals: Vec<Vec3>,
+    /// Where each arrow starts and ends before the ends are pulled back from
+    /// the vertex spheres: on the edge for a winged edge, inset into its face
+    /// for a half-edge.
+    pub arrow_starts: Vec<Vec3>,
+    pub arrow_ends: Vec<Vec3>,
+    /// Fan triangulation: vertex ids of each triangle and its face.
+    pub triangles: Vec<[u32; 3]>,
+    pub triangle_faces: Vec<u32>,
+    /// Face `f` owns triangles `face_triangle_start[f]..face_triangle_start[f + 1]`.
+    pub face_triangle_start: Vec<u32>,
+    /// Radius of each face's orientation mark (0 where it has no room).
+    pub orientation_radius: Vec<f32>,
+}
+
+/// Sizes in world units for one frame (they follow the mesh scale).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sizes {
+    pub vertex_radius: f32,
+    pub shaft_radius: f32,
+    pub head_radius: f32,
+    pub head_length: f32,
+}
+
+impl Sizes {
+    /// Extra thickness of highlighted elements.
+    pub const EMPHASIS_VERTEX: f32 = 1.45;
+    pub const EMPHASIS_EDGE: f32 = 1.6;
+}
+
+impl Scene {
+    pub fn new(geometry: MeshGeometry) -> Self {
+        let position = |v: u32| -> Vec3 {
+            geometry
+                .positions
+                .get(v as usize)
+                .copied()
+                .filter(|p| p.is_finite())
+                .unwrap_or(Vec3::ZERO)
+        };
+
+        // Bounds.
+        let (center, radius) = if geometry.positions.is_empty() {
+            (Vec3::ZERO, 1.0)
+        } else {
+            let (mut min, mut max) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+            for p in geometry.positions.iter().filter(|p| p.is_finite()) {
+                min = min.min(*p);
+                max = max.max(*p);
+            }
+            if min.is_finite() && max.is_finite() {
+                let center = (min + max) * 0.5;
+                let radius = geometry
+                    .positions
+                    .iter()
+                    .filter(|p| p.is_finite())
+                    .map(|p| p.distance(center))
+                    .fold(0.0_f32, f32::max);
+                (center, if radius > 1e-12 { radius } else { 1.0 })
+            } else {
+                (Vec3::ZERO, 1.0)
+            }
+        };
+
+        // Faces: centroid, normal, fan triangulation, room for a mark.
+        let face_count = geometry.faces.len();
+        let mut face_centroids = Vec::with_capacity(face_count);
+        let mut face_normals = Vec::with_capacity(face_count);
+        let mut orientation_radius = Vec::with_capacity(face_count);
+        let mut triangles = Vec::new();
+        let mut triangle_faces = Vec::new();
+        let mut face_triangle_start = Vec::with_capacity(face_count + 1);
+        face_triangle_start.push(0_u32);
+        for (f, face) in geometry.faces.iter().enumerate() {
+            let corners: Vec<Vec3> = face.iter().map(|&v| position(v)).collect();
+            let centroid = if corners.is_empty() {
+                Vec3::ZERO
+            } else {
+                corners.iter().copied().sum::<Vec3>() / corners.len() as f32
+            };
+            let mut newell = Vec3::ZERO;
+            for (i, a) in corners.iter().enumerate() {
+                let b = corners[(i + 1) % corners.len()];
+                newell += (*a - centroid).cross(b - centroid);
+            }
+            let normal = newell.normalize_or_zero();
+            face_centroids.push(centroid);
+            face_normals.push(normal);
+            let room = (0..corners.len())
+                .map(|i| {
+                    point_segment_distance(centroid, corners[i], corners[(i + 1) % corners.len()])
+                })
+                .fold(f32::INFINITY, f32::min);
+            orientation_radius.push(if normal == Vec3::ZERO || !room.is_finite() {
+                0.0
+            } else {
+                room * 0.42
+            });
+            if face.len() >= 3 {
+                let face_id = u32::try_from(f).unwrap_or(u32::MAX);
+                for i in 1..face.len() - 1 {
+                    triangles.push([face[0], face[i], face[i + 1]]);
+                    triangle_faces.push(face_id);
+                }
+            }
+            face_triangle_start.push(u32::try_from(triangles.len()).unwrap_or(u32::MAX));
+        }
+
+        // Arrows.
+        let mut arrow_starts = Vec::with_capacity(geometry.edges.len());
+        let mut arrow_ends = Vec::with_capacity(geometry.edges.len());
+        let mut length_sum = 0.0_f64;
+        for edge in &geometry.edges {
+            let (a, b) = (position(edge.start), position(edge.end));
+            length_sum += f64::from(a.distance(b));
+            let (start, end) = if geometry.half_edges {
+                let own = edge.face.and_then(|f| face_centroids.get(f as usize));
+                let pair_face = edge
+                    .pair
+                    .and_then(|p| geometry.edges.get(p as usize))
+                    .and_then(|p| p.face)
+                    .and_then(|f| face_centroids.get(f as usize));
+                match (own, pair_face) {
+                    (Some(c), _) => (
+                        a + (*c - a) * HALF_EDGE_INSET,
+                        b + (*c - b) * HALF_EDGE_INSET,
+                    ),
+                    // A boundary half-edge sits outside, mirrored from its pair.
+                    (None, Some(c)) => (
+                        a - (*c - a) * HALF_EDGE_INSET,
+                        b - (*c - b) * HALF_EDGE_INSET,
+                    ),
+                    (None, None) => (a, b),
+                }
+            } else {
+                (a, b)
+            };
+            arrow_starts.push(start);
+            arrow_ends.push(end);
+        }
+        let mut unit = if geometry.edges.is_empty() {
+            0.0
+        } else {
+            (length_sum / geometry.edges.len() as f64) as f32
+        };
+        if !(unit.is_finite() && unit > radius * 1e-5) {
+            unit = radius * 0.2;
+        }
+
+        Self {
+            geometry,
+            center,
+            radius,
+            unit,
+            face_centroids,
+            face_normals,
+            arrow_starts,
+            arrow_ends,
+            triangles,
+            triangle_faces,
+            face_triangle_start,
+            orientation_radius,
+        }
+    }
+
+    /// Vertex position, or the origin for an id out of range.
+    pub fn position(&self, v: u32) -> Vec3 {
+        self.geometry
+            .positions
+            .get(v as usize)
+            .copied()
+            .filter(|p| p.is_finite())
+            .unwrap_or(Vec3::ZERO)
+    }
+
+    /// Element sizes at a mesh scale.
+    pub fn sizes(&self, mesh_scale: f32) -> Sizes {
+        let scale = if mesh_scale.is_finite() {
+            mesh_scale.clamp(0.05, 20.0)
+        } else {
+            1.0
+        } * self.unit;
+        Sizes {
+            vertex_radius: 0.085 * scale,
+            shaft_radius: 0.016 * scale,
+            head_radius: 0.042 * scale,
+            head_length: 0.15 * scale,
+        }
+    }
+
+    /// Fraction of the vertex radius by which arrow ends are pulled back: a
+    /// winged edge runs between the spheres' surfaces; a half-edge is already
+    /// inset, so only a little.
+    pub fn arrow_gap(&self) -> f32 {
+        if self.geometry.half_edges { 0.3 } else { 1.0 }
+    }
+
+    /// The drawn arrow of edge `e` after its ends are pulled back, as the
+    /// shader does it.
+    pub fn drawn_arrow(&self, e: usize, sizes: &Sizes) -> Option<(Vec3, Vec3)> {
+        let (a, b) = (*self.arrow_starts.get(e)?, *self.arrow_ends.get(e)?);
+        let length = a.distance(b);
+        if length <= 0.0 {
+            return Some((a, b));
+        }
+        let dir = (b - a) / length;
+        let gap = (sizes.vertex_radius * self.arrow_gap()).min(0.3 * length);
+        Some((a + dir * gap, b - dir * gap))
+    }
+
+    /// Where an element's label and pointer attach, in world space.
+    pub fn anchor(&self, pick: super::Pick) -> Option<Vec3> {
+        match pick {
+            super::Pick::Vertex(v) => {
+                self.geometry.positions.get(v as usize)?;
+                Some(self.position(v))
+            }
+            super::Pick::Edge(e) => {
+                let (a, b) = (
+                    *self.arrow_starts.get(e as usize)?,
+                    *self.arrow_ends.get(e as usize)?,
+                );
+                // Half-edge labels sit towards the end vertex so both labels of
+                // a pair show.
+                let t = if self.geometry.half_edges { 0.64 } else { 0.5 };
+                Some(a.lerp(b, t))
+            }
+            super::Pick::Face(f) => self.face_centroids.get(f as usize).copied(),
+        }
+    }
+
+    pub fn vertex_count(&self) -> usize {
+        self.geometry.positions.len()
+    }
+
+    pub fn edge_count(&self) -> usize {
+        self.geometry.edges.len()
+    }
+
+    pub fn face_count(&self) -> usize {
+        self.geometry.faces.len()
+    }
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+pub fn point_segment_distance(p: Vec3, a: Vec3, b: Vec3) -> f32 {
+    let ab = b - a;
+    let length_squared = ab.length_squared();
+    let t = if length_squared > 0.0 {
+        ((p - a).dot(ab) / length_squared).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + ab * t)
+}

@@ -1,0 +1,69 @@
+// Shared by every 3D view shader: the per-frame uniform, lighting and the
+// conversion to the render target.
+
+struct Frame {
+    clip_from_world: mat4x4<f32>,
+    // World position of the eye (w unused).
+    eye: vec4<f32>,
+    // Unit direction towards the light, world space (w unused).
+    light: vec4<f32>,
+    // Vertex radius, arrow shaft radius, arrow head radius, arrow head length.
+    sizes: vec4<f32>,
+    // x: 1 when the target is sRGB (colours are converted to linear),
+    // y: how much of the vertex radius arrow ends are pulled back,
+    // z: lift of orientation marks off their face, w: unused.
+    params: vec4<f32>,
+    orientation_colour: vec4<f32>,
+};
+
+@group(0) @binding(0) var<uniform> frame: Frame;
+
+// Output of the lit (sphere and arrow) vertex shaders.
+struct LitOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) colour: vec4<f32>,
+};
+
+fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
+    let low = c / 12.92;
+    let high = pow((c + vec3<f32>(0.055)) / 1.055, vec3<f32>(2.4));
+    return select(high, low, c <= vec3<f32>(0.04045));
+}
+
+// Two-sided Blinn-Phong with a light over the viewer's shoulder; `ambient`
+// is how bright the unlit side stays.
+fn shade(base: vec3<f32>, normal: vec3<f32>, world: vec3<f32>, ambient: f32) -> vec3<f32> {
+    let to_eye = normalize(frame.eye.xyz - world);
+    var n = to_eye;
+    if dot(normal, normal) > 1e-20 {
+        n = normalize(normal);
+    }
+    if dot(n, to_eye) < 0.0 {
+        n = -n;
+    }
+    let diffuse = max(dot(n, frame.light.xyz), 0.0);
+    let half_vector = normalize(frame.light.xyz + to_eye);
+    let specular = pow(max(dot(n, half_vector), 0.0), 48.0) * 0.16;
+    return base * (ambient + (1.0 - ambient) * diffuse) + vec3<f32>(specular);
+}
+
+// Premultiplied colour for the target (egui blends premultiplied).
+fn to_target(rgb: vec3<f32>, alpha: f32) -> vec4<f32> {
+    var c = clamp(rgb, vec3<f32>(0.0), vec3<f32>(1.0));
+    if frame.params.x > 0.5 {
+        c = srgb_to_linear(c);
+    }
+    return vec4<f32>(c * alpha, alpha);
+}
+
+// A position no triangle can be rasterised at (outside the depth range).
+fn culled() -> vec4<f32> {
+    return vec4<f32>(0.0, 0.0, -2.0, 1.0);
+}
+
+@fragment
+fn fs_lit(in: LitOut) -> @location(0) vec4<f32> {
+    return to_target(shade(in.colour.rgb, in.normal, in.world, 0.42), 1.0);
+}

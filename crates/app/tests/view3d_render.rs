@@ -1,0 +1,578 @@
+//! Renders the 3D view offscreen, through egui and `egui_wgpu` exactly as the
+//! app does (paint callback, `Depth24Plus` attachment), and writes PNGs to
+//! `target/view3d-renders/` (under `CARGO_TARGET_DIR` when set) to be looked
+//! at. Checks a few pixels against CPU projections so the GPU and the picking
+//! agree on where things are.
+//!
+//! Needs a wgpu adapter; on a machine without one (no GPU and no lavapipe)
+//! the tests report that and pass.
+
+#![allow(clippy::unwrap_used)]
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Instant;
+
+use edgewise_app::view3d::{
+    Camera, DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, View3d, ViewOptions,
+    ViewResponse,
+};
+use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
+use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
+use egui::{Color32, Pos2, Rect, Vec2};
+use glam::Vec3;
+
+const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+fn render_state() -> Option<RenderState> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN | wgpu::Backends::GL,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter =
+        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+            .ok()?;
+    eprintln!("adapter: {:?}", adapter.get_info());
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        required_limits:
+            wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
+        ..Default::default()
+    }))
+    .ok()?;
+    let renderer = egui_wgpu::Renderer::new(
+        &device,
+        FORMAT,
+        egui_wgpu::RendererOptions {
+            msaa_samples: 1,
+            depth_stencil_format: egui_wgpu::depth_format_from_bits(24, 0),
+            dithering: false,
+            predictable_texture_filtering: false,
+        },
+    );
+    Some(RenderState {
+        adapter,
+        available_adapters: Vec::new(),
+        instance,
+        device,
+        queue,
+        target_format: FORMAT,
+        renderer: Arc::new(egui::mutex::RwLock::new(renderer)),
+    })
+}
+
+fn out_dir() -> PathBuf {
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../target"));
+    let dir = target.join("view3d-renders");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// An RGBA image.
+struct Image {
+    width: u32,
+    height: u32,
+    pixels: Vec<u8>,
+}
+
+impl Image {
+    fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
+        let i = ((y * self.width + x) * 4) as usize;
+        [
+            self.pixels[i],
+            self.pixels[i + 1],
+            self.pixels[i + 2],
+            self.pixels[i + 3],
+        ]
+    }
+
+    /// Whether any pixel within `radius` of (x, y) satisfies `test`.
+    fn any_near(&self, at: Pos2, radius: i32, test: impl Fn([u8; 4]) -> bool) -> bool {
+        (-radius..=radius).any(|dy| {
+            (-radius..=radius).any(|dx| {
+                let (x, y) = (at.x as i32 + dx, at.y as i32 + dy);
+                x >= 0
+                    && y >= 0
+                    && (x as u32) < self.width
+                    && (y as u32) < self.height
+                    && test(self.pixel(x as u32, y as u32))
+            })
+        })
+    }
+
+    fn save(&self, name: &str) -> PathBuf {
+        let path = out_dir().join(name);
+        let file = std::fs::File::create(&path).unwrap();
+        let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), self.width, self.height);
+        encoder.set_color(png::ColorType::Rgba);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder
+            .write_header()
+            .unwrap()
+            .write_image_data(&self.pixels)
+            .unwrap();
+        eprintln!("wrote {}", path.display());
+        path
+    }
+}
+
+/// Renders a frame of `ui` at `size` pixels and returns the picture.
+struct Harness {
+    render_state: RenderState,
+    ctx: egui::Context,
+    size: [u32; 2],
+    pixels_per_point: f32,
+}
+
+impl Harness {
+    fn new(render_state: RenderState, size: [u32; 2]) -> Self {
+        Self {
+            render_state,
+            ctx: egui::Context::default(),
+            size,
+            pixels_per_point: 1.0,
+        }
+    }
+
+    fn screen(&self) -> Rect {
+        Rect::from_min_size(
+            Pos2::ZERO,
+            Vec2::new(self.size[0] as f32, self.size[1] as f32) / self.pixels_per_point,
+        )
+    }
+
+    fn frame(&self, events: Vec<egui::Event>, mut ui: impl FnMut(&mut egui::Ui)) -> Image {
+        let raw = egui::RawInput {
+            screen_rect: Some(self.screen()),
+            events,
+            ..Default::default()
+        };
+        let mut output = self.ctx.run_ui(raw, |root| ui(root));
+        let jobs = self
+            .ctx
+            .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
+        let rs = &self.render_state;
+        let screen = ScreenDescriptor {
+            size_in_pixels: self.size,
+            pixels_per_point: output.pixels_per_point,
+        };
+        let mut renderer = rs.renderer.write();
+        for (id, deltas) in &output.textures_delta.set {
+            for delta in deltas {
+                renderer.update_texture(&rs.device, &rs.queue, *id, delta);
+            }
+        }
+        let mut encoder = rs
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor::default());
+        let user_commands =
+            renderer.update_buffers(&rs.device, &rs.queue, &mut encoder, &jobs, &screen);
+        let extent = wgpu::Extent3d {
+            width: self.size[0],
+            height: self.size[1],
+            depth_or_array_layers: 1,
+        };
+        let target = rs.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("target"),
+            size: extent,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let depth = rs.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("depth"),
+            size: extent,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Depth24Plus,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        });
+        let target_view = target.create_view(&wgpu::TextureViewDescriptor::default());
+        let depth_view = depth.create_view(&wgpu::TextureViewDescriptor::default());
+        {
+            let mut pass = encoder
+                .begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some("egui"),
+                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                        view: &target_view,
+                        resolve_target: None,
+                        depth_slice: None,
+                        ops: wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    })],
+                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                        view: &depth_view,
+                        depth_ops: Some(wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(1.0),
+                            store: wgpu::StoreOp::Discard,
+                        }),
+                        stencil_ops: None,
+                    }),
+                    timestamp_writes: None,
+                    occlusion_query_set: None,
+                    multiview_mask: None,
+                })
+                .forget_lifetime();
+            renderer.render(&mut pass, &jobs, &screen);
+        }
+        let bytes_per_row = (self.size[0] * 4).div_ceil(256) * 256;
+        let readback = rs.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: u64::from(bytes_per_row * self.size[1]),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &target,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &readback,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(bytes_per_row),
+                    rows_per_image: None,
+                },
+            },
+            extent,
+        );
+        rs.queue
+            .submit(user_commands.into_iter().chain([encoder.finish()]));
+        for id in &output.textures_delta.free {
+            renderer.free_texture(id);
+        }
+        output.textures_delta.clear();
+        drop(renderer);
+        readback
+            .slice(..)
+            .map_async(wgpu::MapMode::Read, |result| result.unwrap());
+        rs.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+        let mapped = readback.slice(..).get_mapped_range().unwrap();
+        let mut pixels = Vec::with_capacity((self.size[0] * self.size[1] * 4) as usize);
+        for row in 0..self.size[1] {
+            let start = (row * bytes_per_row) as usize;
+            pixels.extend_from_slice(&mapped[start..start + (self.size[0] * 4) as usize]);
+        }
+        Image {
+            width: self.size[0],
+            height: self.size[1],
+            pixels,
+        }
+    }
+
+    /// Runs the view for a couple of frames (the first uploads and frames)
+    /// and returns the last picture and response.
+    fn show(
+        &self,
+        view: &mut View3d,
+        styles: &SceneStyles,
+        options: &ViewOptions,
+        events: Vec<egui::Event>,
+    ) -> (Image, ViewResponse) {
+        let mut response = ViewResponse::default();
+        let _ = self.frame(Vec::new(), |ui| {
+            response = view.ui(ui, styles, options);
+        });
+        let image = self.frame(events, |ui| {
+            response = view.ui(ui, styles, options);
+        });
+        (image, response)
+    }
+}
+
+fn geometry(polygons: &Polygons, structure: Structure) -> MeshGeometry {
+    let (mesh, _) = Mesh::build(polygons, structure).unwrap();
+    MeshGeometry::from_mesh(&mesh)
+}
+
+fn cube() -> Polygons {
+    let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    Polygons::from_faces(
+        vec![
+            p(-1.0, -1.0, -1.0),
+            p(1.0, -1.0, -1.0),
+            p(1.0, 1.0, -1.0),
+            p(-1.0, 1.0, -1.0),
+            p(-1.0, -1.0, 1.0),
+            p(1.0, -1.0, 1.0),
+            p(1.0, 1.0, 1.0),
+            p(-1.0, 1.0, 1.0),
+        ],
+        [
+            [0, 3, 2, 1],
+            [4, 5, 6, 7],
+            [0, 1, 5, 4],
+            [2, 3, 7, 6],
+            [1, 2, 6, 5],
+            [0, 4, 7, 3],
+        ],
+    )
+}
+
+/// An open 3×2 grid of quads in the z = 0 plane (boundary half-edges
+/// outside).
+fn grid() -> Polygons {
+    let mut polygons = Polygons::new();
+    for j in 0..3 {
+        for i in 0..4 {
+            polygons.push_vertex(Vec3::new(i as f32, j as f32 * 0.9, 0.0));
+        }
+    }
+    for j in 0..2_u32 {
+        for i in 0..3_u32 {
+            let a = j * 4 + i;
+            polygons.push_face(&[a, a + 1, a + 5, a + 4]);
+        }
+    }
+    polygons
+}
+
+fn styles_for(geometry: &MeshGeometry) -> SceneStyles {
+    SceneStyles {
+        generation: 1,
+        vertices: vec![ElementStyle::default(); geometry.positions.len()],
+        edges: vec![ElementStyle::default(); geometry.edges.len()],
+        faces: vec![ElementStyle::default(); geometry.faces.len()],
+        pointers: Vec::new(),
+    }
+}
+
+const YELLOW: Color32 = Color32::from_rgb(232, 196, 40);
+const GREEN: Color32 = Color32::from_rgb(56, 168, 72);
+const PURPLE: Color32 = Color32::from_rgb(150, 70, 190);
+const LIGHT_BLUE: Color32 = Color32::from_rgb(80, 180, 230);
+
+fn is_near_colour(pixel: [u8; 4], colour: Color32, tolerance: i32) -> bool {
+    let [r, g, b, _] = colour.to_array();
+    (i32::from(pixel[0]) - i32::from(r)).abs() <= tolerance
+        && (i32::from(pixel[1]) - i32::from(g)).abs() <= tolerance
+        && (i32::from(pixel[2]) - i32::from(b)).abs() <= tolerance
+}
+
+#[test]
+fn winged_edge_cube_with_highlights_labels_and_pointers() {
+    let Some(rs) = render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [900, 640]);
+    let geometry = geometry(&cube(), Structure::WingedEdge);
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    let mut styles = styles_for(&geometry);
+    for s in &mut styles.vertices {
+        s.faded = true;
+    }
+    for s in &mut styles.edges {
+        s.faded = true;
+    }
+    styles.faces[1].colour = Some(YELLOW);
+    styles.edges[3] = ElementStyle {
+        colour: Some(GREEN),
+        faded: false,
+        label: Some("3: Left Predecessor".to_owned()),
+    };
+    styles.vertices[6] = ElementStyle {
+        colour: Some(PURPLE),
+        faded: false,
+        label: Some("6: v".to_owned()),
+    };
+    styles.pointers = vec![
+        Pointer {
+            target: Pick::Edge(3),
+            colour: LIGHT_BLUE,
+        },
+        Pointer {
+            target: Pick::Edge(3),
+            colour: LIGHT_BLUE,
+        },
+    ];
+    let options = ViewOptions {
+        show_axes: true,
+        ..ViewOptions::default()
+    };
+    let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    image.save("winged_cube.png");
+
+    // The purple vertex is drawn where the CPU projects it.
+    let transforms = view.transforms(harness.screen());
+    let (at, _) = transforms.project(geometry.positions[6]).unwrap();
+    assert!(
+        image.any_near(at, 3, |p| is_near_colour(p, PURPLE, 70)),
+        "no purple near {at:?}: {:?}",
+        image.pixel(at.x as u32, at.y as u32)
+    );
+    // Clicking there picks that vertex.
+    assert_eq!(
+        view.pick_at(harness.screen(), at, &options),
+        Some(Pick::Vertex(6))
+    );
+}
+
+#[test]
+fn half_edge_grid_with_all_ids_dark() {
+    let Some(rs) = render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [900, 640]);
+    let geometry = geometry(&grid(), Structure::HalfEdge);
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    view.set_camera(Camera {
+        yaw: 0.25,
+        pitch: 0.35,
+        ..view.camera()
+    });
+    let mut styles = styles_for(&geometry);
+    styles.edges[0].colour = Some(GREEN);
+    styles.faces[4].colour = Some(YELLOW);
+    let options = ViewOptions {
+        draw_ids: DrawIds::Always,
+        show_orientation: true,
+        dark: true,
+        ..ViewOptions::default()
+    };
+    let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    image.save("half_edge_grid_dark.png");
+
+    // The green half-edge is drawn off its edge, inside its face.
+    let transforms = view.transforms(harness.screen());
+    let anchor = view.anchor(Pick::Edge(0)).unwrap();
+    let (at, _) = transforms.project(anchor).unwrap();
+    assert!(image.any_near(at, 12, |p| is_near_colour(p, GREEN, 80)));
+}
+
+#[test]
+fn solid_tetrahedron_with_hover() {
+    let Some(rs) = render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [640, 480]);
+    let polygons = Polygons::from_triangles(
+        vec![
+            Vec3::new(1.0, 1.0, 1.0),
+            Vec3::new(-1.0, -1.0, 1.0),
+            Vec3::new(-1.0, 1.0, -1.0),
+            Vec3::new(1.0, -1.0, -1.0),
+        ],
+        &[[0, 1, 3], [0, 2, 1], [0, 3, 2], [1, 2, 3]],
+    );
+    let geometry = geometry(&polygons, Structure::HalfEdge);
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    let styles = styles_for(&geometry);
+    let options = ViewOptions {
+        solid_faces: true,
+        show_orientation: true,
+        mesh_scale: 1.5,
+        ..ViewOptions::default()
+    };
+    // Hover the middle of the view: a face (or an edge in front of it).
+    let _ = harness.show(&mut view, &styles, &options, Vec::new());
+    let center = harness.screen().center() + Vec2::new(0.0, 40.0);
+    let (image, response) = harness.show(
+        &mut view,
+        &styles,
+        &options,
+        vec![egui::Event::PointerMoved(center)],
+    );
+    image.save("solid_tetrahedron_hover.png");
+    assert!(response.hovered.is_some(), "{response:?}");
+}
+
+#[test]
+fn torus_20k_faces() {
+    let Some(rs) = render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [900, 640]);
+    let started = Instant::now();
+    let geometry = geometry(&generate::torus(100, 100), Structure::HalfEdge);
+    let built = started.elapsed();
+    let mut view = View3d::new(Some(&rs));
+    let started = Instant::now();
+    view.set_geometry(geometry.clone(), true);
+    let prepared = started.elapsed();
+    let mut styles = styles_for(&geometry);
+    styles.faces[0].colour = Some(YELLOW);
+    let options = ViewOptions::default();
+    let started = Instant::now();
+    let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    let shown = started.elapsed();
+    image.save("torus_20k.png");
+    eprintln!(
+        "torus 20k faces: mesh {built:?}, set_geometry {prepared:?}, two frames on {:?} {shown:?}",
+        rs.adapter.get_info().name
+    );
+}
+
+#[test]
+#[ignore = "slow on a CPU rasterizer; run with --ignored to measure"]
+fn torus_200k_faces() {
+    let Some(rs) = render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [900, 640]);
+    let geometry = geometry(&generate::torus(400, 250), Structure::HalfEdge);
+    let mut view = View3d::new(Some(&rs));
+    let started = Instant::now();
+    view.set_geometry(geometry.clone(), true);
+    eprintln!("200k set_geometry: {:?}", started.elapsed());
+    let styles = styles_for(&geometry);
+    for options in [
+        ViewOptions::default(),
+        ViewOptions {
+            draw_ids: DrawIds::Always,
+            ..ViewOptions::default()
+        },
+    ] {
+        let started = Instant::now();
+        let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
+        eprintln!(
+            "200k two frames ({:?}): {:?}",
+            options.draw_ids,
+            started.elapsed()
+        );
+        image.save(&format!("torus_200k_{:?}.png", options.draw_ids).to_lowercase());
+    }
+    // CPU cost of one frame without drawing: the UI pass alone.
+    let ctx = egui::Context::default();
+    let mut headless = View3d::new(None);
+    headless.set_geometry(geometry, true);
+    for (label, pointer) in [("still", None), ("hover", Some(Pos2::new(450.0, 300.0)))] {
+        let started = Instant::now();
+        for i in 0..10 {
+            let events = pointer
+                .map(|p| vec![egui::Event::PointerMoved(p + Vec2::new(i as f32, 0.0))])
+                .unwrap_or_default();
+            let raw = egui::RawInput {
+                screen_rect: Some(harness.screen()),
+                events,
+                ..Default::default()
+            };
+            ctx.run_ui(raw, |ui| {
+                headless.ui(ui, &styles, &ViewOptions::default());
+            })
+            .drop_without_applying_deltas();
+        }
+        eprintln!(
+            "200k UI pass ({label}): {:?} per frame",
+            started.elapsed() / 10
+        );
+    }
+}
