@@ -5,11 +5,16 @@
 
 mod app;
 mod backend;
+mod document;
+pub mod samples;
+pub mod selection;
 pub mod state;
+mod tables;
+mod theme;
 pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-pub use app::EdgewiseApp;
+pub use app::{EdgewiseApp, parse_structure, structure_name};
 pub use backend::GraphicsBackend;

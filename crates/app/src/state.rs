@@ -5,6 +5,8 @@
 
 use serde::Serialize;
 
+use crate::selection::{ElementKind, ElementRef};
+
 /// A JSON-serialisable snapshot of what the app shows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct AppState {
@@ -14,4 +16,33 @@ pub struct AppState {
     pub backend: &'static str,
     /// Frames drawn so far; proves the render loop is alive.
     pub frames: u64,
+    /// The open mesh's name, or null before any mesh is open.
+    pub mesh: Option<String>,
+    /// "winged" or "half", or null before any mesh is open.
+    pub structure: Option<&'static str>,
+    pub counts: Counts,
+    /// The selected element, or null.
+    pub selection: Option<ElementRef>,
+    /// The selected element and every element it references.
+    pub highlights: Vec<HighlightState>,
+    /// The message of the last failed load or command, or null.
+    pub error: Option<String>,
+}
+
+/// Table sizes. In a winged-edge mesh `halfedges` is twice `edges`, the
+/// number of half-edges the same mesh would have.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Counts {
+    pub vertices: usize,
+    pub edges: usize,
+    pub faces: usize,
+    pub halfedges: usize,
+}
+
+/// One highlighted element and its role ('selected', 'left predecessor').
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct HighlightState {
+    pub kind: ElementKind,
+    pub id: u32,
+    pub role: String,
 }

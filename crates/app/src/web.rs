@@ -7,7 +7,12 @@
 
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
-use crate::EdgewiseApp;
+use edgewise_core::mesh::Structure;
+
+use crate::{
+    EdgewiseApp,
+    selection::{ElementKind, ElementRef},
+};
 
 /// The id of the canvas in index.html.
 const CANVAS_ID: &str = "edgewise_canvas";
@@ -71,7 +76,8 @@ async fn start_app() -> Result<(), String> {
     })
 }
 
-/// Defines `window.edgewise`: `version`, `backend` and `state()`.
+/// Defines `window.edgewise`. Commands return a Promise that resolves to
+/// null on success or to the error message, as the API documents.
 fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     let window = web_sys::window().ok_or("no window")?;
     let api = js_sys::Object::new();
@@ -80,17 +86,153 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     js_sys::Reflect::set(&api, &"version".into(), &edgewise_core::VERSION.into())?;
     js_sys::Reflect::set(&api, &"backend".into(), &backend.into())?;
 
-    let state_runner = runner.clone();
+    let r = runner.clone();
     let state = Closure::<dyn Fn() -> Result<JsValue, JsValue>>::new(move || {
-        let json = with_app(&state_runner, |app| serde_json::to_string(&app.state()))?
+        let json = with_app(&r, |app| serde_json::to_string(&app.state()))?
             .map_err(|err| JsValue::from_str(&err.to_string()))?;
         js_sys::JSON::parse(&json)
     });
-    // The API lives as long as the page, so the closure is handed to JS for good.
-    js_sys::Reflect::set(&api, &"state".into(), &state.into_js_value())?;
+    set_fn(&api, "state", &state.into_js_value())?;
+
+    let r = runner.clone();
+    let load_mesh = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+        move |text: JsValue, options: JsValue| {
+            let result = (|| {
+                let text = text
+                    .as_string()
+                    .ok_or("loadMesh(text, options): text must be a string")?;
+                let format = option_string(&options, "format")?;
+                let structure = structure_option(&options)?;
+                // Without a format the content decides (a pasted file has no name).
+                let name = format.map_or_else(|| "pasted".to_owned(), |f| format!("pasted.{f}"));
+                with_app(&r, |app| {
+                    let result = app.load_mesh(text.as_bytes(), &name, structure);
+                    app.request_repaint();
+                    result
+                })
+                .map_err(|err| js_error_text(&err))?
+            })();
+            settle(result)
+        },
+    );
+    set_fn(&api, "loadMesh", &load_mesh.into_js_value())?;
+
+    let r = runner.clone();
+    let load_sample = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+        move |name: JsValue, options: JsValue| {
+            let result = (|| {
+                let name = name
+                    .as_string()
+                    .ok_or("loadSample(name, options): name must be a string")?;
+                let structure = structure_option(&options)?;
+                with_app(&r, |app| {
+                    let result = app.load_sample(&name, structure);
+                    app.request_repaint();
+                    result
+                })
+                .map_err(|err| js_error_text(&err))?
+            })();
+            settle(result)
+        },
+    );
+    set_fn(&api, "loadSample", &load_sample.into_js_value())?;
+
+    let r = runner.clone();
+    let select = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+        move |kind: JsValue, id: JsValue| {
+            let result = (|| {
+                let kind = kind
+                    .as_string()
+                    .and_then(|k| ElementKind::parse(&k))
+                    .ok_or("select(kind, id): kind must be 'vertex', 'edge' or 'face'")?;
+                let id = id
+                    .as_f64()
+                    .filter(|id| id.fract() == 0.0 && *id >= 0.0 && *id <= f64::from(u32::MAX))
+                    .ok_or("select(kind, id): id must be a whole number from 0")?
+                    as u32;
+                with_app(&r, |app| {
+                    let result = app.select(Some(ElementRef { kind, id }));
+                    app.request_repaint();
+                    result
+                })
+                .map_err(|err| js_error_text(&err))?
+            })();
+            settle(result)
+        },
+    );
+    set_fn(&api, "select", &select.into_js_value())?;
+
+    let r = runner.clone();
+    let clear = Closure::<dyn Fn() -> js_sys::Promise>::new(move || {
+        let result = with_app(&r, |app| {
+            let result = app.select(None);
+            app.request_repaint();
+            result
+        })
+        .map_err(|err| js_error_text(&err))
+        .and_then(|r| r);
+        settle(result)
+    });
+    set_fn(&api, "clearSelection", &clear.into_js_value())?;
+
+    let r = runner.clone();
+    let set_structure = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |name: JsValue| {
+        let result = (|| {
+            let structure = name
+                .as_string()
+                .and_then(|n| crate::parse_structure(&n))
+                .ok_or("setStructure(name): name must be 'winged' or 'half'")?;
+            with_app(&r, |app| {
+                let result = app.switch_structure(structure);
+                app.request_repaint();
+                result
+            })
+            .map_err(|err| js_error_text(&err))?
+        })();
+        settle(result)
+    });
+    set_fn(&api, "setStructure", &set_structure.into_js_value())?;
 
     js_sys::Reflect::set(&window, &"edgewise".into(), &api)?;
     Ok(())
+}
+
+/// Puts a function on the API object. The API lives as long as the page, so
+/// closures are handed to JavaScript for good.
+fn set_fn(api: &js_sys::Object, name: &str, function: &JsValue) -> Result<(), JsValue> {
+    js_sys::Reflect::set(api, &name.into(), function).map(|_| ())
+}
+
+/// A Promise that resolves to null on success or to the error message.
+fn settle(result: Result<(), String>) -> js_sys::Promise {
+    js_sys::Promise::resolve(&match result {
+        Ok(()) => JsValue::NULL,
+        Err(message) => JsValue::from_str(&message),
+    })
+}
+
+/// `options[key]` as a string, if present.
+fn option_string(options: &JsValue, key: &str) -> Result<Option<String>, String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(None);
+    }
+    let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
+    if value.is_undefined() || value.is_null() {
+        return Ok(None);
+    }
+    value
+        .as_string()
+        .map(Some)
+        .ok_or_else(|| format!("option '{key}' must be a string"))
+}
+
+fn structure_option(options: &JsValue) -> Result<Option<Structure>, String> {
+    option_string(options, "structure")?
+        .map(|name| {
+            crate::parse_structure(&name)
+                .ok_or_else(|| format!("structure must be 'winged' or 'half', not '{name}'"))
+        })
+        .transpose()
 }
 
 /// Runs `f` on the app, or fails if the app has panicked or is busy drawing.

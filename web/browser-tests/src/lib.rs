@@ -93,10 +93,7 @@ impl Browser {
             "goog:chromeOptions".to_owned(),
             json!({ "binary": chromium, "args": args }),
         );
-        caps.insert(
-            "goog:loggingPrefs".to_owned(),
-            json!({ "browser": "ALL" }),
-        );
+        caps.insert("goog:loggingPrefs".to_owned(), json!({ "browser": "ALL" }));
 
         let webdriver = format!("http://127.0.0.1:{port}");
         let client = connect(&webdriver, caps).await?;
@@ -250,7 +247,11 @@ impl Browser {
     /// Takes a screenshot, saves it as screenshots/`name`.png for people to
     /// look at, and returns its pixels.
     pub async fn screenshot(&self, name: &str) -> anyhow::Result<Screenshot> {
-        let bytes = self.client.screenshot().await.context("screenshot failed")?;
+        let bytes = self
+            .client
+            .screenshot()
+            .await
+            .context("screenshot failed")?;
         let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("screenshots");
         std::fs::create_dir_all(&dir)?;
         let path = dir.join(format!("{name}.png"));
@@ -260,7 +261,10 @@ impl Browser {
 
     /// Closes the browser session.
     pub async fn close(self) -> anyhow::Result<()> {
-        self.client.close().await.context("cannot close the browser")
+        self.client
+            .close()
+            .await
+            .context("cannot close the browser")
     }
 }
 
@@ -335,13 +339,13 @@ impl WebDriverCompatibleCommand for BrowserLog {
         base_url: &url::Url,
         session_id: Option<&str>,
     ) -> Result<url::Url, url::ParseError> {
-        base_url.join(&format!("session/{}/se/log", session_id.unwrap_or_default()))
+        base_url.join(&format!(
+            "session/{}/se/log",
+            session_id.unwrap_or_default()
+        ))
     }
 
-    fn method_and_body(
-        &self,
-        _request_url: &url::Url,
-    ) -> (http::Method, Option<String>) {
+    fn method_and_body(&self, _request_url: &url::Url) -> (http::Method, Option<String>) {
         (
             http::Method::POST,
             Some(json!({ "type": "browser" }).to_string()),
@@ -376,10 +380,7 @@ impl WebDriverCompatibleCommand for Cdp {
     }
 }
 
-async fn connect(
-    webdriver: &str,
-    caps: serde_json::Map<String, Value>,
-) -> anyhow::Result<Client> {
+async fn connect(webdriver: &str, caps: serde_json::Map<String, Value>) -> anyhow::Result<Client> {
     // chromedriver needs a moment to start listening.
     let start = Instant::now();
     loop {

@@ -30,7 +30,10 @@ async fn app_starts_and_defines_its_api() -> anyhow::Result<()> {
 
     // The render loop is alive: frames keep coming.
     browser
-        .wait_for("window.edgewise.state().frames >= 2", Duration::from_secs(30))
+        .wait_for(
+            "window.edgewise.state().frames >= 2",
+            Duration::from_secs(30),
+        )
         .await?;
 
     // The loading message is gone once the app runs.
@@ -55,7 +58,10 @@ async fn the_page_shows_a_loading_message_until_the_app_runs() -> anyhow::Result
         .eval_async("fetch(location.href).then((r) => r.text())")
         .await?;
     let html = html.as_str().unwrap_or_default();
-    assert!(html.contains("id=\"edgewise_loading\""), "no loading element");
+    assert!(
+        html.contains("id=\"edgewise_loading\""),
+        "no loading element"
+    );
     assert!(html.contains("Loading Edgewise"), "no loading text");
     // Nothing is fetched from other hosts.
     assert!(!html.contains("http://") && !html.contains("https://"));
@@ -84,7 +90,10 @@ async fn a_wasm_file_that_fails_to_load_gives_a_clear_message() -> anyhow::Resul
     let loading = browser
         .eval("return document.getElementById('edgewise_loading') !== null;")
         .await?;
-    assert_eq!(loading, false, "the loading message stays up beside the error");
+    assert_eq!(
+        loading, false,
+        "the loading message stays up beside the error"
+    );
     let shot = browser.screenshot("wasm-blocked").await?;
     assert!(!shot.is_blank());
     browser.close().await

@@ -1,0 +1,122 @@
+//! The sample meshes of meshes/, built into the app so each is one click
+//! away, plus the generated 200k-face torus for scale.
+
+/// Where a sample's data comes from.
+pub enum SampleData {
+    /// A file from meshes/, read by its extension.
+    File {
+        file_name: &'static str,
+        bytes: &'static [u8],
+    },
+    /// A torus grid of `nu` × `nv` vertices, generated on demand (too big to ship).
+    Torus { nu: u32, nv: u32 },
+}
+
+/// One sample mesh.
+pub struct Sample {
+    /// The name used by the menu and `loadSample`: the file stem.
+    pub name: &'static str,
+    pub data: SampleData,
+}
+
+impl Sample {
+    const fn file(name: &'static str, file_name: &'static str, bytes: &'static [u8]) -> Self {
+        Self {
+            name,
+            data: SampleData::File { file_name, bytes },
+        }
+    }
+}
+
+/// Every sample, in menu order.
+pub const SAMPLES: &[Sample] = &[
+    Sample::file(
+        "annulus",
+        "annulus.htb",
+        include_bytes!("../../../meshes/annulus.htb"),
+    ),
+    Sample::file(
+        "cube",
+        "cube.htb",
+        include_bytes!("../../../meshes/cube.htb"),
+    ),
+    Sample::file(
+        "dodecahedron",
+        "dodecahedron.obj",
+        include_bytes!("../../../meshes/dodecahedron.obj"),
+    ),
+    Sample::file(
+        "double-torus",
+        "double-torus.obj",
+        include_bytes!("../../../meshes/double-torus.obj"),
+    ),
+    Sample::file(
+        "icosahedron",
+        "icosahedron.ply",
+        include_bytes!("../../../meshes/icosahedron.ply"),
+    ),
+    Sample::file(
+        "icosphere-20k",
+        "icosphere-20k.ply",
+        include_bytes!("../../../meshes/icosphere-20k.ply"),
+    ),
+    Sample::file(
+        "octahedron",
+        "octahedron.obj",
+        include_bytes!("../../../meshes/octahedron.obj"),
+    ),
+    Sample::file(
+        "open-square",
+        "open-square.wtb",
+        include_bytes!("../../../meshes/open-square.wtb"),
+    ),
+    Sample::file(
+        "quad-grid",
+        "quad-grid.obj",
+        include_bytes!("../../../meshes/quad-grid.obj"),
+    ),
+    Sample::file(
+        "quad-sphere-triangles",
+        "quad-sphere-triangles.obj",
+        include_bytes!("../../../meshes/quad-sphere-triangles.obj"),
+    ),
+    Sample::file(
+        "quad-sphere",
+        "quad-sphere.obj",
+        include_bytes!("../../../meshes/quad-sphere.obj"),
+    ),
+    Sample::file(
+        "sphere",
+        "sphere.obj",
+        include_bytes!("../../../meshes/sphere.obj"),
+    ),
+    Sample::file(
+        "square-pyramid",
+        "square-pyramid.obj",
+        include_bytes!("../../../meshes/square-pyramid.obj"),
+    ),
+    Sample::file(
+        "tetrahedron",
+        "tetrahedron.wtb",
+        include_bytes!("../../../meshes/tetrahedron.wtb"),
+    ),
+    Sample::file(
+        "torus",
+        "torus.obj",
+        include_bytes!("../../../meshes/torus.obj"),
+    ),
+    Sample::file(
+        "triangular-prism",
+        "triangular-prism.obj",
+        include_bytes!("../../../meshes/triangular-prism.obj"),
+    ),
+    Sample {
+        name: "torus-200k",
+        data: SampleData::Torus { nu: 316, nv: 316 },
+    },
+];
+
+/// The sample called `name`.
+pub fn find(name: &str) -> Option<&'static Sample> {
+    SAMPLES.iter().find(|s| s.name == name)
+}

@@ -1,0 +1,60 @@
+//! Colours and text styles: a calm light and dark theme, and the colour of
+//! each selection role.
+
+use egui::Color32;
+
+use crate::selection::Role;
+
+/// The app's visual theme.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Theme {
+    pub dark: bool,
+}
+
+impl Theme {
+    pub fn light() -> Self {
+        Self { dark: false }
+    }
+
+    pub fn dark() -> Self {
+        Self { dark: true }
+    }
+
+    /// Applies the theme to egui's visuals.
+    pub fn apply(&self, ctx: &egui::Context) {
+        let mut visuals = if self.dark {
+            egui::Visuals::dark()
+        } else {
+            egui::Visuals::light()
+        };
+        if !self.dark {
+            visuals.panel_fill = Color32::from_rgb(0xf4, 0xf3, 0xef);
+            visuals.window_fill = Color32::from_rgb(0xfa, 0xf9, 0xf6);
+            visuals.extreme_bg_color = Color32::from_rgb(0xfd, 0xfd, 0xfb);
+        }
+        ctx.set_visuals(visuals);
+    }
+
+    /// The colour of a selection role in the 3D view and the tables. Left-side
+    /// wings are greens, right-side wings purples, so a student can tell the
+    /// two faces' traversals apart at a glance.
+    pub fn role_colour(&self, role: Role) -> Color32 {
+        let (light, dark) = match role {
+            Role::Selected => ((0xd9, 0x48, 0x0f), (0xff, 0x87, 0x4d)),
+            Role::IncidentEdge => ((0x1c, 0x6d, 0xd0), (0x5c, 0xa8, 0xff)),
+            Role::StartVertex => ((0x0b, 0x7a, 0x75), (0x3f, 0xc1, 0xb8)),
+            Role::EndVertex => ((0x1c, 0x4f, 0xa0), (0x74, 0x9c, 0xf0)),
+            Role::LeftFace | Role::Face => ((0x2b, 0x8a, 0x3e), (0x69, 0xdb, 0x7c)),
+            Role::RightFace => ((0x86, 0x2e, 0x9c), (0xcc, 0x8b, 0xe8)),
+            Role::LeftPredecessor | Role::PredecessorEdge => {
+                ((0x5c, 0x94, 0x0d), (0xa9, 0xe3, 0x4b))
+            }
+            Role::LeftSuccessor | Role::SuccessorEdge => ((0x08, 0x7f, 0x5b), (0x38, 0xd9, 0xa9)),
+            Role::RightPredecessor => ((0xae, 0x3e, 0xc9), (0xe5, 0x99, 0xf7)),
+            Role::RightSuccessor => ((0x67, 0x41, 0xd9), (0xb1, 0x97, 0xfc)),
+            Role::PairEdge => ((0xc2, 0x25, 0x5c), (0xf7, 0x83, 0xac)),
+        };
+        let (r, g, b) = if self.dark { dark } else { light };
+        Color32::from_rgb(r, g, b)
+    }
+}

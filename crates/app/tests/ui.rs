@@ -1,0 +1,146 @@
+//! The app's UI logic, driven natively through `egui_kittest`: opening samples,
+//! linked selection through table cells, and switching structure.
+
+use edgewise_app::{EdgewiseApp, GraphicsBackend};
+use edgewise_core::{
+    formats,
+    mesh::{EdgeId, Mesh, Structure},
+};
+use egui_kittest::{Harness, kittest::Queryable as _};
+
+fn harness() -> Harness<'static, EdgewiseApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
+}
+
+fn sample_mesh(file: &str, structure: Structure) -> Mesh {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../meshes")
+        .join(file);
+    let bytes = std::fs::read(&path).expect("the sample file exists");
+    formats::load(&bytes, file, structure)
+        .expect("the sample loads")
+        .mesh
+}
+
+#[test]
+fn opening_a_sample_from_the_menu_shows_its_tables() {
+    let mut harness = harness();
+    harness.get_by_label("Samples").click();
+    harness.run();
+    harness.get_by_label("octahedron").click();
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("octahedron.obj"));
+    assert_eq!(state.structure, Some("winged"));
+    assert_eq!(
+        (
+            state.counts.vertices,
+            state.counts.edges,
+            state.counts.faces
+        ),
+        (6, 12, 8)
+    );
+    assert!(state.error.is_none());
+    // The edge table is on screen with its winged-edge columns.
+    harness.get_by_label("left pred");
+    harness.get_by_label("right succ");
+}
+
+#[test]
+fn a_reference_cell_selects_what_it_refers_to() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .unwrap();
+    harness
+        .state_mut()
+        .select(Some(edgewise_app::selection::ElementRef {
+            kind: edgewise_app::selection::ElementKind::Edge,
+            id: 0,
+        }))
+        .unwrap();
+    harness.run();
+
+    let state = harness.state().state();
+    let roles: Vec<&str> = state.highlights.iter().map(|h| h.role.as_str()).collect();
+    assert_eq!(
+        roles,
+        [
+            "selected",
+            "start vertex",
+            "end vertex",
+            "left face",
+            "right face",
+            "left predecessor",
+            "left successor",
+            "right predecessor",
+            "right successor"
+        ]
+    );
+
+    // Walk to edge 0's left predecessor by clicking its cell in the table.
+    let mesh = sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
+    let Mesh::Winged(m) = &mesh else {
+        unreachable!()
+    };
+    let pred = m.edge(EdgeId::new(0)).unwrap().left_predecessor.index();
+    harness
+        .get_by_label(&format!("left pred of edge 0: edge {pred}"))
+        .click();
+    harness.run();
+    let state = harness.state().state();
+    let selection = state.selection.expect("a selection");
+    assert_eq!(selection.id as usize, pred);
+    assert_eq!(state.highlights[0].role, "selected");
+    assert_eq!(state.highlights[0].id as usize, pred);
+}
+
+#[test]
+fn switching_structure_converts_and_keeps_the_selection() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("cube", Some(Structure::WingedEdge))
+        .unwrap();
+    harness
+        .state_mut()
+        .select(Some(edgewise_app::selection::ElementRef {
+            kind: edgewise_app::selection::ElementKind::Face,
+            id: 4,
+        }))
+        .unwrap();
+    harness.run();
+    harness.get_by_label("Half-edge").click();
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(state.structure, Some("half"));
+    assert_eq!(state.counts.halfedges, 24);
+    let selection = state.selection.expect("the face stays selected");
+    assert_eq!(selection.id, 4);
+    assert_eq!(state.highlights[1].role, "incident edge");
+    // The half-edge table shows its derived columns.
+    harness.get_by_label("predecessor");
+}
+
+#[test]
+fn a_broken_file_keeps_the_previous_mesh() {
+    let mut harness = harness();
+    harness.state_mut().load_sample("cube", None).unwrap();
+    let err = harness
+        .state_mut()
+        .load_mesh(b"v 0 0 0\nf 1 2 3\n", "broken.obj", None)
+        .unwrap_err();
+    assert!(err.starts_with("broken.obj:2:"), "{err}");
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("cube.htb"));
+    assert_eq!(state.error.as_deref(), Some(err.as_str()));
+    // The message is on screen, and Dismiss clears it.
+    harness.get_by_label_contains("broken.obj:2:");
+    harness.get_by_label("Dismiss").click();
+    harness.run();
+    assert!(harness.state().state().error.is_none());
+}
