@@ -101,6 +101,33 @@ impl Image {
         })
     }
 
+    /// A `size`-pixel square around `center`, magnified `zoom` times, to look
+    /// at details.
+    fn zoomed(&self, center: Pos2, size: u32, zoom: u32) -> Self {
+        let (x0, y0) = (
+            center.x as i64 - i64::from(size / 2),
+            center.y as i64 - i64::from(size / 2),
+        );
+        let mut pixels = Vec::with_capacity((size * size * zoom * zoom * 4) as usize);
+        for y in 0..size * zoom {
+            for x in 0..size * zoom {
+                let (sx, sy) = (x0 + i64::from(x / zoom), y0 + i64::from(y / zoom));
+                let inside =
+                    sx >= 0 && sy >= 0 && sx < i64::from(self.width) && sy < i64::from(self.height);
+                pixels.extend(if inside {
+                    self.pixel(sx as u32, sy as u32)
+                } else {
+                    [0, 0, 0, 255]
+                });
+            }
+        }
+        Self {
+            width: size * zoom,
+            height: size * zoom,
+            pixels,
+        }
+    }
+
     fn save(&self, name: &str) -> PathBuf {
         let path = out_dir().join(name);
         let file = std::fs::File::create(&path).unwrap();
@@ -413,6 +440,7 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
         "no purple near {at:?}: {:?}",
         image.pixel(at.x as u32, at.y as u32)
     );
+    image.zoomed(at, 160, 3).save("winged_cube_zoom.png");
     // Clicking there picks that vertex.
     assert_eq!(
         view.pick_at(harness.screen(), at, &options),
@@ -550,29 +578,57 @@ fn torus_200k_faces() {
         );
         image.save(&format!("torus_200k_{:?}.png", options.draw_ids).to_lowercase());
     }
-    // CPU cost of one frame without drawing: the UI pass alone.
+    // CPU cost of one frame without drawing: the UI pass alone, with the
+    // camera turning a little every frame so nothing is reused.
     let ctx = egui::Context::default();
     let mut headless = View3d::new(None);
+    let started = Instant::now();
     headless.set_geometry(geometry, true);
-    for (label, pointer) in [("still", None), ("hover", Some(Pos2::new(450.0, 300.0)))] {
+    eprintln!(
+        "200k set_geometry without GPU uploads: {:?}",
+        started.elapsed()
+    );
+    let always = ViewOptions {
+        draw_ids: DrawIds::Always,
+        ..ViewOptions::default()
+    };
+    for (label, options, hover) in [
+        ("first frame (styles)", ViewOptions::default(), false),
+        ("highlighted ids", ViewOptions::default(), false),
+        ("always ids", always.clone(), false),
+        ("hover picking", ViewOptions::default(), true),
+    ] {
+        let frames = if label.starts_with("first") { 1 } else { 10 };
         let started = Instant::now();
-        for i in 0..10 {
-            let events = pointer
-                .map(|p| vec![egui::Event::PointerMoved(p + Vec2::new(i as f32, 0.0))])
-                .unwrap_or_default();
+        for i in 0..frames {
+            let mut camera = headless.camera();
+            camera.yaw += 0.01;
+            headless.set_camera(camera);
+            let events = if hover {
+                vec![egui::Event::PointerMoved(Pos2::new(
+                    450.0 + i as f32 * 7.0,
+                    300.0,
+                ))]
+            } else {
+                Vec::new()
+            };
             let raw = egui::RawInput {
                 screen_rect: Some(harness.screen()),
                 events,
                 ..Default::default()
             };
+            let mut hovered = None;
             ctx.run_ui(raw, |ui| {
-                headless.ui(ui, &styles, &ViewOptions::default());
+                hovered = headless.ui(ui, &styles, &options).hovered;
             })
             .drop_without_applying_deltas();
+            if hover && i == frames - 1 {
+                eprintln!("hovered {hovered:?}");
+            }
         }
         eprintln!(
             "200k UI pass ({label}): {:?} per frame",
-            started.elapsed() / 10
+            started.elapsed() / frames
         );
     }
 }

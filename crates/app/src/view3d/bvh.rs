@@ -24,15 +24,32 @@ pub struct Bvh {
 }
 
 impl Bvh {
-    /// Builds the hierarchy over `boxes` (min, max), splitting at the median
-    /// along the longest axis of the box centers.
+    /// Builds the hierarchy over `boxes` (min, max): items are sorted along a
+    /// Morton (Z-order) curve through their box centers, then the sorted list
+    /// is halved recursively. O(n log n) for the sort and O(n) after it, so a
+    /// 600k-item mesh builds in tens of milliseconds.
     pub fn build(boxes: &[(Vec3, Vec3)]) -> Self {
-        let mut items: Vec<u32> = (0..boxes.len())
-            .filter_map(|i| u32::try_from(i).ok())
+        let mut bounds_min = Vec3::splat(f32::INFINITY);
+        let mut bounds_max = Vec3::splat(f32::NEG_INFINITY);
+        for (lo, hi) in boxes {
+            let c = (*lo + *hi) * 0.5;
+            bounds_min = bounds_min.min(c);
+            bounds_max = bounds_max.max(c);
+        }
+        let extent = (bounds_max - bounds_min).max(Vec3::splat(1e-30));
+        let mut keyed: Vec<(u32, u32)> = boxes
+            .iter()
+            .zip(0_u32..)
+            .map(|((lo, hi), i)| {
+                let unit = (((*lo + *hi) * 0.5 - bounds_min) / extent).clamp(Vec3::ZERO, Vec3::ONE);
+                (morton(unit), i)
+            })
             .collect();
+        keyed.sort_unstable();
+        let items: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
         let mut nodes = Vec::with_capacity(2 * boxes.len() / LEAF_SIZE + 1);
         if !items.is_empty() {
-            build_node(boxes, &mut items, 0, &mut nodes);
+            build_node(boxes, &items, 0, items.len(), &mut nodes);
         }
         Self { nodes, items }
     }
@@ -64,55 +81,114 @@ impl Bvh {
         }
     }
 
+    /// Visits leaf items roughly nearest-first from `eye` (nodes in order of
+    /// their distance), descending only into nodes `keep` accepts, until
+    /// `leaf` returns false.
+    pub fn visit_nearest(
+        &self,
+        eye: Vec3,
+        mut keep: impl FnMut(Vec3, Vec3) -> bool,
+        mut leaf: impl FnMut(u32) -> bool,
+    ) {
+        use std::cmp::Reverse;
+        use std::collections::BinaryHeap;
+        let distance = |node: &Node| {
+            // Squared distance from the eye to the box; non-negative, so its
+            // bits order like the number.
+            eye.clamp(node.min, node.max)
+                .distance_squared(eye)
+                .to_bits()
+        };
+        let mut heap = BinaryHeap::new();
+        if let Some(root) = self.nodes.first() {
+            heap.push(Reverse((distance(root), 0_usize)));
+        }
+        while let Some(Reverse((_, index))) = heap.pop() {
+            let Some(node) = self.nodes.get(index) else {
+                continue;
+            };
+            if !keep(node.min, node.max) {
+                continue;
+            }
+            if node.count > 0 {
+                let start = node.start as usize;
+                let end = start + node.count as usize;
+                for &item in self.items.get(start..end).unwrap_or_default() {
+                    if !leaf(item) {
+                        return;
+                    }
+                }
+            } else {
+                for child in [index + 1, node.start as usize] {
+                    if let Some(c) = self.nodes.get(child) {
+                        heap.push(Reverse((distance(c), child)));
+                    }
+                }
+            }
+        }
+    }
+
     #[cfg(test)]
     pub fn is_empty(&self) -> bool {
         self.nodes.is_empty()
     }
 }
 
-fn build_node(boxes: &[(Vec3, Vec3)], items: &mut [u32], offset: usize, nodes: &mut Vec<Node>) {
-    let (mut min, mut max) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-    let (mut cmin, mut cmax) = (min, max);
-    for &item in items.iter() {
-        let (lo, hi) = boxes[item as usize];
-        min = min.min(lo);
-        max = max.max(hi);
-        let c = (lo + hi) * 0.5;
-        cmin = cmin.min(c);
-        cmax = cmax.max(c);
-    }
+/// Appends the node over `items[start..end]` and its subtree; returns its
+/// bounds.
+fn build_node(
+    boxes: &[(Vec3, Vec3)],
+    items: &[u32],
+    start: usize,
+    end: usize,
+    nodes: &mut Vec<Node>,
+) -> (Vec3, Vec3) {
     let index = nodes.len();
     nodes.push(Node {
-        min,
-        max,
-        start: u32::try_from(offset).unwrap_or(u32::MAX),
-        count: u32::try_from(items.len()).unwrap_or(u32::MAX),
+        min: Vec3::ZERO,
+        max: Vec3::ZERO,
+        start: u32::try_from(start).unwrap_or(u32::MAX),
+        count: u32::try_from(end - start).unwrap_or(u32::MAX),
     });
-    if items.len() <= LEAF_SIZE {
-        return;
-    }
-    let extent = cmax - cmin;
-    let axis = if extent.x >= extent.y && extent.x >= extent.z {
-        0
-    } else if extent.y >= extent.z {
-        1
+    let (min, max) = if end - start <= LEAF_SIZE {
+        items[start..end].iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(min, max), &item| {
+                let (lo, hi) = boxes[item as usize];
+                (min.min(lo), max.max(hi))
+            },
+        )
     } else {
-        2
+        let mid = start + (end - start) / 2;
+        let (left_min, left_max) = build_node(boxes, items, start, mid, nodes);
+        let right_index = nodes.len();
+        let (right_min, right_max) = build_node(boxes, items, mid, end, nodes);
+        if let Some(node) = nodes.get_mut(index) {
+            node.start = u32::try_from(right_index).unwrap_or(u32::MAX);
+            node.count = 0;
+        }
+        (left_min.min(right_min), left_max.max(right_max))
     };
-    let mid = items.len() / 2;
-    items.select_nth_unstable_by(mid, |&a, &b| {
-        let ca = boxes[a as usize].0[axis] + boxes[a as usize].1[axis];
-        let cb = boxes[b as usize].0[axis] + boxes[b as usize].1[axis];
-        ca.total_cmp(&cb)
-    });
-    let (left, right) = items.split_at_mut(mid);
-    build_node(boxes, left, offset, nodes);
-    let right_index = nodes.len();
-    build_node(boxes, right, offset + mid, nodes);
     if let Some(node) = nodes.get_mut(index) {
-        node.start = u32::try_from(right_index).unwrap_or(u32::MAX);
-        node.count = 0;
+        node.min = min;
+        node.max = max;
     }
+    (min, max)
+}
+
+/// The 30-bit Morton code of a point in the unit cube.
+fn morton(unit: Vec3) -> u32 {
+    // Spreads the low 10 bits of `v` so there are two zero bits between each.
+    fn spread(v: u32) -> u32 {
+        let mut x = v & 0x3ff;
+        x = (x | (x << 16)) & 0x0300_00ff;
+        x = (x | (x << 8)) & 0x0300_f00f;
+        x = (x | (x << 4)) & 0x030c_30c3;
+        x = (x | (x << 2)) & 0x0924_9249;
+        x
+    }
+    let q = (unit * 1023.0).as_uvec3();
+    (spread(q.x) << 2) | (spread(q.y) << 1) | spread(q.z)
 }
 
 /// The parameter range where a ray (origin, inverse direction) crosses a
@@ -155,6 +231,28 @@ mod tests {
             },
         );
         assert_eq!(hits, vec![42]);
+    }
+
+    #[test]
+    fn nearest_first_visits_close_items_first_and_stops() {
+        let boxes: Vec<(Vec3, Vec3)> = (0..1000)
+            .map(|i| {
+                let p = Vec3::new(i as f32, 0.0, 0.0);
+                (p, p)
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        let mut seen = Vec::new();
+        bvh.visit_nearest(
+            Vec3::new(500.0, 0.0, 0.0),
+            |_, _| true,
+            |item| {
+                seen.push(item);
+                seen.len() < 20
+            },
+        );
+        assert_eq!(seen.len(), 20);
+        assert!(seen.iter().all(|&i| (480..=520).contains(&i)), "{seen:?}");
     }
 
     #[test]

@@ -227,6 +227,20 @@ impl ViewTransforms {
         }
     }
 
+    /// Whether a world box may be inside the view (false only when it is
+    /// entirely outside one side of the view frustum).
+    pub fn may_see_box(&self, min: Vec3, max: Vec3) -> bool {
+        let m = self.clip_from_world;
+        let (r0, r1, r2, r3) = (m.row(0), m.row(1), m.row(2), m.row(3));
+        // Planes (a, b, c, d) with a·x + b·y + c·z + d >= 0 inside.
+        let planes = [r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2];
+        planes.iter().all(|plane| {
+            let normal = plane.xyz();
+            let farthest = Vec3::select(normal.cmpge(Vec3::ZERO), max, min);
+            normal.dot(farthest) + plane.w >= 0.0
+        })
+    }
+
     /// Unit vectors of the screen's right and up directions in world space.
     pub fn screen_axes(&self) -> (Vec3, Vec3) {
         (
@@ -312,6 +326,18 @@ mod tests {
         let (after, _) = t1.project(Vec3::ZERO).unwrap();
         let moved = after - before;
         assert!((moved - Vec2::new(30.0, -20.0)).length() < 0.5, "{moved:?}");
+    }
+
+    #[test]
+    fn frustum_test_keeps_visible_boxes_and_drops_hidden_ones() {
+        let camera = Camera::default();
+        let t = ViewTransforms::new(camera, viewport(), Vec3::ZERO, 1.0);
+        assert!(t.may_see_box(Vec3::splat(-0.1), Vec3::splat(0.1)));
+        let behind = camera.eye() + camera.backward() * 5.0;
+        assert!(!t.may_see_box(behind - 0.1, behind + 0.1));
+        let (right, _) = t.screen_axes();
+        let aside = right * 100.0;
+        assert!(!t.may_see_box(aside - 0.1, aside + 0.1));
     }
 
     #[test]

@@ -33,6 +33,7 @@ pub struct FrameUniform {
     pub sizes: [f32; 4],
     pub params: [f32; 4],
     pub orientation_colour: [f32; 4],
+    pub background: [f32; 4],
 }
 
 /// Per-element look on the GPU: colour (with alpha for faces) and extras

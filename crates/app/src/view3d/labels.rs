@@ -8,6 +8,7 @@
 use std::collections::HashSet;
 
 use super::camera::ViewTransforms;
+use super::picking::PickAccel;
 use super::scene::{Scene, Sizes};
 use super::style::Palette;
 use super::{DrawIds, Pick, SceneStyles, ViewOptions, axes, style};
@@ -16,11 +17,16 @@ use egui::{Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, Vec2, vec2}
 /// Most labels drawn in one frame besides the highlighted ones.
 pub const MAX_LABELS: usize = 600;
 
+/// Label candidates gathered per element kind (nearest first) in the Always
+/// mode; overlapping ones are dropped, so more are gathered than drawn.
+const CANDIDATES: usize = 1500;
+
 /// Everything the overlays need for one frame.
 pub struct Overlay<'a> {
     pub painter: &'a Painter,
     pub transforms: &'a ViewTransforms,
     pub scene: &'a Scene,
+    pub accel: &'a PickAccel,
     pub styles: &'a SceneStyles,
     pub options: &'a ViewOptions,
     pub sizes: Sizes,
@@ -48,7 +54,7 @@ impl Overlay<'_> {
         } else {
             1.0
         };
-        FontId::proportional(11.0 * scale)
+        FontId::proportional(12.5 * scale)
     }
 
     /// Projected radius of a vertex sphere in points at `depth`.
@@ -64,10 +70,20 @@ impl Overlay<'_> {
             return None;
         }
         let (anchor, above) = match pick {
-            Pick::Vertex(_) => (
-                pos - vec2(0.0, self.vertex_radius_points(depth) + 2.0),
-                true,
-            ),
+            Pick::Vertex(v) => {
+                let highlighted = self
+                    .styles
+                    .vertices
+                    .get(v as usize)
+                    .is_some_and(|s| s.colour.is_some());
+                let emphasis = if highlighted {
+                    Sizes::EMPHASIS_VERTEX
+                } else {
+                    1.0
+                };
+                let radius = (self.vertex_radius_points(depth) * emphasis).max(0.9);
+                (pos - vec2(0.0, radius + 2.0), true)
+            }
             Pick::Edge(_) if !self.scene.geometry.half_edges => (pos - vec2(0.0, 4.0), true),
             Pick::Edge(_) | Pick::Face(_) => (pos, false),
         };
@@ -159,10 +175,6 @@ impl Overlay<'_> {
 
         if self.options.draw_ids == DrawIds::Always {
             let mut rest = self.visible_unhighlighted();
-            if rest.len() > MAX_LABELS * 4 {
-                rest.select_nth_unstable_by(MAX_LABELS * 4, |a, b| a.depth.total_cmp(&b.depth));
-                rest.truncate(MAX_LABELS * 4);
-            }
             rest.sort_by(|a, b| a.depth.total_cmp(&b.depth));
             let mut drawn = 0;
             for placed in &rest {
@@ -199,39 +211,42 @@ impl Overlay<'_> {
         }
     }
 
-    /// Every element not highlighted whose label would be on screen.
+    /// Elements not highlighted whose labels would be on screen, about the
+    /// nearest [`CANDIDATES`] of each kind, found front to back through the
+    /// picking BVHs so a 200k-face mesh costs no more than a small one.
     fn visible_unhighlighted(&self) -> Vec<Placed> {
         let is_plain =
             |style: Option<&super::ElementStyle>| !style.is_some_and(style::is_highlighted);
-        let mut out = Vec::new();
         let viewport = self.viewport();
-        for v in 0..self.scene.vertex_count() {
-            let Ok(id) = u32::try_from(v) else { break };
-            if is_plain(self.styles.vertices.get(v))
-                && let Some(p) = self.place(Pick::Vertex(id))
-                && viewport.contains(p.anchor)
-            {
-                out.push(p);
-            }
-        }
-        for e in 0..self.scene.edge_count() {
-            let Ok(id) = u32::try_from(e) else { break };
-            if is_plain(self.styles.edges.get(e))
-                && let Some(p) = self.place(Pick::Edge(id))
-                && viewport.contains(p.anchor)
-            {
-                out.push(p);
-            }
-        }
-        for f in 0..self.scene.face_count() {
-            let Ok(id) = u32::try_from(f) else { break };
-            if is_plain(self.styles.faces.get(f))
-                && let Some(p) = self.place(Pick::Face(id))
-                && viewport.contains(p.anchor)
-            {
-                out.push(p);
-            }
-        }
+        let eye = self.transforms.eye;
+        let keep = |min, max| self.transforms.may_see_box(min, max);
+        let mut out = Vec::new();
+        let mut collect = |bvh: &super::bvh::Bvh, make: &dyn Fn(u32) -> Option<Pick>| {
+            let mut found = 0;
+            bvh.visit_nearest(eye, keep, |item| {
+                if let Some(pick) = make(item)
+                    && let Some(placed) = self.place(pick)
+                    && viewport.contains(placed.anchor)
+                {
+                    out.push(placed);
+                    found += 1;
+                }
+                found < CANDIDATES
+            });
+        };
+        collect(&self.accel.vertices, &|v| {
+            is_plain(self.styles.vertices.get(v as usize)).then_some(Pick::Vertex(v))
+        });
+        collect(&self.accel.edges, &|e| {
+            is_plain(self.styles.edges.get(e as usize)).then_some(Pick::Edge(e))
+        });
+        collect(&self.accel.faces, &|t| {
+            // A face is found through its first triangle only.
+            let face = *self.scene.triangle_faces.get(t as usize)?;
+            let first = *self.scene.face_triangle_start.get(face as usize)?;
+            (first == t && is_plain(self.styles.faces.get(face as usize)))
+                .then_some(Pick::Face(face))
+        });
         out
     }
 

@@ -455,6 +455,7 @@ impl View3d {
             painter: &painter,
             transforms: &transforms,
             scene: &self.scene,
+            accel: &self.accel,
             styles,
             options,
             sizes,
@@ -472,10 +473,20 @@ impl View3d {
     }
 
     fn handle_camera_input(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect) {
-        let (shift, scroll, zoom) =
-            ui.input(|i| (i.modifiers.shift, i.smooth_scroll_delta, i.zoom_delta()));
+        let (shift, scroll, zoom, touch) = ui.input(|i| {
+            (
+                i.modifiers.shift,
+                i.smooth_scroll_delta,
+                i.zoom_delta(),
+                i.multi_touch(),
+            )
+        });
         let delta = response.drag_delta();
-        if response.dragged_by(PointerButton::Primary) {
+        // Two fingers pan (and pinch, through `zoom`); one finger orbits.
+        let touch_pan = touch.filter(|t| t.num_touches >= 2 && response.contains_pointer());
+        if let Some(touch) = touch_pan {
+            self.camera.pan(touch.translation_delta, rect.height());
+        } else if response.dragged_by(PointerButton::Primary) {
             if shift {
                 self.camera.pan(delta, rect.height());
             } else {
@@ -549,6 +560,7 @@ impl View3d {
         let Some(gpu) = &mut self.gpu else {
             return;
         };
+        let pixels_per_point = painter.pixels_per_point();
         // Drop CPU copies the GPU side has taken.
         if gpu
             .geometry
@@ -578,8 +590,15 @@ impl View3d {
                 sizes.head_radius,
                 sizes.head_length,
             ],
-            params: [0.0, self.scene.arrow_gap(), self.scene.unit * 0.004, 0.0],
+            params: [
+                0.0,
+                self.scene.arrow_gap(),
+                self.scene.unit * 0.004,
+                2.0 / (rect.height() * pixels_per_point * transforms.clip_from_view.y_axis.y)
+                    .max(1e-6),
+            ],
             orientation_colour: [r, g, b, 1.0],
+            background: palette.background.to_normalized_gamma_f32(),
         };
         let (axes, axes_styles) = axes::instances(&self.scene, &sizes, palette);
         let callback = ViewCallback {
@@ -820,5 +839,43 @@ mod tests {
                 .drop_without_applying_deltas();
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod perf {
+    use std::time::Instant;
+
+    use super::*;
+
+    /// Where `set_geometry` spends its time on the 200k-face torus (run with
+    /// `--ignored`, ideally optimised).
+    #[test]
+    #[ignore = "timing only"]
+    fn set_geometry_breakdown() {
+        let polygons = edgewise_core::mesh::generate::torus(400, 250);
+        let (mesh, _) =
+            edgewise_core::mesh::Mesh::build(&polygons, edgewise_core::mesh::Structure::HalfEdge)
+                .unwrap();
+        let started = Instant::now();
+        let geometry = MeshGeometry::from_mesh(&mesh);
+        eprintln!("from_mesh {:?}", started.elapsed());
+        let started = Instant::now();
+        let scene = Scene::new(geometry);
+        eprintln!("scene {:?}", started.elapsed());
+        let started = Instant::now();
+        let _accel = PickAccel::new(&scene);
+        eprintln!("bvh {:?}", started.elapsed());
+        let started = Instant::now();
+        let _ = spheres::instances(&scene);
+        let _ = arrows::instances(&scene);
+        let _ = faces::corners(&scene);
+        eprintln!("instances {:?}", started.elapsed());
+        let started = Instant::now();
+        let _ = orientation::instances(&scene);
+        eprintln!("marks {:?}", started.elapsed());
+        let started = Instant::now();
+        let _ = style::build(&scene, &SceneStyles::default(), &Palette::new(false), 1);
+        eprintln!("styles {:?}", started.elapsed());
     }
 }

@@ -22,9 +22,10 @@ pub const EDGE_TOLERANCE: f32 = 5.0;
 /// segments; queries widen them by the tolerance at each node's depth.
 #[derive(Default)]
 pub struct PickAccel {
-    vertices: Bvh,
-    edges: Bvh,
-    faces: Bvh,
+    pub vertices: Bvh,
+    pub edges: Bvh,
+    /// Over triangles (see [`Scene::triangles`]).
+    pub faces: Bvh,
 }
 
 impl PickAccel {

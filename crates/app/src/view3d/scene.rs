@@ -47,8 +47,8 @@ pub struct Sizes {
 
 impl Sizes {
     /// Extra thickness of highlighted elements.
-    pub const EMPHASIS_VERTEX: f32 = 1.45;
-    pub const EMPHASIS_EDGE: f32 = 1.6;
+    pub const EMPHASIS_VERTEX: f32 = 1.35;
+    pub const EMPHASIS_EDGE: f32 = 1.5;
 }
 
 impl Scene {

@@ -27,13 +27,16 @@ fn vs_arrow(
         return out;
     }
     let dir = span / full;
-    let emphasis = (1.0 + 0.6 * extra.x) * (1.0 + 40.0 * extra.z);
+    let emphasis = (1.0 + 0.5 * extra.x) * (1.0 + 40.0 * extra.z);
     let gap = min(frame.sizes.x * frame.params.y * (1.0 - extra.y), 0.3 * full);
     let a = start + dir * gap;
     let len = full - 2.0 * gap;
     let head_length = min(frame.sizes.w * emphasis, 0.5 * len);
-    let shaft_radius = frame.sizes.y * emphasis;
-    let head_radius = frame.sizes.z * emphasis;
+    // At least about a pixel wide, so a dense mesh reads as a steady wireframe.
+    let pixel = pixel_size(a + dir * (0.5 * len));
+    let shaft_radius = max(frame.sizes.y * emphasis, 0.6 * pixel);
+    out.colour = vec4<f32>(fade_small(colour.rgb, len / max(pixel, 1e-30), 24.0, extra.x + extra.y), colour.a);
+    let head_radius = max(frame.sizes.z * emphasis, shaft_radius);
 
     var helper = vec3<f32>(0.0, 1.0, 0.0);
     if abs(dir.y) > 0.9 {

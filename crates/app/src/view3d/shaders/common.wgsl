@@ -11,9 +11,12 @@ struct Frame {
     sizes: vec4<f32>,
     // x: 1 when the target is sRGB (colours are converted to linear),
     // y: how much of the vertex radius arrow ends are pulled back,
-    // z: lift of orientation marks off their face, w: unused.
+    // z: lift of orientation marks off their face,
+    // w: world size of one pixel per unit of clip w (distance in front of the eye).
     params: vec4<f32>,
     orientation_colour: vec4<f32>,
+    // The view's background (gamma space), which tiny elements fade into.
+    background: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -56,6 +59,24 @@ fn to_target(rgb: vec3<f32>, alpha: f32) -> vec4<f32> {
         c = srgb_to_linear(c);
     }
     return vec4<f32>(c * alpha, alpha);
+}
+
+// World size of one pixel at a world position, so thin things can be kept
+// at least a pixel wide instead of breaking up into sparkles.
+fn pixel_size(world: vec3<f32>) -> f32 {
+    let clip = frame.clip_from_world * vec4<f32>(world, 1.0);
+    return max(clip.w, 0.0) * frame.params.w;
+}
+
+// Base colours of elements only a few pixels big fade towards the
+// background, so a dense mesh seen whole reads as a surface with a light
+// wireframe instead of a solid mass; highlighted elements never fade.
+// `size` is the element's size in pixels, `full` the size it is fully
+// coloured at.
+fn fade_small(colour: vec3<f32>, size: f32, full: f32, highlighted: f32) -> vec3<f32> {
+    let keep = clamp(size / full, 0.0, 1.0);
+    let amount = (1.0 - keep) * 0.8 * (1.0 - step(0.5, highlighted));
+    return mix(colour, frame.background.rgb, amount);
 }
 
 // A position no triangle can be rasterised at (outside the depth range).

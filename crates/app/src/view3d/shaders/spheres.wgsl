@@ -8,12 +8,13 @@ fn vs_sphere(
     // x: emphasis (highlighted), others unused.
     @location(3) extra: vec4<f32>,
 ) -> LitOut {
-    let radius = frame.sizes.x * (1.0 + 0.45 * extra.x);
+    let pixel = pixel_size(center);
+    let radius = max(frame.sizes.x * (1.0 + 0.35 * extra.x), 0.9 * pixel);
     let world = center + unit * radius;
     var out: LitOut;
     out.clip = frame.clip_from_world * vec4<f32>(world, 1.0);
     out.world = world;
     out.normal = unit;
-    out.colour = colour;
+    out.colour = vec4<f32>(fade_small(colour.rgb, radius / max(pixel, 1e-30), 4.0, extra.x), colour.a);
     return out;
 }
