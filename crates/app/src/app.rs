@@ -1,6 +1,8 @@
 //! The top-level eframe application: a mesh document, the 3D view, the
 //! tables, and the commands the JavaScript API and the UI share.
 
+use egui_extras::{Size, StripBuilder};
+
 use edgewise_core::{
     formats::Format,
     mesh::{Mesh, Structure, generate},
@@ -34,7 +36,6 @@ pub struct EdgewiseApp {
     styles_generation: Option<u64>,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
-    table_tab: ElementKind,
     /// The element under the pointer in the 3D view, for the message line.
     hovered: Option<Pick>,
     /// Kept so commands from JavaScript can ask for a new frame.
@@ -69,7 +70,6 @@ impl EdgewiseApp {
             styles: SceneStyles::default(),
             styles_generation: None,
             structure: Structure::WingedEdge,
-            table_tab: ElementKind::Edge,
             hovered: None,
             ctx: None,
         }
@@ -370,30 +370,40 @@ impl EdgewiseApp {
         }
     }
 
+    /// The face, edge and vertex tables side by side; the panel's top edge
+    /// moves the split between them and the 3D view.
     fn tables_ui(&mut self, ui: &mut egui::Ui) {
         let Some(document) = &self.document else {
             ui.weak("Open a mesh to see its tables.");
+            // Keep the panel's size for when a mesh arrives.
+            ui.allocate_space(ui.available_size());
             return;
         };
-        ui.horizontal(|ui| {
-            for (kind, title) in [
-                (ElementKind::Face, "Faces"),
-                (ElementKind::Edge, "Edges"),
-                (ElementKind::Vertex, "Vertices"),
-            ] {
-                ui.selectable_value(&mut self.table_tab, kind, title);
-            }
-        });
-        ui.separator();
         let mut response = TablesResponse::default();
-        tables::table_ui(
-            ui,
-            document.mesh(),
-            self.table_tab,
-            document.highlights(),
-            &self.theme,
-            &mut response,
-        );
+        let mut table = |ui: &mut egui::Ui, kind: ElementKind, title: &str| {
+            ui.strong(title);
+            tables::table_ui(
+                ui,
+                document.mesh(),
+                kind,
+                document.highlights(),
+                &self.theme,
+                &mut response,
+            );
+        };
+        let edge_title = match document.mesh() {
+            Mesh::Winged(_) => "Edges",
+            Mesh::Half(_) => "Half-edges",
+        };
+        StripBuilder::new(ui)
+            .size(Size::relative(0.17).at_least(150.0))
+            .size(Size::remainder().at_least(300.0))
+            .size(Size::relative(0.28).at_least(220.0))
+            .horizontal(|mut strip| {
+                strip.cell(|ui| table(ui, ElementKind::Face, "Faces"));
+                strip.cell(|ui| table(ui, ElementKind::Edge, edge_title));
+                strip.cell(|ui| table(ui, ElementKind::Vertex, "Vertices"));
+            });
         if let Some(clicked) = response.clicked {
             self.select(Some(clicked)).ok();
         }
@@ -408,10 +418,19 @@ impl EdgewiseApp {
         }
         self.refresh_styles();
         self.view_options.dark = self.theme.dark;
-        egui::Panel::bottom("message_line")
-            .show_separator_line(false)
-            .show(ui, |ui| self.message_line_ui(ui, self.hovered));
-        let response = self.view.ui(ui, &self.styles, &self.view_options);
+        let rect = ui.available_rect_before_wrap();
+        let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
+        let (view_rect, line_rect) =
+            rect.split_top_bottom_at_y((rect.bottom() - line_height).max(rect.top()));
+        let hovered = self.hovered;
+        ui.scope_builder(egui::UiBuilder::new().max_rect(line_rect), |ui| {
+            self.message_line_ui(ui, hovered);
+        });
+        let response = ui
+            .scope_builder(egui::UiBuilder::new().max_rect(view_rect), |ui| {
+                self.view.ui(ui, &self.styles, &self.view_options)
+            })
+            .inner;
         self.hovered = response.hovered;
         if let Some(pick) = response.clicked {
             self.select(Some(element_of(pick))).ok();
@@ -427,7 +446,8 @@ impl eframe::App for EdgewiseApp {
         egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
         egui::Panel::bottom("tables")
             .resizable(true)
-            .default_size(240.0)
+            .default_size(260.0)
+            .min_size(120.0)
             .show(ui, |ui| self.tables_ui(ui));
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);

@@ -27,6 +27,8 @@ pub struct TablesResponse {
 
 /// One cell of a row.
 enum Cell {
+    /// The row's own id: clicking it selects the row.
+    Id(ElementRef),
     Text(String),
     /// A reference to another element, tinted when it plays a role.
     Link(Option<ElementRef>, Option<Role>),
@@ -83,8 +85,9 @@ pub fn table_ui(
         .id_salt(kind)
         .striped(true)
         .resizable(true)
-        .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
-        .sense(egui::Sense::click());
+        // Fill the panel: a table that shrank to its rows would shrink the panel too.
+        .auto_shrink(false)
+        .cell_layout(egui::Layout::left_to_right(egui::Align::Center));
     for (i, _) in headers.iter().enumerate() {
         table = table.column(if i + 1 == headers.len() {
             Column::remainder().at_least(60.0)
@@ -135,8 +138,23 @@ pub fn table_ui(
                                 colour.gamma_multiply(0.28),
                             );
                         }
-                        let dim = i >= derived_from;
+                        let dim = i >= derived_from && i + 1 < headers.len();
                         match cell {
+                            Cell::Id(element) => {
+                                let label = ui
+                                    .selectable_label(
+                                        selected_row,
+                                        RichText::new(element.id.to_string()).monospace(),
+                                    )
+                                    .on_hover_text(format!(
+                                        "select {} {}",
+                                        element.kind.title().to_lowercase(),
+                                        element.id
+                                    ));
+                                if label.clicked() {
+                                    clicked_link = Some(element);
+                                }
+                            }
                             Cell::Text(text) => {
                                 let mut text = RichText::new(text).monospace();
                                 if dim {
@@ -181,8 +199,6 @@ pub fn table_ui(
                 }
                 if let Some(target) = clicked_link {
                     response.clicked = Some(target);
-                } else if row.response().clicked() {
-                    response.clicked = Some(element);
                 }
             });
         });
@@ -199,7 +215,7 @@ fn row_cells(mesh: &Mesh, element: ElementRef, highlights: &[Highlight]) -> Vec<
     };
     let labels = Cell::Text(String::new());
     let index = element.id as usize;
-    let id = Cell::Text(element.id.to_string());
+    let id = Cell::Id(element);
     match (mesh, element.kind) {
         (Mesh::Winged(m), ElementKind::Vertex) => match m.vertices().get(index) {
             Some(v) => vec![
