@@ -26,7 +26,8 @@ const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 fn render_state() -> Option<RenderState> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::VULKAN | wgpu::Backends::GL,
+        // WGPU_BACKEND=gl runs the GLSL path WebGL2 also takes.
+        backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
         ..wgpu::InstanceDescriptor::new_without_display_handle()
     });
     let adapter =

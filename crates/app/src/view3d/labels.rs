@@ -5,7 +5,7 @@
 //! the rest (in the Always mode) nearest first, skipping any that would
 //! overlap one already placed, up to [`MAX_LABELS`].
 
-use std::collections::HashSet;
+use std::collections::HashMap;
 
 use super::camera::ViewTransforms;
 use super::picking::PickAccel;
@@ -367,17 +367,18 @@ fn paint_arrow(painter: &Painter, tail: Pos2, tip: Pos2, colour: Color32, halo: 
     painter.add(egui::Shape::convex_polygon(head, colour, Stroke::NONE));
 }
 
-/// A coarse grid of screen cells taken by labels, to skip overlapping ones.
+/// Rectangles taken by labels, bucketed in a coarse grid of screen cells so
+/// checking a new label against them is cheap.
 struct Occupancy {
     cell: f32,
-    cells: HashSet<(i32, i32)>,
+    cells: HashMap<(i32, i32), Vec<Rect>>,
 }
 
 impl Occupancy {
     fn new(font_size: f32) -> Self {
         Self {
-            cell: (font_size * 1.2).max(4.0),
-            cells: HashSet::new(),
+            cell: (font_size * 3.0).max(8.0),
+            cells: HashMap::new(),
         }
     }
 
@@ -390,13 +391,19 @@ impl Occupancy {
     }
 
     fn is_free(&self, rect: Rect) -> bool {
-        self.cells_of(rect.shrink(1.0))
-            .all(|c| !self.cells.contains(&c))
+        let rect = rect.shrink(1.0);
+        self.cells_of(rect).all(|c| {
+            self.cells
+                .get(&c)
+                .is_none_or(|taken| taken.iter().all(|r| !r.intersects(rect)))
+        })
     }
 
     fn claim(&mut self, rect: Rect) {
-        let cells: Vec<_> = self.cells_of(rect.shrink(1.0)).collect();
-        self.cells.extend(cells);
+        let rect = rect.shrink(1.0);
+        for c in self.cells_of(rect) {
+            self.cells.entry(c).or_default().push(rect);
+        }
     }
 }
 
@@ -414,5 +421,7 @@ mod tests {
         grid.claim(a);
         assert!(!grid.is_free(a.translate(vec2(5.0, 0.0))));
         assert!(grid.is_free(a.translate(vec2(100.0, 0.0))));
+        // Near but not touching: free, even in the same cell.
+        assert!(grid.is_free(a.translate(vec2(31.0, 0.0))));
     }
 }

@@ -121,10 +121,10 @@ impl Scene {
             });
             if face.len() >= 3 {
                 let face_id = u32::try_from(f).unwrap_or(u32::MAX);
-                for i in 1..face.len() - 1 {
-                    triangles.push([face[0], face[i], face[i + 1]]);
+                triangulate(&corners, normal, |[a, b, c]| {
+                    triangles.push([face[a], face[b], face[c]]);
                     triangle_faces.push(face_id);
-                }
+                });
             }
             face_triangle_start.push(u32::try_from(triangles.len()).unwrap_or(u32::MAX));
         }
@@ -265,6 +265,64 @@ impl Scene {
     }
 }
 
+/// Splits a polygon into triangles (corner indices): a fan when it is convex
+/// (the usual case, and any face too large to clip), otherwise by ear
+/// clipping in the plane of `normal`, so concave faces fill correctly.
+pub fn triangulate(corners: &[Vec3], normal: Vec3, mut emit: impl FnMut([usize; 3])) {
+    let n = corners.len();
+    if n < 3 {
+        return;
+    }
+    let turn = |a: Vec3, b: Vec3, c: Vec3| (b - a).cross(c - b).dot(normal);
+    let convex = normal == Vec3::ZERO
+        || n == 3
+        || n > 256
+        || (0..n).all(|i| turn(corners[i], corners[(i + 1) % n], corners[(i + 2) % n]) >= 0.0);
+    if convex {
+        for i in 1..n - 1 {
+            emit([0, i, i + 1]);
+        }
+        return;
+    }
+    let mut remaining: Vec<usize> = (0..n).collect();
+    let mut misses = 0;
+    let mut i = 0;
+    while remaining.len() > 3 {
+        let m = remaining.len();
+        let (ia, ib, ic) = (
+            remaining[(i + m - 1) % m],
+            remaining[i % m],
+            remaining[(i + 1) % m],
+        );
+        let (a, b, c) = (corners[ia], corners[ib], corners[ic]);
+        let is_ear = turn(a, b, c) > 0.0
+            && remaining.iter().all(|&j| {
+                j == ia || j == ib || j == ic || !inside_triangle(corners[j], a, b, c, normal)
+            });
+        if is_ear {
+            emit([ia, ib, ic]);
+            remaining.remove(i % m);
+            misses = 0;
+        } else {
+            i += 1;
+            misses += 1;
+            if misses > m {
+                // Degenerate or self-intersecting: fan the rest.
+                for k in 1..remaining.len() - 1 {
+                    emit([remaining[0], remaining[k], remaining[k + 1]]);
+                }
+                return;
+            }
+        }
+    }
+    emit([remaining[0], remaining[1], remaining[2]]);
+}
+
+fn inside_triangle(p: Vec3, a: Vec3, b: Vec3, c: Vec3, normal: Vec3) -> bool {
+    let side = |u: Vec3, v: Vec3| (v - u).cross(p - u).dot(normal) >= 0.0;
+    side(a, b) && side(b, c) && side(c, a)
+}
+
 /// Distance from `p` to the segment `a`–`b`.
 pub fn point_segment_distance(p: Vec3, a: Vec3, b: Vec3) -> f32 {
     let ab = b - a;
@@ -275,4 +333,61 @@ pub fn point_segment_distance(p: Vec3, a: Vec3, b: Vec3) -> f32 {
         0.0
     };
     p.distance(a + ab * t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn triangles_of(corners: &[Vec3]) -> Vec<[usize; 3]> {
+        let mut out = Vec::new();
+        let mut newell = Vec3::ZERO;
+        for i in 0..corners.len() {
+            newell += corners[i].cross(corners[(i + 1) % corners.len()]);
+        }
+        triangulate(corners, newell.normalize_or_zero(), |t| out.push(t));
+        out
+    }
+
+    fn area(corners: &[Vec3], triangles: &[[usize; 3]]) -> f32 {
+        triangles
+            .iter()
+            .map(|&[a, b, c]| {
+                (corners[b] - corners[a])
+                    .cross(corners[c] - corners[a])
+                    .length()
+                    * 0.5
+            })
+            .sum()
+    }
+
+    #[test]
+    fn convex_faces_are_fanned() {
+        let square = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y];
+        assert_eq!(triangles_of(&square), vec![[0, 1, 2], [0, 2, 3]]);
+    }
+
+    #[test]
+    fn concave_faces_are_clipped_without_spilling() {
+        // An L shape of area 3.
+        let l = [
+            Vec3::new(0.0, 0.0, 0.0),
+            Vec3::new(2.0, 0.0, 0.0),
+            Vec3::new(2.0, 1.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(1.0, 2.0, 0.0),
+            Vec3::new(0.0, 2.0, 0.0),
+        ];
+        let triangles = triangles_of(&l);
+        assert_eq!(triangles.len(), 4);
+        assert!((area(&l, &triangles) - 3.0).abs() < 1e-5);
+    }
+
+    #[test]
+    fn degenerate_faces_do_not_panic() {
+        let _ = triangles_of(&[Vec3::ONE; 5]);
+        let _ = triangles_of(&[Vec3::ZERO, Vec3::X]);
+        let bow_tie = [Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0), Vec3::X, Vec3::Y];
+        assert_eq!(triangles_of(&bow_tie).len(), 2);
+    }
 }
