@@ -543,6 +543,15 @@ fn torus_20k_faces() {
     let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
     let shown = started.elapsed();
     image.save("torus_20k.png");
+    // Close up on the outer equator: the coarse arrow and sphere templates.
+    view.set_camera(Camera {
+        target: [2.6, 0.0, 0.0],
+        yaw: 1.2,
+        pitch: 0.3,
+        distance: 0.9,
+    });
+    let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    close.save("torus_20k_close.png");
     eprintln!(
         "torus 20k faces: mesh {built:?}, set_geometry {prepared:?}, two frames on {:?} {shown:?}",
         rs.adapter.get_info().name

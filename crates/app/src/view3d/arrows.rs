@@ -5,16 +5,13 @@ use std::f32::consts::TAU;
 
 use bytemuck::{Pod, Zeroable};
 
-use super::gpu::{ArrowInstance, PipelineFactory, PipelineSpec, style_layout};
+use super::gpu::{ArrowInstance, PipelineFactory, PipelineSpec, Template, style_layout};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
     include_str!("shaders/arrows.wgsl")
 );
-
-/// Sides around the shaft and the cone.
-const SEGMENTS: usize = 10;
 
 /// A template vertex: see `vs_arrow` in shaders/arrows.wgsl for what the
 /// selectors mean.
@@ -25,39 +22,50 @@ pub struct ArrowVertex {
     pub normal_kind: f32,
 }
 
-/// The unit arrow as a triangle list: shaft tube, cone, and the disc closing
-/// the cone's base.
-pub fn template() -> Vec<ArrowVertex> {
-    let ring = |i: usize| {
-        let (sin, cos) = (TAU * i as f32 / SEGMENTS as f32).sin_cos();
+/// The unit arrow with `segments` sides: shaft tube, cone, and (if `base`)
+/// the disc closing the cone, which only shows on arrows seen from behind
+/// their head.
+pub fn template(segments: u16, base: bool) -> Template<ArrowVertex> {
+    let n = segments.max(3);
+    let around = |i: f32| {
+        let (sin, cos) = (TAU * i / f32::from(n)).sin_cos();
         (cos, sin)
     };
     let vertex = |(x, y): (f32, f32), along: f32, radius: f32, normal_kind: f32| ArrowVertex {
         shape: [x, y, along, radius],
         normal_kind,
     };
-    let mut out = Vec::with_capacity(SEGMENTS * 12);
-    for i in 0..SEGMENTS {
-        let (a, b) = (ring(i), ring(i + 1));
-        // Shaft: from the start to the head's base, shaft radius.
-        let (s0, s1) = (vertex(a, 0.0, 0.0, 0.0), vertex(b, 0.0, 0.0, 0.0));
-        let (h0, h1) = (vertex(a, 1.0, 0.0, 0.0), vertex(b, 1.0, 0.0, 0.0));
-        out.extend([s0, s1, h1, s0, h1, h0]);
-        // Cone: from the head's base (head radius) to the tip.
-        let mid = ((a.0 + b.0) * 0.5, (a.1 + b.1) * 0.5);
-        out.extend([
-            vertex(a, 1.0, 1.0, 1.0),
-            vertex(b, 1.0, 1.0, 1.0),
-            vertex(mid, 2.0, 2.0, 1.0),
-        ]);
-        // Base disc, facing backwards.
-        out.extend([
-            vertex(b, 1.0, 1.0, 2.0),
-            vertex(a, 1.0, 1.0, 2.0),
-            vertex((0.0, 0.0), 1.0, 2.0, 2.0),
-        ]);
+    let mut vertices = Vec::new();
+    let mut indices: Vec<u16> = Vec::new();
+    // Rings: shaft start, shaft end, cone base; then one tip per side (each
+    // with its own normal).
+    for (along, radius, normal_kind) in [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 1.0)] {
+        for i in 0..n {
+            vertices.push(vertex(around(f32::from(i)), along, radius, normal_kind));
+        }
     }
-    out
+    for i in 0..n {
+        vertices.push(vertex(around(f32::from(i) + 0.5), 2.0, 2.0, 1.0));
+    }
+    let (shaft_start, shaft_end, cone, tips) = (0, n, 2 * n, 3 * n);
+    for i in 0..n {
+        let j = (i + 1) % n;
+        indices.extend([shaft_start + i, shaft_start + j, shaft_end + j]);
+        indices.extend([shaft_start + i, shaft_end + j, shaft_end + i]);
+        indices.extend([cone + i, cone + j, tips + i]);
+    }
+    if base {
+        let disc = 4 * n;
+        for i in 0..n {
+            vertices.push(vertex(around(f32::from(i)), 1.0, 1.0, 2.0));
+        }
+        vertices.push(vertex((0.0, 0.0), 1.0, 2.0, 2.0));
+        let center = 5 * n;
+        for i in 0..n {
+            indices.extend([disc + (i + 1) % n, disc + i, center]);
+        }
+    }
+    Template { vertices, indices }
 }
 
 /// One instance per edge arrow, where [`Scene`] placed it.
@@ -99,4 +107,23 @@ pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         transparent: false,
         depth_bias: false,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn templates_index_their_own_vertices() {
+        for (segments, base, triangles) in [(10, true, 40), (6, false, 18)] {
+            let arrow = template(segments, base);
+            assert_eq!(arrow.triangle_count(), triangles);
+            assert!(
+                arrow
+                    .indices
+                    .iter()
+                    .all(|&i| usize::from(i) < arrow.vertices.len())
+            );
+        }
+    }
 }

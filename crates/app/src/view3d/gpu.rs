@@ -2,8 +2,8 @@
 //! per-view buffers, and the paint callback that uploads and draws.
 //!
 //! Everything works on WebGL2 as well as WebGPU: per-instance data comes in
-//! instance vertex buffers (no storage buffers), draws are non-indexed with
-//! no base vertex or instance, and there is a single uniform buffer.
+//! instance vertex buffers (no storage buffers), draws use neither a base
+//! vertex nor a first instance, and there is a single uniform buffer.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -109,29 +109,64 @@ pub struct Pipelines {
     face_transparent: wgpu::RenderPipeline,
     face_solid: wgpu::RenderPipeline,
     orientation: wgpu::RenderPipeline,
-    sphere_fine: TemplateBuffer,
-    sphere_coarse: TemplateBuffer,
-    arrow_template: TemplateBuffer,
+    /// Spheres and arrows at three and two levels of detail: the more
+    /// instances, the fewer triangles each.
+    spheres_by_detail: [TemplateBuffer; 3],
+    arrows_by_detail: [TemplateBuffer; 2],
     mark_template: TemplateBuffer,
     srgb_target: bool,
     views: HashMap<u64, ViewBuffers>,
 }
 
-/// A template mesh: a triangle list.
+/// A template mesh instanced once per element: vertices and the triangles
+/// over them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Template<V> {
+    pub vertices: Vec<V>,
+    pub indices: Vec<u16>,
+}
+
+impl<V> Template<V> {
+    /// A template from a plain triangle list (every vertex used once).
+    pub fn from_triangle_list(vertices: Vec<V>) -> Self {
+        let indices = (0..vertices.len())
+            .filter_map(|i| u16::try_from(i).ok())
+            .collect();
+        Self { vertices, indices }
+    }
+
+    #[cfg(test)]
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+}
+
+/// A template on the GPU.
 struct TemplateBuffer {
-    buffer: wgpu::Buffer,
-    vertices: u32,
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
 }
 
 impl TemplateBuffer {
-    fn new<T: Pod>(device: &wgpu::Device, label: &str, vertices: &[T]) -> Self {
+    fn new<V: Pod>(device: &wgpu::Device, label: &str, template: &Template<V>) -> Self {
+        // Index buffers are padded to 4 bytes (a WebGPU copy rule).
+        let mut indices = template.indices.clone();
+        if indices.len() % 2 == 1 {
+            indices.push(0);
+        }
         Self {
-            buffer: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(label),
-                contents: bytemuck::cast_slice(vertices),
+                contents: bytemuck::cast_slice(&template.vertices),
                 usage: wgpu::BufferUsages::VERTEX,
             }),
-            vertices: u32::try_from(vertices.len()).unwrap_or(0),
+            indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(&indices),
+                usage: wgpu::BufferUsages::INDEX,
+            }),
+            index_count: u32::try_from(template.indices.len()).unwrap_or(0),
         }
     }
 }
@@ -350,13 +385,13 @@ impl Pipelines {
             face_transparent,
             face_solid,
             orientation: orientation::pipeline(&factory),
-            sphere_fine: TemplateBuffer::new(device, "view3d sphere fine", &spheres::icosphere(2)),
-            sphere_coarse: TemplateBuffer::new(
-                device,
-                "view3d sphere coarse",
-                &spheres::icosphere(1),
-            ),
-            arrow_template: TemplateBuffer::new(device, "view3d arrow", &arrows::template()),
+            spheres_by_detail: [2, 1, 0].map(|subdivisions| {
+                TemplateBuffer::new(device, "view3d sphere", &spheres::icosphere(subdivisions))
+            }),
+            arrows_by_detail: [
+                TemplateBuffer::new(device, "view3d arrow", &arrows::template(10, true)),
+                TemplateBuffer::new(device, "view3d arrow coarse", &arrows::template(6, false)),
+            ],
             mark_template: TemplateBuffer::new(device, "view3d mark", &orientation::template()),
             bind_group_layout,
             srgb_target: target_format.is_srgb(),
@@ -381,8 +416,10 @@ impl Pipelines {
     }
 }
 
-/// Spheres with more than this many instances use the coarse template.
-const FINE_SPHERE_LIMIT: u32 = 20_000;
+/// Instance counts above which spheres use their second and third level of
+/// detail (320, 80, 20 triangles), and arrows their second (120, 36).
+const SPHERE_DETAIL_LIMITS: [u32; 2] = [5_000, 50_000];
+const ARROW_DETAIL_LIMIT: u32 = 30_000;
 
 /// The paint callback of one view for one frame.
 pub struct ViewCallback {
@@ -492,11 +529,11 @@ impl CallbackTrait for ViewCallback {
         // Opaque first: spheres, arrows, axes, orientation marks.
         if let (Some(spheres), Some(styles)) = (&view.spheres, &view.vertex_styles) {
             let count = spheres.count.min(styles.count);
-            let template = if count > FINE_SPHERE_LIMIT {
-                &pipelines.sphere_coarse
-            } else {
-                &pipelines.sphere_fine
-            };
+            let detail = SPHERE_DETAIL_LIMITS
+                .iter()
+                .filter(|&&limit| count > limit)
+                .count();
+            let template = &pipelines.spheres_by_detail[detail.min(2)];
             draw_instanced(
                 pass,
                 &pipelines.sphere,
@@ -507,10 +544,11 @@ impl CallbackTrait for ViewCallback {
         }
         if let (Some(arrows), Some(styles)) = (&view.arrows, &view.edge_styles) {
             let count = arrows.count.min(styles.count);
+            let detail = usize::from(count > ARROW_DETAIL_LIMIT);
             draw_instanced(
                 pass,
                 &pipelines.arrow,
-                &pipelines.arrow_template,
+                &pipelines.arrows_by_detail[detail],
                 &[&arrows.buffer, &styles.buffer],
                 count,
             );
@@ -521,7 +559,7 @@ impl CallbackTrait for ViewCallback {
             draw_instanced(
                 pass,
                 &pipelines.arrow,
-                &pipelines.arrow_template,
+                &pipelines.arrows_by_detail[0],
                 &[&axes.buffer, &styles.buffer],
                 axes.count.min(styles.count),
             );
@@ -563,15 +601,16 @@ fn draw_instanced(
     instance_buffers: &[&wgpu::Buffer],
     instances: u32,
 ) {
-    if instances == 0 || template.vertices == 0 {
+    if instances == 0 || template.index_count == 0 {
         return;
     }
     pass.set_pipeline(pipeline);
-    pass.set_vertex_buffer(0, template.buffer.slice(..));
+    pass.set_vertex_buffer(0, template.vertices.slice(..));
     for (slot, buffer) in (1_u32..).zip(instance_buffers) {
         pass.set_vertex_buffer(slot, buffer.slice(..));
     }
-    pass.draw(0..template.vertices, 0..instances);
+    pass.set_index_buffer(template.indices.slice(..), wgpu::IndexFormat::Uint16);
+    pass.draw_indexed(0..template.index_count, 0, 0..instances);
 }
 
 /// The vertex layout of a style buffer at shader locations `colour` and

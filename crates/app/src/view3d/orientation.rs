@@ -3,7 +3,7 @@
 
 use std::f32::consts::{PI, TAU};
 
-use super::gpu::{MarkInstance, PipelineFactory, PipelineSpec};
+use super::gpu::{MarkInstance, PipelineFactory, PipelineSpec, Template};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
@@ -20,7 +20,7 @@ const HEAD_WIDTH: f32 = 0.42;
 const HEAD_LENGTH: f32 = 0.5;
 
 /// The unit mark (radius 1) as a triangle list in its own plane.
-pub fn template() -> Vec<[f32; 2]> {
+pub fn template() -> Template<[f32; 2]> {
     let point = |angle: f32, radius: f32| {
         let (sin, cos) = angle.sin_cos();
         [cos * radius, sin * radius]
@@ -46,7 +46,7 @@ pub fn template() -> Vec<[f32; 2]> {
         point(end, 1.0 + HEAD_WIDTH * 0.5),
         point(tip_angle.min(end + TAU), 1.0),
     ]);
-    out
+    Template::from_triangle_list(out)
 }
 
 /// One mark per face with room for it, scaled to fit inside the face.

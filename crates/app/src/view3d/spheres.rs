@@ -2,7 +2,9 @@
 
 use glam::Vec3;
 
-use super::gpu::{PipelineFactory, PipelineSpec, style_layout};
+use std::collections::HashMap;
+
+use super::gpu::{PipelineFactory, PipelineSpec, Template, style_layout};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
@@ -10,11 +12,12 @@ const SHADER: &str = concat!(
     include_str!("shaders/spheres.wgsl")
 );
 
-/// A unit icosphere as a triangle list, each triangle split in four
-/// `subdivisions` times (0: 20 triangles, 1: 80, 2: 320).
-pub fn icosphere(subdivisions: u32) -> Vec<[f32; 3]> {
+/// A unit icosphere, each triangle split in four `subdivisions` times
+/// (0: 20 triangles on 12 vertices, 1: 80 on 42, 2: 320 on 162). The vertex
+/// is also its normal.
+pub fn icosphere(subdivisions: u32) -> Template<[f32; 3]> {
     let t = (1.0 + 5.0_f32.sqrt()) / 2.0;
-    let corners = [
+    let mut vertices: Vec<Vec3> = [
         Vec3::new(-1.0, t, 0.0),
         Vec3::new(1.0, t, 0.0),
         Vec3::new(-1.0, -t, 0.0),
@@ -28,8 +31,9 @@ pub fn icosphere(subdivisions: u32) -> Vec<[f32; 3]> {
         Vec3::new(-t, 0.0, -1.0),
         Vec3::new(-t, 0.0, 1.0),
     ]
-    .map(Vec3::normalize);
-    const FACES: [[usize; 3]; 20] = [
+    .map(Vec3::normalize)
+    .to_vec();
+    let mut triangles: Vec<[u16; 3]> = vec![
         [0, 11, 5],
         [0, 5, 1],
         [0, 1, 7],
@@ -51,25 +55,29 @@ pub fn icosphere(subdivisions: u32) -> Vec<[f32; 3]> {
         [8, 6, 7],
         [9, 8, 1],
     ];
-    let mut triangles: Vec<[Vec3; 3]> = FACES
-        .iter()
-        .map(|f| [corners[f[0]], corners[f[1]], corners[f[2]]])
-        .collect();
-    for _ in 0..subdivisions {
+    for _ in 0..subdivisions.min(4) {
+        let mut midpoints: HashMap<(u16, u16), u16> = HashMap::new();
+        let mut midpoint = |a: u16, b: u16, vertices: &mut Vec<Vec3>| {
+            *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                let p = (vertices[usize::from(a)] + vertices[usize::from(b)]).normalize();
+                vertices.push(p);
+                u16::try_from(vertices.len() - 1).unwrap_or(0)
+            })
+        };
         triangles = triangles
             .iter()
             .flat_map(|&[a, b, c]| {
-                let ab = (a + b).normalize();
-                let bc = (b + c).normalize();
-                let ca = (c + a).normalize();
+                let ab = midpoint(a, b, &mut vertices);
+                let bc = midpoint(b, c, &mut vertices);
+                let ca = midpoint(c, a, &mut vertices);
                 [[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]
             })
             .collect();
     }
-    triangles
-        .iter()
-        .flat_map(|t| t.map(|p| p.to_array()))
-        .collect()
+    Template {
+        vertices: vertices.iter().map(Vec3::to_array).collect(),
+        indices: triangles.into_iter().flatten().collect(),
+    }
 }
 
 /// One instance per vertex: its position.
@@ -117,15 +125,17 @@ mod tests {
 
     #[test]
     fn icosphere_is_a_closed_unit_sphere() {
-        for (subdivisions, triangles) in [(0, 20), (1, 80), (2, 320)] {
-            let vertices = icosphere(subdivisions);
-            assert_eq!(vertices.len(), triangles * 3);
-            for v in &vertices {
+        for (subdivisions, vertices, triangles) in [(0, 12, 20), (1, 42, 80), (2, 162, 320)] {
+            let sphere = icosphere(subdivisions);
+            assert_eq!(sphere.vertices.len(), vertices);
+            assert_eq!(sphere.triangle_count(), triangles);
+            for v in &sphere.vertices {
                 assert!((Vec3::from(*v).length() - 1.0).abs() < 1e-5);
             }
             // Outward winding: each triangle's normal points away from the center.
-            for t in vertices.chunks(3) {
-                let [a, b, c] = [t[0], t[1], t[2]].map(Vec3::from);
+            for t in sphere.indices.chunks(3) {
+                let [a, b, c] =
+                    [t[0], t[1], t[2]].map(|i| Vec3::from(sphere.vertices[usize::from(i)]));
                 assert!((b - a).cross(c - a).dot(a + b + c) > 0.0);
             }
         }
