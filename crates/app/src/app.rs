@@ -4,15 +4,16 @@
 use egui_extras::{Size, StripBuilder};
 
 use edgewise_core::{
-    formats::Format,
+    formats::{self, Format, SaveOptions},
     mesh::{Mesh, Structure, generate},
 };
 
 use crate::{
     GraphicsBackend,
     document::Document,
+    obj_editor::{EDITOR_FILE, ObjEditor},
     samples::{self, SampleData},
-    selection::{self, ElementKind, ElementRef},
+    selection::{self, ElementKind, ElementRef, Role},
     state::{AppState, Counts, HighlightState},
     tables::{self, TablesResponse},
     theme::Theme,
@@ -36,6 +37,8 @@ pub struct EdgewiseApp {
     styles_generation: Option<u64>,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
+    obj_editor: ObjEditor,
+    show_obj_editor: bool,
     /// The element under the pointer in the 3D view, for the message line.
     hovered: Option<Pick>,
     /// Kept so commands from JavaScript can ask for a new frame.
@@ -70,6 +73,8 @@ impl EdgewiseApp {
             styles: SceneStyles::default(),
             styles_generation: None,
             structure: Structure::WingedEdge,
+            obj_editor: ObjEditor::default(),
+            show_obj_editor: false,
             hovered: None,
             ctx: None,
         }
@@ -91,7 +96,7 @@ impl EdgewiseApp {
     ) -> Result<(), String> {
         let structure = structure.unwrap_or_else(|| self.default_structure_for(name));
         let loaded = Document::load(bytes, name, structure);
-        self.open(loaded)
+        self.open(loaded, true)
     }
 
     /// Opens a built-in sample by name (a file stem in meshes/).
@@ -115,7 +120,7 @@ impl EdgewiseApp {
                 Document::from_polygons(sample.name, &generate::torus(*nu, *nv), structure)
             }
         };
-        self.open(loaded)
+        self.open(loaded, true)
     }
 
     /// A table file opens as the structure it stores; PLY and OBJ as the
@@ -127,11 +132,13 @@ impl EdgewiseApp {
     }
 
     /// Shows a newly loaded document, or keeps the current one and reports why not.
-    fn open(&mut self, loaded: Result<Document, String>) -> Result<(), String> {
+    /// `frame` points the camera at the new mesh; the OBJ editor keeps the
+    /// student's view while they type.
+    fn open(&mut self, loaded: Result<Document, String>, frame: bool) -> Result<(), String> {
         match loaded {
             Ok(document) => {
                 self.structure = document.structure();
-                self.view.set_geometry(geometry(document.mesh()), true);
+                self.view.set_geometry(geometry(document.mesh()), frame);
                 self.document = Some(document);
                 self.styles_generation = None;
                 self.error = None;
@@ -174,6 +181,71 @@ impl EdgewiseApp {
     pub fn request_repaint(&self) {
         if let Some(ctx) = &self.ctx {
             ctx.request_repaint();
+        }
+    }
+
+    /// Opens or closes the OBJ editor; opening it writes the open mesh as OBJ
+    /// so a sample can be edited.
+    fn toggle_obj_editor(&mut self) {
+        self.show_obj_editor = !self.show_obj_editor;
+        if self.show_obj_editor
+            && self.obj_editor.text.is_empty()
+            && let Some(document) = &self.document
+            && let Ok(bytes) = formats::save(document.mesh(), Format::Obj, &SaveOptions::default())
+        {
+            self.obj_editor
+                .set_text(String::from_utf8_lossy(&bytes).into_owned());
+        }
+    }
+
+    fn obj_editor_ui(&mut self, ui: &mut egui::Ui) {
+        ui.strong("OBJ");
+        ui.weak("Edit the text: the mesh and its tables follow.");
+        if let Some(text) = self.obj_editor.ui(ui) {
+            let loaded = Document::load(text.as_bytes(), EDITOR_FILE, self.structure);
+            let first = self.document.is_none();
+            let result = self.open(loaded, first);
+            // The editor shows its own message; the view keeps the last good mesh.
+            self.obj_editor.error = result.err();
+            if self.obj_editor.error.is_some() {
+                self.error = None;
+            }
+        }
+    }
+
+    /// Half-edge walking from the keyboard: n successor, p predecessor,
+    /// t pair (twin), f face, v end vertex.
+    fn keyboard_walk(&mut self, ctx: &egui::Context) {
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        let Some(document) = &self.document else {
+            return;
+        };
+        if !matches!(document.mesh(), Mesh::Half(_)) {
+            return;
+        }
+        let role = ctx.input(|i| {
+            [
+                (egui::Key::N, Role::SuccessorEdge),
+                (egui::Key::P, Role::PredecessorEdge),
+                (egui::Key::T, Role::PairEdge),
+                (egui::Key::F, Role::Face),
+                (egui::Key::V, Role::EndVertex),
+            ]
+            .into_iter()
+            .find(|(key, _)| i.key_pressed(*key))
+            .map(|(_, role)| role)
+        });
+        let target = role.and_then(|role| {
+            document
+                .highlights()
+                .iter()
+                .find(|h| h.role == role)
+                .map(|h| h.element)
+        });
+        if let Some(target) = target {
+            self.select(Some(target)).ok();
         }
     }
 
@@ -274,6 +346,13 @@ impl EdgewiseApp {
                 self.switch_structure(structure).ok();
             }
             ui.separator();
+            if ui
+                .selectable_label(self.show_obj_editor, "OBJ editor")
+                .on_hover_text("Type or paste OBJ text; the mesh and tables follow as you type")
+                .clicked()
+            {
+                self.toggle_obj_editor();
+            }
             self.view_options_menu_ui(ui);
             let theme_label = if self.theme.dark {
                 "Light theme"
@@ -444,6 +523,13 @@ impl eframe::App for EdgewiseApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frames += 1;
         egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
+        self.keyboard_walk(ui.ctx());
+        if self.show_obj_editor {
+            egui::Panel::right("obj_editor")
+                .resizable(true)
+                .default_size(320.0)
+                .show(ui, |ui| self.obj_editor_ui(ui));
+        }
         egui::Panel::bottom("tables")
             .resizable(true)
             .default_size(260.0)

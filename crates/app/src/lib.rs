@@ -6,6 +6,7 @@
 mod app;
 mod backend;
 mod document;
+mod obj_editor;
 pub mod samples;
 pub mod selection;
 pub mod state;

@@ -150,3 +150,63 @@ fn a_broken_file_keeps_the_previous_mesh() {
     harness.run();
     assert!(harness.state().state().error.is_none());
 }
+
+#[test]
+fn the_obj_editor_rebuilds_as_you_type_and_keeps_the_last_good_mesh() {
+    let mut harness = harness();
+    harness.get_by_label("OBJ editor").click();
+    harness.run();
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.focus();
+    editor.type_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    harness.run_steps(60);
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("editor.obj"));
+    assert_eq!(state.counts.faces, 1);
+
+    // A face naming a missing vertex: the message names the line, the mesh stays.
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.type_text("f 1 2 7\n");
+    harness.run_steps(60);
+    let state = harness.state().state();
+    assert_eq!(state.counts.faces, 1, "the last good mesh stays");
+    harness.get_by_label_contains("editor.obj:5:");
+}
+
+#[test]
+fn keys_walk_a_half_edge_mesh() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("cube", Some(Structure::HalfEdge))
+        .unwrap();
+    harness
+        .state_mut()
+        .select(Some(edgewise_app::selection::ElementRef {
+            kind: edgewise_app::selection::ElementKind::Edge,
+            id: 0,
+        }))
+        .unwrap();
+    harness.run();
+    let mesh = sample_mesh("cube.htb", Structure::HalfEdge);
+    let Mesh::Half(m) = &mesh else { unreachable!() };
+    let h0 = m.half_edges()[0];
+
+    harness.key_press(egui::Key::N);
+    harness.run();
+    let selected = harness.state().state().selection.unwrap();
+    assert_eq!(selected.id as usize, h0.successor_edge.index());
+
+    harness.key_press(egui::Key::T);
+    harness.run();
+    let selected = harness.state().state().selection.unwrap();
+    assert_eq!(
+        selected.id as usize,
+        m.half_edges()[h0.successor_edge.index()].pair_edge.index()
+    );
+
+    harness.key_press(egui::Key::V);
+    harness.run();
+    let selected = harness.state().state().selection.unwrap();
+    assert_eq!(selected.kind, edgewise_app::selection::ElementKind::Vertex);
+}
