@@ -14,8 +14,15 @@ fn samples() -> Vec<(String, Vec<u8>)> {
         .map(|entry| entry.path())
         .filter(|path| path.extension().is_some_and(|ext| ext != "md"))
         .map(|path| {
-            let name = path.file_name().unwrap().to_string_lossy().into_owned();
-            (name, std::fs::read(&path).unwrap())
+            let name = path
+                .file_name()
+                .expect("a directory entry has a name")
+                .to_string_lossy()
+                .into_owned();
+            (
+                name,
+                std::fs::read(&path).expect("a sample file is readable"),
+            )
         })
         .collect();
     samples.sort();
