@@ -11,6 +11,8 @@ use crate::{
 
 const CHROMIUM: &str = "/usr/bin/chromium";
 const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+const VULKAN_LOADER: &str = "/usr/lib/x86_64-linux-gnu/libvulkan.so.1";
+const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 const BROWSER_TESTS: &str = "edgewise-browser-tests";
 /// The crates that are compiled for the browser.
 const WASM_PACKAGES: [&str; 2] = ["edgewise-core", "edgewise-app"];
@@ -42,6 +44,14 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
     timings.step("clippy (wasm32)", || wasm_lints(root, toolchain))?;
     timings.step("native tests", || {
+        // The 3D view's render tests draw on the CPU through lavapipe.
+        process::ensure_debian_packages(
+            "the 3D view's render tests (software Vulkan)",
+            &[
+                (VULKAN_LOADER, "libvulkan1"),
+                (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
+            ],
+        )?;
         process::run(
             "native tests",
             cargo().args([
