@@ -132,6 +132,52 @@ impl Camera {
     }
 }
 
+impl Camera {
+    /// Points at the box `min`–`max` from just far enough away that its
+    /// corners fit in a viewport of the given aspect ratio, keeping the
+    /// direction. Tighter than a bounding sphere for flat or long meshes.
+    pub fn frame_box(&mut self, min: Vec3, max: Vec3, aspect: f32) {
+        let aspect = if aspect.is_finite() && aspect > 0.0 {
+            aspect
+        } else {
+            1.5
+        };
+        let center = (min + max) * 0.5;
+        let half = (max - min) * 0.5;
+        if !(center.is_finite() && half.is_finite()) || half.max_element() <= 0.0 {
+            self.frame(
+                if center.is_finite() {
+                    center
+                } else {
+                    Vec3::ZERO
+                },
+                1.0,
+                aspect,
+            );
+            return;
+        }
+        let back = self.backward();
+        let right = Vec3::Y.cross(back).normalize_or(Vec3::X);
+        let up = back.cross(right);
+        // A margin of about 8% on each side.
+        let tan_y = (FOV_Y * 0.5).tan() / 1.08;
+        let tan_x = tan_y * aspect;
+        let mut distance = 0.0_f32;
+        for corner in 0..8 {
+            let sign = |bit: u32| if corner & bit == 0 { -1.0 } else { 1.0 };
+            let c = half * Vec3::new(sign(1), sign(2), sign(4));
+            let (x, y, z) = (c.dot(right), c.dot(up), c.dot(back));
+            distance = distance.max(z + x.abs() / tan_x).max(z + y.abs() / tan_y);
+        }
+        self.target = center.to_array();
+        self.distance = if distance.is_finite() && distance > 0.0 {
+            distance.clamp(1e-6, 1e9)
+        } else {
+            half.length().max(1e-6) * 3.0
+        };
+    }
+}
+
 /// World units covered by one point at `distance` in front of the eye.
 pub fn world_per_point(distance: f32, viewport_height: f32) -> f32 {
     2.0 * distance * (FOV_Y * 0.5).tan() / viewport_height.max(1.0)
@@ -314,6 +360,30 @@ mod tests {
             let (pos, _) = t.project(camera.target() + offset * 2.0).unwrap();
             assert!(viewport().contains(pos), "{pos:?}");
         }
+    }
+
+    #[test]
+    fn box_framing_fits_the_corners_tightly() {
+        let mut camera = Camera::default();
+        let (min, max) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(4.0, 4.0, 0.0));
+        camera.frame_box(min, max, 800.0 / 600.0);
+        let t = ViewTransforms::new(camera, viewport(), Vec3::new(2.0, 2.0, 0.0), 2.9);
+        let corners = [min, max, Vec3::new(4.0, 0.0, 0.0), Vec3::new(0.0, 4.0, 0.0)];
+        let projected: Vec<Pos2> = corners.iter().map(|&c| t.project(c).unwrap().0).collect();
+        assert!(
+            projected.iter().all(|p| viewport().contains(*p)),
+            "{projected:?}"
+        );
+        // Tight: some corner comes within 10% of an edge of the view.
+        let rect = Rect::from_points(&projected);
+        assert!(
+            rect.width() > viewport().width() * 0.8 || rect.height() > viewport().height() * 0.8,
+            "{rect:?}"
+        );
+        // A single point still gets a sensible camera.
+        camera.frame_box(Vec3::ONE, Vec3::ONE, 1.0);
+        assert_eq!(camera.target, [1.0; 3]);
+        assert!(camera.distance > 0.0 && camera.distance.is_finite());
     }
 
     #[test]

@@ -328,8 +328,11 @@ impl View3d {
 
     /// Frames the whole mesh.
     pub fn frame_all(&mut self) {
+        // Room for the vertex spheres and the labels above them.
+        let (min, max) = self.scene.bounds;
+        let room = Vec3::splat(self.scene.unit * 0.12);
         self.camera
-            .frame(self.scene.center, self.scene.radius, self.last_aspect);
+            .frame_box(min - room, max + room, self.last_aspect);
     }
 
     /// The camera, as plain data.

@@ -467,6 +467,34 @@ mod tests {
     }
 
     #[test]
+    fn concave_faces_are_picked_inside_only() {
+        // An L-shaped face: its notch (upper right) is background.
+        let scene = Scene::new(MeshGeometry {
+            positions: vec![
+                Vec3::new(0.0, 0.0, 0.0),
+                Vec3::new(1.0, 0.0, 0.0),
+                Vec3::new(1.0, 0.5, 0.0),
+                Vec3::new(0.5, 0.5, 0.0),
+                Vec3::new(0.5, 1.0, 0.0),
+                Vec3::new(0.0, 1.0, 0.0),
+            ],
+            edges: Vec::new(),
+            faces: vec![vec![0, 1, 2, 3, 4, 5]],
+            half_edges: false,
+        });
+        let face = PickFilter::Only(PickKind::Face);
+        assert_eq!(pick_at(&scene, Vec3::new(0.8, 0.8, 0.0), face), None);
+        assert_eq!(
+            pick_at(&scene, Vec3::new(0.25, 0.8, 0.0), face),
+            Some(Pick::Face(0))
+        );
+        assert_eq!(
+            pick_at(&scene, Vec3::new(0.8, 0.25, 0.0), face),
+            Some(Pick::Face(0))
+        );
+    }
+
+    #[test]
     fn ray_primitives() {
         let ray = Ray {
             origin: Vec3::new(0.0, 0.0, 5.0),

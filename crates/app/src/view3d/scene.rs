@@ -14,6 +14,8 @@ pub const HALF_EDGE_INSET: f32 = 0.14;
 /// The mesh with everything derived from it.
 pub struct Scene {
     pub geometry: MeshGeometry,
+    /// Corners of the box holding every vertex.
+    pub bounds: (Vec3, Vec3),
     /// Center and radius of a sphere holding every vertex.
     pub center: Vec3,
     pub radius: f32,
@@ -63,6 +65,7 @@ impl Scene {
         };
 
         // Bounds.
+        let mut bounds = (Vec3::ZERO, Vec3::ZERO);
         let (center, radius) = if geometry.positions.is_empty() {
             (Vec3::ZERO, 1.0)
         } else {
@@ -72,6 +75,7 @@ impl Scene {
                 max = max.max(*p);
             }
             if min.is_finite() && max.is_finite() {
+                bounds = (min, max);
                 let center = (min + max) * 0.5;
                 let radius = geometry
                     .positions
@@ -172,6 +176,7 @@ impl Scene {
 
         Self {
             geometry,
+            bounds,
             center,
             radius,
             unit,
