@@ -536,13 +536,32 @@ fn torus_20k_faces() {
     let started = Instant::now();
     view.set_geometry(geometry.clone(), true);
     let prepared = started.elapsed();
+    // A selection on a dense mesh: the three labels would overlap.
     let mut styles = styles_for(&geometry);
-    styles.faces[0].colour = Some(YELLOW);
+    styles.faces[0] = ElementStyle {
+        colour: Some(YELLOW),
+        faded: false,
+        label: Some("0: Left Face".to_owned()),
+    };
+    styles.edges[0] = ElementStyle {
+        colour: Some(GREEN),
+        faded: false,
+        label: Some("0: Incident Edge".to_owned()),
+    };
+    styles.vertices[0] = ElementStyle {
+        colour: Some(PURPLE),
+        faded: false,
+        label: Some("0: Selected Vertex".to_owned()),
+    };
     let options = ViewOptions::default();
     let started = Instant::now();
     let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
     let shown = started.elapsed();
     image.save("torus_20k.png");
+    let transforms = view.transforms(harness.screen());
+    if let Some((at, _)) = transforms.project(geometry.positions[0]) {
+        image.zoomed(at, 200, 2).save("torus_20k_labels_zoom.png");
+    }
     // Close up on the outer equator: the coarse arrow and sphere templates.
     view.set_camera(Camera {
         target: [2.6, 0.0, 0.0],

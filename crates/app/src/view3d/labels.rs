@@ -33,6 +33,19 @@ pub struct Overlay<'a> {
     pub palette: Palette,
 }
 
+/// Space between a label's text and its box.
+const LABEL_PADDING: Vec2 = vec2(3.0, 1.0);
+
+/// A label box laid out on screen.
+struct LaidOut {
+    placed: Placed,
+    galley: std::sync::Arc<egui::Galley>,
+    rect: Rect,
+    border: Option<Color32>,
+    /// Moved off its element to avoid another label.
+    moved: bool,
+}
+
 /// A label ready to place: where its box attaches on screen and how.
 struct Placed {
     pick: Pick,
@@ -112,40 +125,73 @@ impl Overlay<'_> {
         }
     }
 
-    /// Lays out and paints one label box; returns its rectangle.
-    fn paint_label(&self, placed: &Placed, border: Option<Color32>) -> Rect {
+    /// Lays a label box out where it belongs (not painted yet).
+    fn lay_out(&self, placed: Placed, border: Option<Color32>) -> LaidOut {
         let galley = self.painter.layout_no_wrap(
             self.text(placed.pick),
             self.font(),
             self.palette.label_text,
         );
-        let padding = vec2(3.0, 1.0);
-        let size = galley.size() + padding * 2.0;
+        let size = galley.size() + LABEL_PADDING * 2.0;
         let min = if placed.above {
             placed.anchor - vec2(size.x * 0.5, size.y)
         } else {
             placed.anchor - size * 0.5
         };
-        let rect = Rect::from_min_size(min, size);
-        let corner = match placed.pick {
-            Pick::Vertex(_) => size.y * 0.5,
+        LaidOut {
+            rect: Rect::from_min_size(min, size),
+            placed,
+            galley,
+            border,
+            moved: false,
+        }
+    }
+
+    /// Moves a label up or down, a line at a time, to the first place where
+    /// it overlaps nothing already placed (it stays put if there is none).
+    fn nudge(label: &mut LaidOut, occupied: &Occupancy) {
+        let step = label.rect.height() + 2.0;
+        for k in [0.0, -1.0, 1.0, -2.0, 2.0, -3.0, 3.0, -4.0, 4.0] {
+            let rect = label.rect.translate(vec2(0.0, k * step));
+            if occupied.is_free(rect) {
+                label.moved = k != 0.0;
+                label.rect = rect;
+                return;
+            }
+        }
+    }
+
+    /// Paints a laid-out label, with a leader line back to its element if it
+    /// was moved.
+    fn paint_label(&self, label: &LaidOut) {
+        let corner = match label.placed.pick {
+            Pick::Vertex(_) => label.rect.height() * 0.5,
             Pick::Edge(_) => 2.0,
             Pick::Face(_) => 0.0,
         };
-        let stroke = match border {
+        let stroke = match label.border {
             Some(colour) => Stroke::new(1.5, colour),
             None => Stroke::new(1.0, self.palette.label_stroke),
         };
+        if label.moved {
+            let anchor = label.placed.anchor;
+            self.painter.line_segment(
+                [anchor, label.rect.clamp(anchor)],
+                Stroke::new(1.0, stroke.color),
+            );
+        }
         self.painter.rect(
-            rect,
+            label.rect,
             corner,
             self.palette.label_fill,
             stroke,
             StrokeKind::Inside,
         );
-        self.painter
-            .galley(rect.min + padding, galley, self.palette.label_text);
-        rect
+        self.painter.galley(
+            label.rect.min + LABEL_PADDING,
+            label.galley.clone(),
+            self.palette.label_text,
+        );
     }
 
     /// Paints the id/label boxes. `highlighted` lists the elements with a
@@ -154,46 +200,63 @@ impl Overlay<'_> {
         if self.options.draw_ids == DrawIds::Never {
             return;
         }
-        // Highlighted labels: all of them, far ones first so near ones are
-        // painted on top.
+        // Highlighted labels: all of them; nearest placed first, each moved
+        // off the ones before it, then painted far to near.
         let mut important: Vec<Placed> = highlighted
             .iter()
             .filter(|&&p| Some(p) != hovered)
             .filter_map(|&p| self.place(p))
             .collect();
-        important.sort_by(|a, b| b.depth.total_cmp(&a.depth));
-
+        important.sort_by(|a, b| a.depth.total_cmp(&b.depth));
         let mut occupied = Occupancy::new(self.font().size);
-        let mut rects = Vec::with_capacity(important.len());
+        // Highlighted vertices stay uncovered: labels move off their spheres.
         for placed in &important {
-            let border = self.element_style(placed.pick).and_then(|s| s.colour);
-            rects.push(self.paint_label(placed, border));
+            if let Pick::Vertex(v) = placed.pick
+                && let Some((pos, depth)) = self.transforms.project(self.scene.position(v))
+            {
+                let radius =
+                    (self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX).max(4.0) + 1.0;
+                occupied.claim(Rect::from_center_size(pos, Vec2::splat(radius * 2.0 + 2.0)));
+            }
         }
-        for rect in &rects {
-            occupied.claim(*rect);
+        let mut laid_out = Vec::with_capacity(important.len());
+        for placed in important {
+            let border = self.element_style(placed.pick).and_then(|s| s.colour);
+            let mut label = self.lay_out(placed, border);
+            Self::nudge(&mut label, &occupied);
+            occupied.claim(label.rect);
+            laid_out.push(label);
+        }
+        let hover_label = hovered.and_then(|pick| self.place(pick)).map(|placed| {
+            let mut label = self.lay_out(placed, Some(self.palette.hover));
+            Self::nudge(&mut label, &occupied);
+            label
+        });
+        if let Some(label) = &hover_label {
+            occupied.claim(label.rect);
         }
 
         if self.options.draw_ids == DrawIds::Always {
             let mut rest = self.visible_unhighlighted();
             rest.sort_by(|a, b| a.depth.total_cmp(&b.depth));
             let mut drawn = 0;
-            for placed in &rest {
+            for placed in rest {
                 if drawn >= MAX_LABELS {
                     break;
                 }
-                let estimate = self.estimate_rect(placed);
+                let estimate = self.estimate_rect(&placed);
                 if occupied.is_free(estimate) {
                     occupied.claim(estimate);
-                    self.paint_label(placed, None);
+                    self.paint_label(&self.lay_out(placed, None));
                     drawn += 1;
                 }
             }
         }
-
-        if let Some(pick) = hovered
-            && let Some(placed) = self.place(pick)
-        {
-            self.paint_label(&placed, Some(self.palette.hover));
+        for label in laid_out.iter().rev() {
+            self.paint_label(label);
+        }
+        if let Some(label) = &hover_label {
+            self.paint_label(label);
         }
     }
 

@@ -34,9 +34,10 @@ fn vs_arrow(
     let head_length = min(frame.sizes.w * emphasis, 0.5 * len);
     // At least about a pixel wide, so a dense mesh reads as a steady wireframe.
     let pixel = pixel_size(a + dir * (0.5 * len));
-    let shaft_radius = max(frame.sizes.y * emphasis, 0.6 * pixel);
+    // Highlighted arrows are at least three pixels thick.
+    let shaft_radius = max(frame.sizes.y * emphasis, (0.6 + 0.9 * extra.x) * pixel);
     out.colour = vec4<f32>(fade_small(colour.rgb, len / max(pixel, 1e-30), 24.0, extra.x + extra.y), colour.a);
-    let head_radius = max(frame.sizes.z * emphasis, shaft_radius);
+    let head_radius = max(frame.sizes.z * emphasis, shaft_radius * (1.0 + 0.8 * extra.x));
 
     var helper = vec3<f32>(0.0, 1.0, 0.0);
     if abs(dir.y) > 0.9 {

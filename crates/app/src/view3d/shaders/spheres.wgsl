@@ -9,7 +9,9 @@ fn vs_sphere(
     @location(3) extra: vec4<f32>,
 ) -> LitOut {
     let pixel = pixel_size(center);
-    let radius = max(frame.sizes.x * (1.0 + 0.35 * extra.x), 0.9 * pixel);
+    // At least about a pixel, and a highlighted sphere at least four, so it
+    // stays visible on a dense mesh.
+    let radius = max(frame.sizes.x * (1.0 + 0.35 * extra.x), (0.9 + 3.1 * extra.x) * pixel);
     let world = center + unit * radius;
     var out: LitOut;
     out.clip = frame.clip_from_world * vec4<f32>(world, 1.0);
