@@ -6,6 +6,8 @@ struct FaceOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
     @location(1) colour: vec4<f32>,
+    // 1 for a highlighted face.
+    @location(2) highlighted: f32,
 };
 
 @vertex
@@ -18,6 +20,7 @@ fn vs_face(
     out.clip = frame.clip_from_world * vec4<f32>(position, 1.0);
     out.world = position;
     out.colour = colour;
+    out.highlighted = extra.x;
     return out;
 }
 
@@ -33,6 +36,9 @@ fn fs_face_transparent(in: FaceOut) -> @location(0) vec4<f32> {
 
 @fragment
 fn fs_face_solid(in: FaceOut) -> @location(0) vec4<f32> {
-    let rgb = shade(in.colour.rgb, face_normal(in.world), in.world, 0.55);
+    // Base faces lean towards the background so edges and vertices stand
+    // out against them; highlighted faces keep their colour.
+    let base = mix(in.colour.rgb, frame.background.rgb, 0.45 * (1.0 - step(0.5, in.highlighted)));
+    let rgb = shade(base, face_normal(in.world), in.world, 0.6);
     return to_target(rgb, 1.0);
 }
