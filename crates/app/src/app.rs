@@ -17,9 +17,7 @@ use crate::{
     state::{AppState, Counts, HighlightState},
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{
-        DrawIds, EdgeGeometry, ElementStyle, MeshGeometry, Pick, SceneStyles, View3d, ViewOptions,
-    },
+    view3d::{DrawIds, ElementStyle, MeshGeometry, Pick, SceneStyles, View3d, ViewOptions},
 };
 
 /// The Edgewise application.
@@ -138,7 +136,8 @@ impl EdgewiseApp {
         match loaded {
             Ok(document) => {
                 self.structure = document.structure();
-                self.view.set_geometry(geometry(document.mesh()), frame);
+                self.view
+                    .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
                 self.document = Some(document);
                 self.styles_generation = None;
                 self.error = None;
@@ -169,7 +168,8 @@ impl EdgewiseApp {
         };
         match document.switch_structure(structure) {
             Ok(()) => {
-                self.view.set_geometry(geometry(document.mesh()), false);
+                self.view
+                    .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
                 self.styles_generation = None;
                 Ok(())
             }
@@ -544,46 +544,6 @@ impl eframe::App for EdgewiseApp {
     #[cfg(target_arch = "wasm32")]
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(&mut *self)
-    }
-}
-
-/// The mesh as the 3D view draws it.
-fn geometry(mesh: &Mesh) -> MeshGeometry {
-    let faces = mesh.to_polygons().faces().map(<[u32]>::to_vec).collect();
-    match mesh {
-        Mesh::Winged(m) => MeshGeometry {
-            positions: m.vertices().iter().map(|v| v.position).collect(),
-            edges: m
-                .edges()
-                .iter()
-                .map(|e| EdgeGeometry {
-                    start: e.start_vertex.index() as u32,
-                    end: e.end_vertex.index() as u32,
-                    face: None,
-                    pair: None,
-                })
-                .collect(),
-            faces,
-            half_edges: false,
-        },
-        Mesh::Half(m) => MeshGeometry {
-            positions: m.vertices().iter().map(|v| v.position).collect(),
-            edges: m
-                .half_edges()
-                .iter()
-                .enumerate()
-                .map(|(i, h)| EdgeGeometry {
-                    start: m
-                        .start_vertex(edgewise_core::mesh::HalfEdgeId::new(i as u32))
-                        .map_or(0, |v| v.index() as u32),
-                    end: h.end_vertex.index() as u32,
-                    face: h.face.map(|f| f.index() as u32),
-                    pair: Some(h.pair_edge.index() as u32),
-                })
-                .collect(),
-            faces,
-            half_edges: true,
-        },
     }
 }
 
