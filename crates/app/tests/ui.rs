@@ -1,7 +1,10 @@
 //! The app's UI logic, driven natively through `egui_kittest`: opening samples,
 //! linked selection through table cells, and switching structure.
 
-use edgewise_app::{EdgewiseApp, GraphicsBackend};
+use edgewise_app::{
+    EdgewiseApp, GraphicsBackend,
+    selection::{ElementKind, ElementRef},
+};
 use edgewise_core::{
     formats,
     mesh::{EdgeId, Mesh, Structure},
@@ -12,6 +15,23 @@ fn harness() -> Harness<'static, EdgewiseApp> {
     Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
         .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
+}
+
+/// A harness with `sample` open as `structure` and one element selected.
+fn harness_with_selection(
+    sample: &str,
+    structure: Option<Structure>,
+    kind: ElementKind,
+    id: u32,
+) -> Harness<'static, EdgewiseApp> {
+    let mut harness = harness();
+    let app = harness.state_mut();
+    app.load_sample(sample, structure)
+        .expect("the sample opens");
+    app.select(Some(ElementRef { kind, id }))
+        .expect("the element exists");
+    harness.run();
+    harness
 }
 
 fn sample_mesh(file: &str, structure: Structure) -> Mesh {
@@ -50,19 +70,7 @@ fn opening_a_sample_from_the_menu_shows_its_tables() {
 
 #[test]
 fn a_reference_cell_selects_what_it_refers_to() {
-    let mut harness = harness();
-    harness
-        .state_mut()
-        .load_sample("tetrahedron", None)
-        .unwrap();
-    harness
-        .state_mut()
-        .select(Some(edgewise_app::selection::ElementRef {
-            kind: edgewise_app::selection::ElementKind::Edge,
-            id: 0,
-        }))
-        .unwrap();
-    harness.run();
+    let mut harness = harness_with_selection("tetrahedron", None, ElementKind::Edge, 0);
 
     let state = harness.state().state();
     let roles: Vec<&str> = state.highlights.iter().map(|h| h.role.as_str()).collect();
@@ -106,19 +114,8 @@ fn a_reference_cell_selects_what_it_refers_to() {
 
 #[test]
 fn switching_structure_converts_and_keeps_the_selection() {
-    let mut harness = harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::WingedEdge))
-        .unwrap();
-    harness
-        .state_mut()
-        .select(Some(edgewise_app::selection::ElementRef {
-            kind: edgewise_app::selection::ElementKind::Face,
-            id: 4,
-        }))
-        .unwrap();
-    harness.run();
+    let mut harness =
+        harness_with_selection("cube", Some(Structure::WingedEdge), ElementKind::Face, 4);
     harness.get_by_label("Half-edge").click();
     harness.run();
     let state = harness.state().state();
@@ -175,19 +172,8 @@ fn the_obj_editor_rebuilds_as_you_type_and_keeps_the_last_good_mesh() {
 
 #[test]
 fn keys_walk_a_half_edge_mesh() {
-    let mut harness = harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::HalfEdge))
-        .unwrap();
-    harness
-        .state_mut()
-        .select(Some(edgewise_app::selection::ElementRef {
-            kind: edgewise_app::selection::ElementKind::Edge,
-            id: 0,
-        }))
-        .unwrap();
-    harness.run();
+    let mut harness =
+        harness_with_selection("cube", Some(Structure::HalfEdge), ElementKind::Edge, 0);
     let mesh = sample_mesh("cube.htb", Structure::HalfEdge);
     let Mesh::Half(m) = &mesh else { unreachable!() };
     let h0 = m.half_edges()[0];
@@ -208,5 +194,5 @@ fn keys_walk_a_half_edge_mesh() {
     harness.key_press(egui::Key::V);
     harness.run();
     let selected = harness.state().state().selection.unwrap();
-    assert_eq!(selected.kind, edgewise_app::selection::ElementKind::Vertex);
+    assert_eq!(selected.kind, ElementKind::Vertex);
 }
