@@ -56,37 +56,49 @@ pub fn listing(mesh: &Mesh) -> String {
     }
 }
 
-fn winged(mesh: &WingedEdgeMesh) -> String {
-    let mut out = String::from("winged-edge structure\n\n");
-    let rows: Vec<Vec<String>> = mesh
-        .vertices()
-        .iter()
+/// The vertex and face tables, which both structures lay out alike: each
+/// row's incident-edge reference as a raw id.
+fn vertex_and_face_tables(
+    out: &mut String,
+    vertices: impl Iterator<Item = (glam::Vec3, Option<u32>)>,
+    face_incident_edges: impl Iterator<Item = u32>,
+) {
+    let rows: Vec<Vec<String>> = vertices
         .enumerate()
-        .map(|(id, v)| {
+        .map(|(id, (position, incident_edge))| {
             vec![
                 id.to_string(),
-                v.position.x.to_string(),
-                v.position.y.to_string(),
-                v.position.z.to_string(),
-                or_dash(v.incident_edge.map(EdgeId::raw)),
+                position.x.to_string(),
+                position.y.to_string(),
+                position.z.to_string(),
+                or_dash(incident_edge),
             ]
         })
         .collect();
     table(
-        &mut out,
+        out,
         "vertices",
         &["id", "x", "y", "z", "incident edge"],
         &rows,
     );
     out.push('\n');
-    let rows: Vec<Vec<String>> = mesh
-        .faces()
-        .iter()
+    let rows: Vec<Vec<String>> = face_incident_edges
         .enumerate()
-        .map(|(id, f)| vec![id.to_string(), f.incident_edge.raw().to_string()])
+        .map(|(id, edge)| vec![id.to_string(), edge.to_string()])
         .collect();
-    table(&mut out, "faces", &["id", "incident edge"], &rows);
+    table(out, "faces", &["id", "incident edge"], &rows);
     out.push('\n');
+}
+
+fn winged(mesh: &WingedEdgeMesh) -> String {
+    let mut out = String::from("winged-edge structure\n\n");
+    vertex_and_face_tables(
+        &mut out,
+        mesh.vertices()
+            .iter()
+            .map(|v| (v.position, v.incident_edge.map(EdgeId::raw))),
+        mesh.faces().iter().map(|f| f.incident_edge.raw()),
+    );
     let rows: Vec<Vec<String>> = mesh
         .edges()
         .iter()
@@ -126,35 +138,13 @@ fn winged(mesh: &WingedEdgeMesh) -> String {
 
 fn half(mesh: &HalfEdgeMesh) -> String {
     let mut out = String::from("half-edge structure\n\n");
-    let rows: Vec<Vec<String>> = mesh
-        .vertices()
-        .iter()
-        .enumerate()
-        .map(|(id, v)| {
-            vec![
-                id.to_string(),
-                v.position.x.to_string(),
-                v.position.y.to_string(),
-                v.position.z.to_string(),
-                or_dash(v.incident_edge.map(HalfEdgeId::raw)),
-            ]
-        })
-        .collect();
-    table(
+    vertex_and_face_tables(
         &mut out,
-        "vertices",
-        &["id", "x", "y", "z", "incident edge"],
-        &rows,
+        mesh.vertices()
+            .iter()
+            .map(|v| (v.position, v.incident_edge.map(HalfEdgeId::raw))),
+        mesh.faces().iter().map(|f| f.incident_edge.raw()),
     );
-    out.push('\n');
-    let rows: Vec<Vec<String>> = mesh
-        .faces()
-        .iter()
-        .enumerate()
-        .map(|(id, f)| vec![id.to_string(), f.incident_edge.raw().to_string()])
-        .collect();
-    table(&mut out, "faces", &["id", "incident edge"], &rows);
-    out.push('\n');
     let rows: Vec<Vec<String>> = mesh
         .half_edges()
         .iter()
