@@ -10,15 +10,30 @@ use edgewise_core::{
 
 use crate::{
     GraphicsBackend,
+    algorithm::{Algorithms, Run, frame},
     document::Document,
     obj_editor::{EDITOR_FILE, ObjEditor},
+    paint::Paint,
     samples::{self, SampleData},
-    selection::{self, ElementKind, ElementRef, Role},
-    state::{AppState, Counts, HighlightState},
+    selection::{ElementKind, ElementRef, Role},
+    state::{AppState, Counts, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{DrawIds, ElementStyle, MeshGeometry, Pick, SceneStyles, View3d, ViewOptions},
+    view3d::{
+        DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, View3d, ViewOptions,
+    },
 };
+
+pub mod algorithm_ui;
+
+/// What the algorithm panel shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AlgorithmTab {
+    /// The algorithm view: choose, pick inputs, step.
+    Run,
+    /// The editor for new algorithms.
+    Write,
+}
 
 /// The Edgewise application.
 pub struct EdgewiseApp {
@@ -31,8 +46,16 @@ pub struct EdgewiseApp {
     view: View3d,
     view_options: ViewOptions,
     styles: SceneStyles,
-    /// The document generation `styles` were derived from.
-    styles_generation: Option<u64>,
+    /// What the views colour: the selection, or the trace's current step.
+    paint: Paint,
+    /// (document generation, algorithm generation, dark) `paint` and
+    /// `styles` were derived from.
+    paint_key: Option<(u64, u64, bool)>,
+    /// The algorithm library, the run and its trace.
+    pub(crate) algorithms: Algorithms,
+    show_algorithm_panel: bool,
+    algorithm_tab: AlgorithmTab,
+    fonts_installed: bool,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
     obj_editor: ObjEditor,
@@ -69,7 +92,12 @@ impl EdgewiseApp {
             view: View3d::new(render_state),
             view_options: ViewOptions::default(),
             styles: SceneStyles::default(),
-            styles_generation: None,
+            paint: Paint::default(),
+            paint_key: None,
+            algorithms: Algorithms::default(),
+            show_algorithm_panel: false,
+            algorithm_tab: AlgorithmTab::Run,
+            fonts_installed: false,
             structure: Structure::WingedEdge,
             obj_editor: ObjEditor::default(),
             show_obj_editor: false,
@@ -139,7 +167,8 @@ impl EdgewiseApp {
                 self.view
                     .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
                 self.document = Some(document);
-                self.styles_generation = None;
+                self.algorithms.mesh_changed();
+                self.paint_key = None;
                 self.error = None;
                 Ok(())
             }
@@ -166,11 +195,15 @@ impl EdgewiseApp {
         let Some(document) = &mut self.document else {
             return Ok(());
         };
+        if document.structure() == structure {
+            return Ok(());
+        }
         match document.switch_structure(structure) {
             Ok(()) => {
                 self.view
                     .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-                self.styles_generation = None;
+                self.algorithms.mesh_changed();
+                self.paint_key = None;
                 Ok(())
             }
             Err(message) => Err(self.fail(message)),
@@ -259,6 +292,9 @@ impl EdgewiseApp {
     pub fn state(&self) -> AppState {
         let doc = self.document.as_ref();
         let counts = doc.map_or_else(Counts::default, |d| counts(d.mesh()));
+        // The frame derives the paint too; deriving it here lets commands
+        // from JavaScript read their effect before the next frame.
+        let paint = self.current_paint();
         AppState {
             version: edgewise_core::VERSION,
             backend: self.backend.as_str(),
@@ -267,60 +303,103 @@ impl EdgewiseApp {
             structure: doc.map(|d| structure_name(d.structure())),
             counts,
             selection: doc.and_then(Document::selection),
-            highlights: doc
-                .map(|d| {
-                    d.highlights()
-                        .iter()
-                        .map(|h| HighlightState {
-                            kind: h.element.kind,
-                            id: h.element.id,
-                            role: h.role.key(),
-                        })
-                        .collect()
+            highlights: paint
+                .painted
+                .iter()
+                .map(|p| HighlightState {
+                    kind: p.element.kind,
+                    id: p.element.id,
+                    role: p.role.clone(),
                 })
-                .unwrap_or_default(),
+                .collect(),
             error: self.error.clone(),
+            trace: self.trace_state(),
+            pending: self.pending_state(),
         }
     }
 
-    /// Re-derives colours and labels when the selection changed.
+    fn trace_state(&self) -> Option<TraceState> {
+        let session = self.algorithms.session()?;
+        let frame = frame::frame_at(&session.trace, session.step(), &self.theme);
+        Some(TraceState::new(session.trace.algorithm(), &frame))
+    }
+
+    fn pending_state(&self) -> Option<PendingState> {
+        let Run::Picking(pending) = &self.algorithms.run else {
+            return None;
+        };
+        Some(PendingState {
+            algorithm: pending.algorithm.name.clone(),
+            parameter: pending.missing().map(|p| p.name.clone()),
+            kind: pending.wanted_kind(),
+            prompt: pending.prompt(),
+        })
+    }
+
+    /// The selection's paint, or the current trace step's.
+    fn current_paint(&self) -> Paint {
+        if let Some(session) = self.algorithms.session() {
+            return frame::frame_at(&session.trace, session.step(), &self.theme).paint;
+        }
+        match &self.document {
+            Some(document) => Paint::from_selection(document.highlights(), &self.theme),
+            None => Paint::default(),
+        }
+    }
+
+    /// Re-derives colours and labels when the selection, the trace step or
+    /// the theme changed.
     fn refresh_styles(&mut self) {
         let Some(document) = &self.document else {
             return;
         };
-        if self.styles_generation == Some(document.generation()) {
+        let key = (
+            document.generation(),
+            self.algorithms.generation(),
+            self.theme.dark,
+        );
+        if self.paint_key == Some(key) {
             return;
         }
+        let paint = match self.algorithms.frame(&self.theme) {
+            Some(frame) => frame.paint.clone(),
+            None => Paint::from_selection(document.highlights(), &self.theme),
+        };
         let mesh = document.mesh();
+        let base = ElementStyle {
+            faded: paint.fade_others && !paint.is_empty(),
+            ..ElementStyle::default()
+        };
         let mut styles = SceneStyles {
             generation: self.styles.generation + 1,
-            vertices: vec![ElementStyle::default(); mesh.vertex_count()],
-            edges: vec![ElementStyle::default(); mesh.edge_row_count()],
-            faces: vec![ElementStyle::default(); mesh.face_count()],
-            pointers: Vec::new(),
+            vertices: vec![base.clone(); mesh.vertex_count()],
+            edges: vec![base.clone(); mesh.edge_row_count()],
+            faces: vec![base; mesh.face_count()],
+            pointers: paint
+                .pointers
+                .iter()
+                .map(|&(element, colour)| Pointer {
+                    target: pick_of(element),
+                    colour,
+                })
+                .collect(),
         };
-        let highlights = document.highlights();
-        let any = !highlights.is_empty();
-        for list in [&mut styles.vertices, &mut styles.edges, &mut styles.faces] {
-            for style in list.iter_mut() {
-                style.faded = any;
+        // An element's first entry gives its colour: paint in reverse.
+        for p in paint.painted.iter().rev() {
+            if let Some(style) = style_of(&mut styles, p.element) {
+                style.colour = Some(p.colour);
+                style.faded = false;
             }
         }
-        // Later roles must not repaint the selected element: go in reverse.
-        for h in highlights.iter().rev() {
-            let list = match h.element.kind {
-                ElementKind::Vertex => &mut styles.vertices,
-                ElementKind::Edge => &mut styles.edges,
-                ElementKind::Face => &mut styles.faces,
-            };
-            if let Some(style) = list.get_mut(h.element.id as usize) {
-                style.colour = Some(self.theme.role_colour(h.role));
+        for (&element, label) in &paint.labels {
+            if let Some(style) = style_of(&mut styles, element) {
+                style.label = Some(format!("{}: {label}", element.id));
                 style.faded = false;
-                style.label = selection::role_label(highlights, h.element);
             }
         }
         self.styles = styles;
-        self.styles_generation = Some(document.generation());
+        self.paint = paint;
+        self.paint_key = Some(key);
     }
 
     fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
@@ -353,6 +432,7 @@ impl EdgewiseApp {
             {
                 self.toggle_obj_editor();
             }
+            self.algorithm_menu_ui(ui);
             self.view_options_menu_ui(ui);
             let theme_label = if self.theme.dark {
                 "Light theme"
@@ -366,7 +446,7 @@ impl EdgewiseApp {
                     Theme::dark()
                 };
                 self.theme.apply(ui.ctx());
-                self.styles_generation = None;
+                self.paint_key = None;
             }
             ui.separator();
             if let Some(doc) = &self.document {
@@ -408,7 +488,9 @@ impl EdgewiseApp {
         let Some(document) = &self.document else {
             return;
         };
-        let text = if let Some(pick) = hovered {
+        let text = if let Some(text) = self.algorithm_message() {
+            text
+        } else if let Some(pick) = hovered {
             let e = element_of(pick);
             format!("{} {}: click to select", e.kind.title(), e.id)
         } else if let Some(first) = document.highlights().first() {
@@ -461,14 +543,7 @@ impl EdgewiseApp {
         let mut response = TablesResponse::default();
         let mut table = |ui: &mut egui::Ui, kind: ElementKind, title: &str| {
             ui.strong(title);
-            tables::table_ui(
-                ui,
-                document.mesh(),
-                kind,
-                document.highlights(),
-                &self.theme,
-                &mut response,
-            );
+            tables::table_ui(ui, document.mesh(), kind, &self.paint, &mut response);
         };
         let edge_title = match document.mesh() {
             Mesh::Winged(_) => "Edges",
@@ -484,7 +559,7 @@ impl EdgewiseApp {
                 strip.cell(|ui| table(ui, ElementKind::Vertex, "Vertices"));
             });
         if let Some(clicked) = response.clicked {
-            self.select(Some(clicked)).ok();
+            self.element_clicked(Some(clicked));
         }
     }
 
@@ -497,6 +572,7 @@ impl EdgewiseApp {
         }
         self.refresh_styles();
         self.view_options.dark = self.theme.dark;
+        self.view_options.pickable = self.pick_filter();
         let rect = ui.available_rect_before_wrap();
         let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
         let (view_rect, line_rect) =
@@ -512,9 +588,9 @@ impl EdgewiseApp {
             .inner;
         self.hovered = response.hovered;
         if let Some(pick) = response.clicked {
-            self.select(Some(element_of(pick))).ok();
+            self.element_clicked(Some(element_of(pick)));
         } else if response.background_clicked {
-            self.select(None).ok();
+            self.element_clicked(None);
         }
     }
 }
@@ -522,8 +598,21 @@ impl EdgewiseApp {
 impl eframe::App for EdgewiseApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frames += 1;
+        if !self.fonts_installed {
+            crate::theme::install_fonts(ui.ctx());
+            self.fonts_installed = true;
+        }
+        self.play_tick(ui.ctx());
         egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
         self.keyboard_walk(ui.ctx());
+        self.trace_keys(ui.ctx());
+        if self.show_algorithm_panel || self.algorithms.is_active() {
+            egui::Panel::right("algorithm")
+                .resizable(true)
+                .default_size(420.0)
+                .min_size(300.0)
+                .show(ui, |ui| self.algorithm_panel_ui(ui));
+        }
         if self.show_obj_editor {
             egui::Panel::right("obj_editor")
                 .resizable(true)
@@ -545,6 +634,24 @@ impl eframe::App for EdgewiseApp {
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(&mut *self)
     }
+}
+
+fn pick_of(element: ElementRef) -> Pick {
+    match element.kind {
+        ElementKind::Vertex => Pick::Vertex(element.id),
+        ElementKind::Edge => Pick::Edge(element.id),
+        ElementKind::Face => Pick::Face(element.id),
+    }
+}
+
+/// The style slot of `element`, if the mesh has it.
+fn style_of(styles: &mut SceneStyles, element: ElementRef) -> Option<&mut ElementStyle> {
+    let list = match element.kind {
+        ElementKind::Vertex => &mut styles.vertices,
+        ElementKind::Edge => &mut styles.edges,
+        ElementKind::Face => &mut styles.faces,
+    };
+    list.get_mut(element.id as usize)
 }
 
 fn element_of(pick: Pick) -> ElementRef {

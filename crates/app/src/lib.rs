@@ -3,10 +3,12 @@
 //! The same [`EdgewiseApp`] runs natively (a desktop window, used for
 //! development and UI tests) and in the browser (see `web`).
 
+pub mod algorithm;
 mod app;
 mod backend;
 mod document;
 mod obj_editor;
+pub mod paint;
 pub mod samples;
 pub mod selection;
 pub mod state;
@@ -17,5 +19,5 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-pub use app::{EdgewiseApp, parse_structure, structure_name};
+pub use app::{EdgewiseApp, algorithm_ui::Argument, parse_structure, structure_name};
 pub use backend::GraphicsBackend;

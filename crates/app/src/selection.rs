@@ -235,13 +235,18 @@ pub fn highlights(mesh: &Mesh, selected: ElementRef) -> Vec<Highlight> {
 /// The label of `element` in the 3D view: its id and every role it plays,
 /// e.g. "7: Selected Edge" or "3: Left Predecessor, Right Successor".
 pub fn role_label(highlights: &[Highlight], element: ElementRef) -> Option<String> {
+    role_titles(highlights, element).map(|titles| format!("{}: {titles}", element.id))
+}
+
+/// Every role `element` plays, e.g. "Left Predecessor, Right Successor".
+pub fn role_titles(highlights: &[Highlight], element: ElementRef) -> Option<String> {
     let selected_kind = highlights.first()?.element.kind;
     let roles: Vec<String> = highlights
         .iter()
         .filter(|h| h.element == element)
         .map(|h| h.role.title(selected_kind))
         .collect();
-    (!roles.is_empty()).then(|| format!("{}: {}", element.id, roles.join(", ")))
+    (!roles.is_empty()).then(|| roles.join(", "))
 }
 
 #[cfg(test)]

@@ -3,9 +3,15 @@
 //! Browser tests and page authors read this instead of the pixels, so every
 //! field is plain data that serialises to JSON.
 
+use std::collections::BTreeMap;
+
+use edgewise_core::lang::{Algorithm, Structure};
 use serde::Serialize;
 
-use crate::selection::{ElementKind, ElementRef};
+use crate::{
+    algorithm::TraceFrame,
+    selection::{ElementKind, ElementRef},
+};
 
 /// A JSON-serialisable snapshot of what the app shows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -27,6 +33,79 @@ pub struct AppState {
     pub highlights: Vec<HighlightState>,
     /// The message of the last failed load or command, or null.
     pub error: Option<String>,
+    /// The trace being stepped through, or null.
+    pub trace: Option<TraceState>,
+    /// An algorithm waiting for its inputs, or null.
+    pub pending: Option<PendingState>,
+}
+
+/// Where a trace is, as `state().trace` reports it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct TraceState {
+    pub algorithm: String,
+    /// 'winged' or 'half'.
+    pub structure: &'static str,
+    /// 0 (inputs picked, nothing run) to `steps`.
+    pub step: usize,
+    pub steps: usize,
+    /// The 1-based source line of the operation shown.
+    pub line: u32,
+    /// [start, end] byte offsets of the expression in the algorithm's
+    /// source file, or null at step 0.
+    pub span: Option<[u32; 2]>,
+    /// Each variable's value: 'Edge 3', 'Integer 4', 'null'.
+    pub variables: BTreeMap<String, String>,
+    /// 'start', 'lookup', 'assign', 'compare', 'compute', 'mark',
+    /// 'highlight', 'message' or 'done'.
+    pub operation: &'static str,
+    /// Marked elements in marking order.
+    pub marked: Vec<ElementRef>,
+    pub done: bool,
+    /// The message line's sentence for this step.
+    pub message: String,
+    /// The run-time error that stopped the run, shown at its last step.
+    pub error: Option<String>,
+    /// The algorithm's `message` output so far.
+    pub output: Vec<String>,
+}
+
+impl TraceState {
+    pub fn new(algorithm: &Algorithm, frame: &TraceFrame) -> Self {
+        Self {
+            algorithm: algorithm.name.clone(),
+            structure: match algorithm.structure {
+                Structure::WingedEdge => "winged",
+                Structure::HalfEdge => "half",
+            },
+            step: frame.step,
+            steps: frame.steps,
+            line: frame.line,
+            span: frame.span.map(|(start, end)| [start, end]),
+            variables: frame
+                .variables
+                .iter()
+                .map(|v| (v.name.clone(), v.value.clone()))
+                .collect(),
+            operation: frame.operation,
+            marked: frame.marked.clone(),
+            done: frame.done,
+            message: frame.message.clone(),
+            error: frame.error.clone(),
+            output: frame.output.clone(),
+        }
+    }
+}
+
+/// An algorithm waiting for inputs.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct PendingState {
+    pub algorithm: String,
+    /// The parameter the next pick gives, or null when all are given.
+    pub parameter: Option<String>,
+    /// The kind of element that can be picked, or null.
+    pub kind: Option<ElementKind>,
+    /// "vertexAdjacentEdge: pick a Vertex for v".
+    pub prompt: Option<String>,
 }
 
 /// Table sizes. In a winged-edge mesh `halfedges` is twice `edges`, the

@@ -10,8 +10,8 @@ use egui::RichText;
 use egui_extras::{Column, TableBuilder};
 
 use crate::{
-    selection::{ElementKind, ElementRef, Highlight, Role},
-    theme::Theme,
+    paint::Paint,
+    selection::{ElementKind, ElementRef, Role},
 };
 
 const ROW_HEIGHT: f32 = 20.0;
@@ -30,17 +30,16 @@ enum Cell {
     /// The row's own id: clicking it selects the row.
     Id(ElementRef),
     Text(String),
-    /// A reference to another element, tinted when it plays a role.
-    Link(Option<ElementRef>, Option<Role>),
+    /// A reference to another element, in the column named by its role.
+    Link(Option<ElementRef>, Role),
 }
 
-/// Draws one table of `kind` filling `ui`.
+/// Draws one table of `kind` filling `ui`, coloured by `paint`.
 pub fn table_ui(
     ui: &mut egui::Ui,
     mesh: &Mesh,
     kind: ElementKind,
-    highlights: &[Highlight],
-    theme: &Theme,
+    paint: &Paint,
     response: &mut TablesResponse,
 ) {
     let half = matches!(mesh, Mesh::Half(_));
@@ -112,21 +111,11 @@ pub fn table_ui(
             body.rows(ROW_HEIGHT, rows, |mut row| {
                 let id = row.index() as u32;
                 let element = ElementRef { kind, id };
-                let row_roles: Vec<Role> = highlights
-                    .iter()
-                    .filter(|h| h.element == element)
-                    .map(|h| h.role)
-                    .collect();
-                let row_colour = row_roles.first().map(|&r| theme.role_colour(r));
-                let selected_row = highlights.first().is_some_and(|h| h.element == element);
-                let mut cells =
-                    row_cells(mesh, element, if selected_row { highlights } else { &[] });
-                if let (Some(last), Some(first)) = (cells.last_mut(), highlights.first()) {
-                    let titles: Vec<String> = row_roles
-                        .iter()
-                        .map(|r| r.title(first.element.kind))
-                        .collect();
-                    *last = Cell::Text(titles.join(", "));
+                let row_colour = paint.colour_of(element);
+                let selected_row = paint.painted.first().is_some_and(|p| p.element == element);
+                let mut cells = row_cells(mesh, element);
+                if let (Some(last), Some(labels)) = (cells.last_mut(), paint.labels.get(&element)) {
+                    *last = Cell::Text(labels.clone());
                 }
                 let mut clicked_link = None;
                 for (i, cell) in cells.into_iter().enumerate() {
@@ -167,12 +156,9 @@ pub fn table_ui(
                             }
                             Cell::Link(Some(target), role) => {
                                 let mut text = RichText::new(target.id.to_string()).monospace();
-                                if let Some(role) = role {
-                                    text = text
-                                        .background_color(
-                                            theme.role_colour(role).gamma_multiply(0.55),
-                                        )
-                                        .strong();
+                                if let Some(tint) = paint.cells.get(&(element, role)) {
+                                    text =
+                                        text.background_color(tint.gamma_multiply(0.55)).strong();
                                 } else if dim {
                                     text = text.weak();
                                 }
@@ -204,15 +190,9 @@ pub fn table_ui(
         });
 }
 
-/// The cells of one row; references carry the role they play for the
-/// selected row (`highlights` is empty for other rows).
-fn row_cells(mesh: &Mesh, element: ElementRef, highlights: &[Highlight]) -> Vec<Cell> {
-    let role_of = |target: Option<ElementRef>, role: Role| -> Cell {
-        let plays = highlights
-            .iter()
-            .any(|h| h.role == role && Some(h.element) == target);
-        Cell::Link(target, plays.then_some(role))
-    };
+/// The cells of one row; each reference carries the role naming its column.
+fn row_cells(mesh: &Mesh, element: ElementRef) -> Vec<Cell> {
+    let role_of = |target: Option<ElementRef>, role: Role| -> Cell { Cell::Link(target, role) };
     let labels = Cell::Text(String::new());
     let index = element.id as usize;
     let id = Cell::Id(element);

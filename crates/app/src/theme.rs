@@ -3,7 +3,10 @@
 
 use egui::Color32;
 
-use crate::selection::Role;
+use crate::{algorithm::TraceRole, selection::Role};
+
+/// The bold code face for keywords (egui ships only a regular monospace).
+const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
 
 /// The app's visual theme.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,4 +60,34 @@ impl Theme {
         let (r, g, b) = if self.dark { dark } else { light };
         Color32::from_rgb(r, g, b)
     }
+
+    /// The journal's default trace colours (Table 3): blue output, green
+    /// lookup, yellow highlight, purple variables, light blue comparison.
+    /// Yellow is deepened to amber on the light theme to stay readable.
+    pub fn trace_colour(&self, role: TraceRole) -> Color32 {
+        let (light, dark) = match role {
+            TraceRole::Output => ((0x1d, 0x5b, 0xd8), (0x5c, 0x9d, 0xff)),
+            TraceRole::Lookup => ((0x23, 0x9b, 0x3c), (0x5f, 0xd8, 0x74)),
+            TraceRole::Highlighted => ((0xd4, 0x9a, 0x00), (0xff, 0xd4, 0x3b)),
+            TraceRole::Variable => ((0x8a, 0x3f, 0xcf), (0xc4, 0x8e, 0xf5)),
+            TraceRole::Compared => ((0x0f, 0xa5, 0xc4), (0x66, 0xd9, 0xef)),
+        };
+        let (r, g, b) = if self.dark { dark } else { light };
+        Color32::from_rgb(r, g, b)
+    }
+}
+
+/// Registers the bold code face as the font family
+/// [`crate::algorithm::highlight::BOLD`]. Call before any text is laid out
+/// in the first frame, so it applies at once.
+pub fn install_fonts(ctx: &egui::Context) {
+    use egui::epaint::text::{FontData, FontInsert, FontPriority, InsertFontFamily};
+    ctx.add_font(FontInsert::new(
+        "DejaVuSansMono-Bold",
+        FontData::from_static(CODE_BOLD),
+        vec![InsertFontFamily {
+            family: egui::FontFamily::Name(crate::algorithm::highlight::BOLD.into()),
+            priority: FontPriority::Highest,
+        }],
+    ));
 }

@@ -1,0 +1,374 @@
+//! What one step of a trace shows, following the journal's conventions
+//! (section 6 and Table 3):
+//! - a lookup colours its base and its result green, and tints the column
+//!   it read in the base's table row;
+//! - an assignment adds the variable's name to the element's label; every
+//!   element a variable refers to is purple;
+//! - a comparison colours both sides light blue and points an arrow at each
+//!   (two arrows when both sides are the same element);
+//! - marks are blue, persistent, and lowest in priority;
+//! - `highlight` is yellow;
+//! - everything else fades.
+//!
+//! Steps are numbered as the step slider shows them: step 0 is the moment the
+//! inputs are picked, step k the moment after the k-th operation.
+
+use std::collections::HashMap;
+
+use edgewise_core::lang::{Algorithm, Element, StepKind, Trace, Type, Value};
+use serde::Serialize;
+
+use crate::{
+    paint::{Paint, Painted},
+    selection::{ElementKind, ElementRef, Role},
+    theme::Theme,
+};
+
+/// The journal's colour meanings (Table 3); the base colour is the view's
+/// own gray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TraceRole {
+    /// Blue: marked, the algorithm's output.
+    Output,
+    /// Green: the base and the result of the current lookup.
+    Lookup,
+    /// Yellow: highlighted by the algorithm.
+    Highlighted,
+    /// Purple: the value of some variable.
+    Variable,
+    /// Light blue: a side of the current comparison.
+    Compared,
+}
+
+impl TraceRole {
+    pub const ALL: [TraceRole; 5] = [
+        TraceRole::Output,
+        TraceRole::Lookup,
+        TraceRole::Highlighted,
+        TraceRole::Variable,
+        TraceRole::Compared,
+    ];
+
+    /// The name in `state().highlights` and in the colour settings.
+    pub fn key(self) -> &'static str {
+        match self {
+            TraceRole::Output => "marked",
+            TraceRole::Lookup => "lookup",
+            TraceRole::Highlighted => "highlighted",
+            TraceRole::Variable => "variable",
+            TraceRole::Compared => "compared",
+        }
+    }
+
+    /// The legend's wording.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            TraceRole::Output => "algorithm output (marked)",
+            TraceRole::Lookup => "in a lookup",
+            TraceRole::Highlighted => "highlighted",
+            TraceRole::Variable => "a variable refers to it",
+            TraceRole::Compared => "in a comparison",
+        }
+    }
+}
+
+/// A variable and its value at one step, as the algorithm view lists them.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct VariableView {
+    pub name: String,
+    pub ty: &'static str,
+    /// "Edge 13", "Integer 4", "Boolean true" or "null".
+    pub value: String,
+}
+
+/// Everything the views show for one step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TraceFrame {
+    /// 0..=steps.
+    pub step: usize,
+    pub steps: usize,
+    /// The 1-based source line of the operation shown (the header at step 0).
+    pub line: u32,
+    /// Byte offsets of the expression executed, in the algorithm's source.
+    pub span: Option<(u32, u32)>,
+    pub variables: Vec<VariableView>,
+    /// A short name of the operation: "lookup", "assign", "compare",
+    /// "compute", "mark", "highlight", "message", "done" or "start".
+    pub operation: &'static str,
+    /// The message line: this step in one sentence.
+    pub message: String,
+    pub marked: Vec<ElementRef>,
+    /// The run finished and this is its last step.
+    pub done: bool,
+    /// The run stopped on an error and this is the last step before it.
+    pub error: Option<String>,
+    /// The algorithm's `message` output so far.
+    pub output: Vec<String>,
+    pub paint: Paint,
+}
+
+/// An element of the trace as a table row.
+pub fn element_ref(element: Element) -> ElementRef {
+    let kind = match element {
+        Element::Vertex(_) => ElementKind::Vertex,
+        Element::Edge(_) => ElementKind::Edge,
+        Element::Face(_) => ElementKind::Face,
+    };
+    ElementRef {
+        kind,
+        id: element.index(),
+    }
+}
+
+/// "Edge 13", "Integer 4", "Boolean true", "null".
+pub fn value_text(value: Value) -> String {
+    match value {
+        Value::Null => "null".to_owned(),
+        Value::Vertex(i) => format!("Vertex {i}"),
+        Value::Edge(i) => format!("Edge {i}"),
+        Value::Face(i) => format!("Face {i}"),
+        Value::Integer(n) => format!("Integer {n}"),
+        Value::Boolean(b) => format!("Boolean {b}"),
+    }
+}
+
+/// The table column a lookup reads, named by its selection role.
+pub fn column_of(field: edgewise_core::lang::Field) -> Role {
+    use edgewise_core::lang::Field;
+    match field {
+        Field::IncidentEdge => Role::IncidentEdge,
+        Field::StartVertex => Role::StartVertex,
+        Field::EndVertex => Role::EndVertex,
+        Field::LeftFace => Role::LeftFace,
+        Field::RightFace => Role::RightFace,
+        Field::LeftPredecessor => Role::LeftPredecessor,
+        Field::LeftSuccessor => Role::LeftSuccessor,
+        Field::RightPredecessor => Role::RightPredecessor,
+        Field::RightSuccessor => Role::RightSuccessor,
+        Field::AdjacentFace => Role::Face,
+        Field::PairEdge => Role::PairEdge,
+        Field::SuccessorEdge => Role::SuccessorEdge,
+        Field::PredecessorEdge => Role::PredecessorEdge,
+    }
+}
+
+/// Builds the frame of step `step` (clamped to the trace's length).
+pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
+    let algorithm = trace.algorithm();
+    let steps = trace.len();
+    let step = step.min(steps);
+    let view = step.checked_sub(1).and_then(|index| trace.step(index));
+    let variables = match step {
+        0 => trace.initial_variables().to_vec(),
+        k => trace.variables_at(k - 1),
+    };
+    let (marked, highlighted): (Vec<ElementRef>, Vec<ElementRef>) = match step {
+        0 => (Vec::new(), Vec::new()),
+        k => (
+            trace.marked_at(k - 1).map(element_ref).collect(),
+            trace.highlighted_at(k - 1).map(element_ref).collect(),
+        ),
+    };
+    let at_end = step == steps;
+    let error = trace
+        .outcome()
+        .error()
+        .filter(|_| at_end)
+        .map(ToString::to_string);
+    let done = at_end && error.is_none() && matches!(view.map(|v| v.kind), Some(StepKind::Done));
+    let output: Vec<String> = (0..step)
+        .filter_map(|i| match trace.step(i)?.kind {
+            StepKind::Message { text } => Some(text.to_owned()),
+            _ => None,
+        })
+        .collect();
+
+    let mut paint = Paint {
+        fade_others: true,
+        ..Paint::default()
+    };
+    let push = |paint: &mut Paint, element: ElementRef, role: TraceRole| {
+        paint.painted.push(Painted {
+            element,
+            colour: theme.trace_colour(role),
+            role: role.key().to_owned(),
+        });
+    };
+    // The current operation first: it outranks everything else.
+    if let Some(view) = view.filter(|_| !done) {
+        match view.kind {
+            StepKind::Lookup {
+                base,
+                field,
+                result,
+            } => {
+                if let Some(base) = base.element().map(element_ref) {
+                    push(&mut paint, base, TraceRole::Lookup);
+                    paint.cells.insert(
+                        (base, column_of(field)),
+                        theme.trace_colour(TraceRole::Lookup),
+                    );
+                }
+                if let Some(result) = result.element().map(element_ref) {
+                    push(&mut paint, result, TraceRole::Lookup);
+                }
+            }
+            StepKind::Compare { left, right, .. } => {
+                for side in [left, right] {
+                    if let Some(element) = side.element().map(element_ref) {
+                        push(&mut paint, element, TraceRole::Compared);
+                        paint
+                            .pointers
+                            .push((element, theme.trace_colour(TraceRole::Compared)));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    for &element in &highlighted {
+        push(&mut paint, element, TraceRole::Highlighted);
+    }
+    let mut names: HashMap<ElementRef, Vec<&str>> = HashMap::new();
+    if !done {
+        for (info, value) in algorithm.variables.iter().zip(&variables) {
+            if let Some(element) = value.element().map(element_ref) {
+                names.entry(element).or_default().push(&info.name);
+            }
+        }
+        let mut referred: Vec<ElementRef> = names.keys().copied().collect();
+        referred.sort_by_key(|e| (e.kind as u8, e.id));
+        for element in referred {
+            push(&mut paint, element, TraceRole::Variable);
+        }
+    }
+    for &element in &marked {
+        push(&mut paint, element, TraceRole::Output);
+    }
+    paint.labels = names
+        .into_iter()
+        .map(|(element, names)| (element, names.join(", ")))
+        .collect();
+
+    let (line, span) = match view {
+        Some(view) => (view.line, Some((view.span.start, view.span.end))),
+        None => (algorithm.first_line, None),
+    };
+    let message = match (&error, view) {
+        (Some(error), _) => format!("Stopped at {error}"),
+        (None, None) => format!(
+            "{} is ready: step forward to run it{}",
+            algorithm.name,
+            inputs_text(algorithm, &variables)
+        ),
+        (None, Some(view)) => describe(algorithm, view.kind, view.span, &marked),
+    };
+    TraceFrame {
+        step,
+        steps,
+        line,
+        span,
+        variables: algorithm
+            .variables
+            .iter()
+            .zip(&variables)
+            .map(|(info, &value)| VariableView {
+                name: info.name.clone(),
+                ty: type_name(info.ty),
+                value: value_text(value),
+            })
+            .collect(),
+        operation: view.map_or("start", |v| operation_name(v.kind)),
+        message,
+        marked,
+        done,
+        error,
+        output,
+        paint,
+    }
+}
+
+fn type_name(ty: Type) -> &'static str {
+    ty.name()
+}
+
+fn operation_name(kind: StepKind<'_>) -> &'static str {
+    match kind {
+        StepKind::Lookup { .. } => "lookup",
+        StepKind::Assign { .. } => "assign",
+        StepKind::Compare { .. } => "compare",
+        StepKind::Compute { .. } => "compute",
+        StepKind::Mark { .. } => "mark",
+        StepKind::Highlight { .. } => "highlight",
+        StepKind::Message { .. } => "message",
+        StepKind::Done => "done",
+    }
+}
+
+/// " with v = vertex 1", or "" without parameters.
+fn inputs_text(algorithm: &Algorithm, variables: &[Value]) -> String {
+    let inputs: Vec<String> = algorithm
+        .params()
+        .zip(variables)
+        .map(|(p, v)| format!("{} = {v}", p.name))
+        .collect();
+    if inputs.is_empty() {
+        String::new()
+    } else {
+        format!(" with {}", inputs.join(", "))
+    }
+}
+
+/// One sentence for the message line.
+fn describe(
+    algorithm: &Algorithm,
+    kind: StepKind<'_>,
+    span: edgewise_core::lang::Span,
+    marked: &[ElementRef],
+) -> String {
+    let code = algorithm.snippet(span);
+    match kind {
+        StepKind::Lookup { base, result, .. } => {
+            format!("Lookup {code}: the table row of {base} gives {result}")
+        }
+        StepKind::Assign { variable, value } => {
+            let name = algorithm
+                .variables
+                .get(variable)
+                .map_or("?", |v| v.name.as_str());
+            format!("Assignment: {name} := {value}")
+        }
+        StepKind::Compare {
+            op,
+            left,
+            right,
+            result,
+        } => format!(
+            "Comparison {code}: {left} {} {right} is {result}",
+            op.symbol()
+        ),
+        StepKind::Compute {
+            op,
+            left,
+            right,
+            result,
+        } => match right {
+            Some(right) => format!("Compute {code}: {left} {} {right} = {result}", op.symbol()),
+            None => format!("Compute {code}: {} {left} = {result}", op.symbol()),
+        },
+        StepKind::Mark { element } => format!("Mark {element}: it joins the output"),
+        StepKind::Highlight { element } => format!("Highlight {element}"),
+        StepKind::Message { text } => format!("Message: {text}"),
+        StepKind::Done => {
+            let output: Vec<String> = marked
+                .iter()
+                .map(|e| format!("{} {}", e.kind.title().to_lowercase(), e.id))
+                .collect();
+            if output.is_empty() {
+                format!("{} is done; it marked nothing", algorithm.name)
+            } else {
+                format!("{} is done. Output: {}", algorithm.name, output.join(", "))
+            }
+        }
+    }
+}

@@ -1,0 +1,331 @@
+//! Algorithms: the library and the user's own, running one on the open mesh,
+//! and walking its trace in the 3D view, the tables and the algorithm view.
+//!
+//! - [`library`]: what the Algorithm menu offers;
+//! - [`session`]: picking inputs, then stepping through a recorded trace;
+//! - [`frame`]: what one step shows (the journal's colours and labels);
+//! - [`highlight`]: syntax colouring from the language's lexer;
+//! - [`panel`]: the algorithm view and its controls;
+//! - [`editor`]: writing, checking, opening and saving algorithms.
+
+pub mod editor;
+pub mod frame;
+pub mod highlight;
+pub mod library;
+pub mod panel;
+pub mod session;
+
+use std::collections::{BTreeSet, HashMap};
+use std::sync::Arc;
+
+use edgewise_core::{
+    lang::{Algorithm, Structure},
+    mesh::Mesh,
+};
+
+pub use frame::{TraceFrame, TraceRole};
+pub use library::{AlgorithmLibrary, Origin};
+pub use session::{PendingRun, Run, TraceSession};
+
+use crate::{selection::ElementRef, theme::Theme};
+
+/// Seconds between automatic steps when playing, by default.
+const DEFAULT_DELAY: f32 = 0.6;
+
+/// The algorithm side of the app.
+pub struct Algorithms {
+    pub library: AlgorithmLibrary,
+    pub run: Run,
+    /// Breakpoint lines, kept per algorithm across runs.
+    breakpoints: HashMap<(String, Structure), BTreeSet<u32>>,
+    /// Seconds between automatic steps.
+    pub delay: f32,
+    /// Bumped on every change of run or step, so views re-derive colours.
+    generation: u64,
+    /// The frame of the current step, and the (generation, dark) it is for.
+    frame: Option<((u64, bool), TraceFrame)>,
+    pub editor: editor::AlgorithmEditor,
+    /// Point size of the algorithm view's code.
+    pub code_size: f32,
+    /// The step the source view last scrolled to.
+    scrolled_to: Option<(u64, usize)>,
+    /// The colouring of the algorithm on show, keyed by its source.
+    highlighted: Option<(Arc<str>, highlight::Highlighted)>,
+}
+
+impl Default for Algorithms {
+    fn default() -> Self {
+        Self {
+            library: AlgorithmLibrary::shipped(),
+            run: Run::Idle,
+            breakpoints: HashMap::new(),
+            delay: DEFAULT_DELAY,
+            generation: 0,
+            frame: None,
+            editor: editor::AlgorithmEditor::default(),
+            code_size: 14.0,
+            scrolled_to: None,
+            highlighted: None,
+        }
+    }
+}
+
+impl Algorithms {
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    fn changed(&mut self) {
+        self.generation += 1;
+        self.frame = None;
+    }
+
+    /// Whether an algorithm is waiting for inputs or being traced.
+    pub fn is_active(&self) -> bool {
+        !matches!(self.run, Run::Idle)
+    }
+
+    /// The algorithm of the current run.
+    pub fn algorithm(&self) -> Option<&Arc<Algorithm>> {
+        match &self.run {
+            Run::Idle => None,
+            Run::Picking(pending) => Some(&pending.algorithm),
+            Run::Tracing(session) => Some(session.trace.algorithm()),
+        }
+    }
+
+    pub fn session(&self) -> Option<&TraceSession> {
+        match &self.run {
+            Run::Tracing(session) => Some(session),
+            _ => None,
+        }
+    }
+
+    fn session_mut(&mut self) -> Result<&mut TraceSession, String> {
+        match &mut self.run {
+            Run::Tracing(session) => Ok(session),
+            Run::Picking(pending) => Err(format!(
+                "{} is still waiting for its inputs",
+                pending.algorithm.name
+            )),
+            Run::Idle => Err("no algorithm is running".to_owned()),
+        }
+    }
+
+    /// Looks up `name` for the mesh's structure, explaining a miss.
+    pub fn find(&self, name: &str, structure: Structure) -> Result<Arc<Algorithm>, String> {
+        if let Some(algorithm) = self.library.find(name, structure) {
+            return Ok(Arc::clone(algorithm));
+        }
+        if self.library.exists_anywhere(name) {
+            let other = match structure {
+                Structure::WingedEdge => Structure::HalfEdge,
+                Structure::HalfEdge => Structure::WingedEdge,
+            };
+            return Err(format!(
+                "`{name}` is written for the {} structure and the mesh is {}; switch the structure to run it",
+                other.prose(),
+                structure.prose()
+            ));
+        }
+        Err(format!(
+            "there is no algorithm called `{name}`; the Algorithm menu lists them"
+        ))
+    }
+
+    /// Starts `algorithm`: it waits for its inputs, or runs at once if it
+    /// needs none. `inputs` are given up front (the JavaScript API).
+    pub fn begin(
+        &mut self,
+        algorithm: Arc<Algorithm>,
+        inputs: &[(String, edgewise_core::lang::Value)],
+        mesh: &Mesh,
+    ) -> Result<(), String> {
+        let mut pending = PendingRun::new(algorithm);
+        for (name, value) in inputs {
+            if !pending.algorithm.params().any(|p| p.name == *name) {
+                let names: Vec<&str> = pending
+                    .algorithm
+                    .params()
+                    .map(|p| p.name.as_str())
+                    .collect();
+                return Err(format!(
+                    "{} has no parameter `{name}` (its parameters: {})",
+                    pending.algorithm.name,
+                    if names.is_empty() {
+                        "none".to_owned()
+                    } else {
+                        names.join(", ")
+                    }
+                ));
+            }
+            pending.set(name, *value);
+        }
+        let complete = pending.missing().is_none();
+        let scalars = pending.has_scalar_inputs() && inputs.is_empty();
+        self.run = Run::Picking(pending);
+        self.changed();
+        if complete && !scalars {
+            self.start(mesh)?;
+        }
+        Ok(())
+    }
+
+    /// Gives the waiting algorithm a picked element; runs it once complete.
+    pub fn pick(&mut self, element: ElementRef, mesh: &Mesh) -> Result<(), String> {
+        let Run::Picking(pending) = &mut self.run else {
+            return Err("no algorithm is waiting for an input".to_owned());
+        };
+        pending.pick(element)?;
+        let ready = pending.missing().is_none() && !pending.has_scalar_inputs();
+        self.changed();
+        if ready {
+            self.start(mesh)?;
+        }
+        Ok(())
+    }
+
+    /// Records the waiting algorithm's run and stops at step 0. On an input
+    /// error the algorithm keeps waiting.
+    pub fn start(&mut self, mesh: &Mesh) -> Result<(), String> {
+        let Run::Picking(pending) = &self.run else {
+            return Err("no algorithm is waiting to start".to_owned());
+        };
+        let session = pending.start(mesh)?;
+        self.run = Run::Tracing(Box::new(session));
+        self.changed();
+        Ok(())
+    }
+
+    pub fn step(&mut self, n: usize) -> Result<(), String> {
+        self.session_mut()?.forward(n);
+        self.changed();
+        Ok(())
+    }
+
+    pub fn back(&mut self, n: usize) -> Result<(), String> {
+        self.session_mut()?.back(n);
+        self.changed();
+        Ok(())
+    }
+
+    pub fn goto(&mut self, k: usize) -> Result<(), String> {
+        self.session_mut()?.goto(k);
+        self.changed();
+        Ok(())
+    }
+
+    /// Stops the run; the mesh returns to its plain look.
+    pub fn abort(&mut self) -> Result<(), String> {
+        if !self.is_active() {
+            return Err("no algorithm is running".to_owned());
+        }
+        self.run = Run::Idle;
+        self.changed();
+        Ok(())
+    }
+
+    /// The mesh changed under the run (a new file, a structure switch): the
+    /// trace no longer describes it.
+    pub fn mesh_changed(&mut self) {
+        if self.is_active() {
+            self.run = Run::Idle;
+            self.changed();
+        }
+    }
+
+    pub fn set_playing(&mut self, playing: bool, now: f64) {
+        if let Run::Tracing(session) = &mut self.run {
+            if playing && session.at_end() {
+                session.goto(0);
+            }
+            session.playing = playing;
+            session.last_auto_step = now;
+            self.changed();
+        }
+    }
+
+    /// Advances a playing trace when its delay has passed; returns how long
+    /// to wait for the next step.
+    pub fn tick(&mut self, now: f64) -> Option<f64> {
+        let delay = f64::from(self.delay);
+        let breakpoints = self.breakpoints_of_current().cloned().unwrap_or_default();
+        let Run::Tracing(session) = &mut self.run else {
+            return None;
+        };
+        if !session.playing {
+            return None;
+        }
+        let due = session.last_auto_step + delay;
+        if now < due {
+            return Some(due - now);
+        }
+        session.auto_step(&breakpoints);
+        session.last_auto_step = now;
+        let playing = session.playing;
+        self.changed();
+        playing.then_some(delay)
+    }
+
+    fn key_of(algorithm: &Algorithm) -> (String, Structure) {
+        (algorithm.name.clone(), algorithm.structure)
+    }
+
+    fn breakpoints_of_current(&self) -> Option<&BTreeSet<u32>> {
+        self.breakpoints.get(&Self::key_of(self.algorithm()?))
+    }
+
+    /// The breakpoint lines of the current algorithm.
+    pub fn breakpoints(&self) -> BTreeSet<u32> {
+        self.breakpoints_of_current().cloned().unwrap_or_default()
+    }
+
+    pub fn toggle_breakpoint(&mut self, line: u32) {
+        let Some(algorithm) = self.algorithm() else {
+            return;
+        };
+        let set = self.breakpoints.entry(Self::key_of(algorithm)).or_default();
+        if !set.remove(&line) {
+            set.insert(line);
+        }
+        self.changed();
+    }
+
+    /// Jumps to the next step on a breakpoint line (or the end).
+    pub fn continue_to_breakpoint(&mut self) -> Result<(), String> {
+        let breakpoints = self.breakpoints();
+        let session = self.session_mut()?;
+        let target = session.next_breakpoint(&breakpoints);
+        session.goto(target);
+        self.changed();
+        Ok(())
+    }
+
+    /// The frame of the current step, derived once per change.
+    pub fn frame(&mut self, theme: &Theme) -> Option<&TraceFrame> {
+        let key = (self.generation, theme.dark);
+        let Run::Tracing(session) = &self.run else {
+            return None;
+        };
+        if self.frame.as_ref().is_none_or(|(k, _)| *k != key) {
+            let frame = frame::frame_at(&session.trace, session.step(), theme);
+            self.frame = Some((key, frame));
+        }
+        self.frame.as_ref().map(|(_, frame)| frame)
+    }
+
+    /// The syntax colouring of `algorithm`'s source, cached.
+    fn highlighted(&mut self, source: &Arc<str>) -> &highlight::Highlighted {
+        if self
+            .highlighted
+            .as_ref()
+            .is_some_and(|(s, _)| !Arc::ptr_eq(s, source))
+        {
+            self.highlighted = None;
+        }
+        &self
+            .highlighted
+            .get_or_insert_with(|| (Arc::clone(source), highlight::Highlighted::new(source)))
+            .1
+    }
+}

@@ -1,0 +1,455 @@
+//! The algorithm view (the journal's Figure 7): controls, the step slider,
+//! the variables, and the source with the current line and the exact
+//! expression being executed highlighted. Clicking a line number toggles a
+//! breakpoint.
+
+use std::ops::Range;
+use std::sync::Arc;
+
+use edgewise_core::{
+    lang::{Algorithm, Structure, Type, Value},
+    mesh::Mesh,
+};
+use egui::{Align, Color32, RichText, Sense, vec2};
+
+use super::{Algorithms, Run, TraceFrame, TraceRole, highlight::CodeStyle};
+use crate::theme::Theme;
+
+impl Algorithms {
+    /// Draws the algorithm view. Returns a message when a command failed.
+    pub fn panel_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        theme: &Theme,
+        mesh: Option<&Mesh>,
+    ) -> Option<String> {
+        match &self.run {
+            Run::Idle => self.library_ui(ui, mesh),
+            Run::Picking(_) => self.picking_ui(ui, mesh),
+            Run::Tracing(_) => {
+                self.tracing_ui(ui, theme);
+                None
+            }
+        }
+    }
+
+    /// With nothing running: the algorithms for the mesh's structure, one
+    /// click from running.
+    fn library_ui(&mut self, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
+        let Some(mesh) = mesh else {
+            ui.weak("Open a mesh, then choose an algorithm to run on it.");
+            return None;
+        };
+        let structure = Structure::from(mesh.structure());
+        ui.label(format!(
+            "Algorithms for the {} structure. Choose one, then pick its inputs.",
+            structure.prose()
+        ));
+        ui.add_space(4.0);
+        let mut chosen = None;
+        egui::ScrollArea::vertical()
+            .auto_shrink([false, true])
+            .show(ui, |ui| {
+                for entry in self.library.entries() {
+                    let algorithm = &entry.algorithm;
+                    if algorithm.structure != structure {
+                        continue;
+                    }
+                    let button = ui
+                        .button(RichText::new(&algorithm.name).monospace())
+                        .on_hover_text(algorithm_hover(algorithm));
+                    if button.clicked() {
+                        chosen = Some(Arc::clone(algorithm));
+                    }
+                }
+            });
+        let algorithm = chosen?;
+        self.begin(algorithm, &[], mesh).err()
+    }
+
+    /// While inputs are being picked: the prompt, fields for Integer and
+    /// Boolean parameters, Start and Cancel.
+    fn picking_ui(&mut self, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
+        let Run::Picking(pending) = &mut self.run else {
+            return None;
+        };
+        let algorithm = Arc::clone(&pending.algorithm);
+        header_ui(ui, &algorithm);
+        ui.add_space(6.0);
+        match pending.prompt() {
+            Some(prompt) => {
+                ui.label(RichText::new(prompt).strong().size(16.0));
+                ui.weak("Click it in the 3D view or in its table; only that kind can be picked.");
+            }
+            None => {
+                ui.label("Every input is given.");
+            }
+        }
+        let mut edited = false;
+        for param in algorithm.params() {
+            let Some(slot) = pending.inputs.iter_mut().find(|(n, _)| *n == param.name) else {
+                continue;
+            };
+            ui.horizontal(|ui| {
+                ui.monospace(format!("{} : {}", param.name, param.ty));
+                match (param.ty, &mut slot.1) {
+                    (Type::Integer, Value::Integer(n)) => {
+                        edited |= ui.add(egui::DragValue::new(n)).changed();
+                    }
+                    (Type::Boolean, Value::Boolean(b)) => {
+                        edited |= ui.checkbox(b, "").changed();
+                    }
+                    (_, value) => {
+                        ui.label(super::frame::value_text(*value));
+                    }
+                }
+            });
+        }
+        let ready = pending.missing().is_none();
+        let mut start = false;
+        let mut cancel = false;
+        ui.horizontal(|ui| {
+            start = ui
+                .add_enabled(ready, egui::Button::new("Start"))
+                .on_disabled_hover_text("pick the remaining inputs first")
+                .clicked();
+            cancel = ui.button("Cancel").clicked();
+        });
+        if edited {
+            self.changed();
+        }
+        if cancel {
+            return self.abort().err();
+        }
+        if start && let Some(mesh) = mesh {
+            return self.start(mesh).err();
+        }
+        None
+    }
+
+    fn tracing_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
+        let Some(session) = self.session() else {
+            return;
+        };
+        let algorithm = Arc::clone(session.trace.algorithm());
+        let (step, steps, playing) = (session.step(), session.steps(), session.playing);
+        header_ui(ui, &algorithm);
+        self.controls_ui(ui, step, steps, playing);
+        let breakpoints = self.breakpoints();
+        let Some(frame) = self.frame(theme).cloned() else {
+            return;
+        };
+        status_ui(ui, &frame, theme);
+        ui.add_space(4.0);
+        variables_ui(ui, &frame, theme);
+        ui.separator();
+        self.source_ui(ui, &algorithm, &frame, &breakpoints, theme);
+        ui.separator();
+        legend_ui(ui, theme);
+    }
+
+    fn controls_ui(&mut self, ui: &mut egui::Ui, step: usize, steps: usize, playing: bool) {
+        let now = ui.input(|i| i.time);
+        ui.horizontal_wrapped(|ui| {
+            if ui
+                .add_enabled(step > 0, egui::Button::new("⏮"))
+                .on_hover_text("Go to the start (Home)")
+                .clicked()
+            {
+                self.goto(0).ok();
+            }
+            if ui
+                .add_enabled(step > 0, egui::Button::new("◀ Back"))
+                .on_hover_text("Step back (←)")
+                .clicked()
+            {
+                self.back(1).ok();
+            }
+            if ui
+                .add_enabled(step < steps, egui::Button::new("Step ▶"))
+                .on_hover_text("Step forward (Space or →)")
+                .clicked()
+            {
+                self.step(1).ok();
+            }
+            if ui
+                .add_enabled(step < steps, egui::Button::new("⏭"))
+                .on_hover_text("Go to the end (End)")
+                .clicked()
+            {
+                self.goto(steps).ok();
+            }
+            let play_label = if playing { "⏸ Pause" } else { "⏵ Play" };
+            if ui
+                .button(play_label)
+                .on_hover_text("Step automatically; stops at breakpoints (P)")
+                .clicked()
+            {
+                self.set_playing(!playing, now);
+            }
+            if !self.breakpoints().is_empty()
+                && ui
+                    .add_enabled(step < steps, egui::Button::new("⏩ Breakpoint"))
+                    .on_hover_text("Go to the next step on a breakpoint line")
+                    .clicked()
+            {
+                self.continue_to_breakpoint().ok();
+            }
+            if ui
+                .button("✖ Abort")
+                .on_hover_text("Stop the algorithm")
+                .clicked()
+            {
+                self.abort().ok();
+            }
+        });
+        ui.horizontal(|ui| {
+            let mut k = step;
+            let slider = egui::Slider::new(&mut k, 0..=steps)
+                .show_value(false)
+                .text(format!("step {step} of {steps}"));
+            if ui.add(slider).changed() {
+                self.goto(k).ok();
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("Delay");
+            ui.add(
+                egui::Slider::new(&mut self.delay, 0.05..=2.0)
+                    .logarithmic(true)
+                    .suffix(" s"),
+            );
+        });
+    }
+
+    fn source_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        algorithm: &Arc<Algorithm>,
+        frame: &TraceFrame,
+        breakpoints: &std::collections::BTreeSet<u32>,
+        theme: &Theme,
+    ) {
+        let style = CodeStyle::new(self.code_size, theme.dark);
+        let source = Arc::clone(&algorithm.source);
+        let lines = line_ranges(&source, algorithm.first_line, algorithm.last_line);
+        let emphasis_colour = match frame.operation {
+            "lookup" => theme.trace_colour(TraceRole::Lookup),
+            "compare" => theme.trace_colour(TraceRole::Compared),
+            _ => ui.visuals().selection.bg_fill,
+        }
+        .gamma_multiply(0.55);
+        let emphasis = frame
+            .span
+            .map(|(start, end)| (start as usize..end as usize, emphasis_colour));
+        let line_fill = ui.visuals().selection.bg_fill.gamma_multiply(0.22);
+        let row_height = ui.fonts_mut(|f| f.row_height(&style.font)) + 2.0;
+        let gutter = ui.fonts_mut(|f| f.glyph_width(&style.font, '0')) * 4.0 + 18.0;
+        let scroll_key = frame.line;
+        let needs_scroll = self.scrolled_to.map(|(_, line)| line) != Some(scroll_key as usize);
+        let highlighted = self.highlighted(&source).clone();
+        let mut toggled = None;
+        let mut scrolled = false;
+        egui::ScrollArea::both()
+            .id_salt("algorithm_source")
+            .auto_shrink([false, false])
+            .max_height(ui.available_height() - 40.0)
+            .show(ui, |ui| {
+                ui.spacing_mut().item_spacing.y = 0.0;
+                for (number, range) in lines {
+                    let current = frame.step > 0 && number == frame.line;
+                    let background = ui.painter().add(egui::Shape::Noop);
+                    let row = ui.horizontal(|ui| {
+                        let (rect, response) =
+                            ui.allocate_exact_size(vec2(gutter, row_height), Sense::click());
+                        let has_breakpoint = breakpoints.contains(&number);
+                        let painter = ui.painter();
+                        if has_breakpoint {
+                            painter.circle_filled(
+                                rect.left_center() + vec2(8.0, 0.0),
+                                row_height * 0.28,
+                                Color32::from_rgb(0xd0, 0x30, 0x30),
+                            );
+                        }
+                        painter.text(
+                            rect.right_center() - vec2(6.0, 0.0),
+                            egui::Align2::RIGHT_CENTER,
+                            number.to_string(),
+                            style.font.clone(),
+                            ui.visuals().weak_text_color(),
+                        );
+                        let response = response.on_hover_text(if has_breakpoint {
+                            "Remove the breakpoint"
+                        } else {
+                            "Set a breakpoint: Play stops on this line"
+                        });
+                        response.widget_info(|| {
+                            egui::WidgetInfo::labeled(
+                                egui::Role::Button,
+                                true,
+                                format!("breakpoint line {number}"),
+                            )
+                        });
+                        if response.clicked() {
+                            toggled = Some(number);
+                        }
+                        let job = highlighted.layout_line(
+                            &source,
+                            range.clone(),
+                            emphasis.as_ref().filter(|_| current),
+                            &style,
+                        );
+                        ui.add(egui::Label::new(job).extend());
+                    });
+                    let rect = row.response.rect;
+                    if current {
+                        ui.painter().set(
+                            background,
+                            egui::Shape::rect_filled(
+                                egui::Rect::from_min_max(
+                                    rect.min,
+                                    egui::pos2(ui.max_rect().right(), rect.max.y),
+                                ),
+                                2.0,
+                                line_fill,
+                            ),
+                        );
+                        if needs_scroll {
+                            ui.scroll_to_rect(rect, Some(Align::Center));
+                            scrolled = true;
+                        }
+                    }
+                }
+            });
+        if scrolled || frame.step == 0 {
+            self.scrolled_to = Some((0, scroll_key as usize));
+        }
+        if let Some(line) = toggled {
+            self.toggle_breakpoint(line);
+        }
+    }
+}
+
+/// The algorithm's name, signature and description.
+fn header_ui(ui: &mut egui::Ui, algorithm: &Algorithm) {
+    ui.label(RichText::new(&algorithm.name).heading().monospace());
+    ui.weak(algorithm.signature());
+    if let Some(description) = &algorithm.description {
+        ui.label(description);
+    }
+}
+
+fn algorithm_hover(algorithm: &Algorithm) -> String {
+    match &algorithm.description {
+        Some(description) => format!("{}\n{description}", algorithm.signature()),
+        None => algorithm.signature(),
+    }
+}
+
+/// The message line's sentence, and the output once done, or the error.
+fn status_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
+    let (fill, text_colour) = if frame.error.is_some() {
+        (
+            ui.visuals().error_fg_color.gamma_multiply(0.12),
+            ui.visuals().error_fg_color,
+        )
+    } else if frame.done {
+        (
+            theme.trace_colour(TraceRole::Output).gamma_multiply(0.15),
+            ui.visuals().strong_text_color(),
+        )
+    } else {
+        (ui.visuals().faint_bg_color, ui.visuals().text_color())
+    };
+    egui::Frame::new()
+        .fill(fill)
+        .inner_margin(6.0)
+        .corner_radius(4.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.label(RichText::new(&frame.message).color(text_colour));
+            if frame.done || frame.error.is_some() {
+                let marked: Vec<String> = frame
+                    .marked
+                    .iter()
+                    .map(|e| format!("{} {}", e.kind.title().to_lowercase(), e.id))
+                    .collect();
+                if !marked.is_empty() {
+                    ui.label(format!("Marked: {}", marked.join(", ")));
+                }
+            }
+            for line in &frame.output {
+                ui.monospace(line);
+            }
+        });
+}
+
+/// The variables and their values; element values carry the purple chip
+/// that marks them in the view.
+fn variables_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
+    egui::Grid::new("trace_variables")
+        .num_columns(3)
+        .spacing(vec2(10.0, 2.0))
+        .show(ui, |ui| {
+            for variable in &frame.variables {
+                ui.label(RichText::new(&variable.name).monospace().strong());
+                ui.weak(variable.ty);
+                let element = ["Vertex ", "Edge ", "Face "]
+                    .iter()
+                    .any(|p| variable.value.starts_with(p));
+                let mut text = RichText::new(&variable.value).monospace();
+                if element && !frame.done {
+                    text = text.background_color(
+                        theme.trace_colour(TraceRole::Variable).gamma_multiply(0.3),
+                    );
+                }
+                ui.label(text);
+                ui.end_row();
+            }
+        });
+}
+
+/// The journal's colour meanings, as chips.
+fn legend_ui(ui: &mut egui::Ui, theme: &Theme) {
+    ui.horizontal_wrapped(|ui| {
+        for role in TraceRole::ALL {
+            let (rect, _) = ui.allocate_exact_size(vec2(12.0, 12.0), Sense::hover());
+            ui.painter()
+                .rect_filled(rect, 2.0, theme.trace_colour(role));
+            ui.small(role.meaning());
+        }
+    });
+}
+
+/// The byte range of each source line `first..=last` (1-based), without
+/// its line break.
+fn line_ranges(source: &str, first: u32, last: u32) -> Vec<(u32, Range<usize>)> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for (number, line) in (1_u32..).zip(source.split_inclusive('\n')) {
+        let end = start + line.len();
+        if number >= first && number <= last {
+            let text_end = start + line.trim_end_matches(['\n', '\r']).len();
+            out.push((number, start..text_end));
+        }
+        start = end;
+        if number > last {
+            break;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_ranges_cover_the_chosen_lines() {
+        let source = "a\nbb\r\nccc\nd";
+        assert_eq!(
+            line_ranges(source, 2, 4),
+            vec![(2, 2..4), (3, 6..9), (4, 10..11)]
+        );
+    }
+}

@@ -1,0 +1,307 @@
+//! The app's algorithm commands (shared by the UI and the JavaScript API),
+//! the Algorithm menu, the algorithm panel and the stepping keys.
+
+use std::sync::Arc;
+
+use edgewise_core::lang::Structure;
+
+use super::{AlgorithmTab, EdgewiseApp};
+use crate::{
+    algorithm::{Run, session::argument_value},
+    selection::{ElementKind, ElementRef},
+    view3d::{PickFilter, PickKind},
+};
+
+/// One argument of `run(name, args)` as JavaScript or a URL gives it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Argument {
+    Number(f64),
+    Boolean(bool),
+}
+
+impl EdgewiseApp {
+    /// Compiles `source` and adds its algorithms to the menu, replacing
+    /// same-named ones of the same structure. Returns their names.
+    pub fn load_algorithms(&mut self, source: &str, file: &str) -> Result<Vec<String>, String> {
+        let result = self.algorithms.library.load(source, file);
+        self.show_algorithm_panel = true;
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Starts the algorithm `name` for the open mesh's structure with the
+    /// given inputs; missing element inputs are then picked by clicking.
+    pub fn run_algorithm(&mut self, name: &str, args: &[(String, Argument)]) -> Result<(), String> {
+        let Some(document) = &self.document else {
+            return Err(self.fail("open a mesh before running an algorithm".to_owned()));
+        };
+        let structure = Structure::from(document.structure());
+        let algorithm = match self.algorithms.find(name, structure) {
+            Ok(algorithm) => algorithm,
+            Err(message) => return Err(self.fail(message)),
+        };
+        let mut inputs = Vec::with_capacity(args.len());
+        for (arg_name, arg) in args {
+            let Some(param) = algorithm.params().find(|p| p.name == *arg_name) else {
+                let names: Vec<&str> = algorithm.params().map(|p| p.name.as_str()).collect();
+                return Err(self.fail(format!(
+                    "{} has no parameter `{arg_name}` (its parameters: {})",
+                    algorithm.name,
+                    names.join(", ")
+                )));
+            };
+            let (number, boolean) = match arg {
+                Argument::Number(n) => (Some(*n), None),
+                Argument::Boolean(b) => (None, Some(*b)),
+            };
+            let Some(value) = argument_value(param.ty, number, boolean) else {
+                let what = match arg {
+                    Argument::Number(n) => n.to_string(),
+                    Argument::Boolean(b) => b.to_string(),
+                };
+                return Err(self.fail(format!(
+                    "parameter `{arg_name}` of {} is {}, which `{what}` is not",
+                    algorithm.name,
+                    type_phrase(param.ty)
+                )));
+            };
+            inputs.push((arg_name.clone(), value));
+        }
+        self.select(None).ok();
+        self.show_algorithm_panel = true;
+        self.algorithm_tab = AlgorithmTab::Run;
+        let result = match &self.document {
+            Some(document) => {
+                self.algorithms
+                    .begin(Arc::clone(&algorithm), &inputs, document.mesh())
+            }
+            None => Ok(()),
+        };
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Steps the trace forward `n` operations.
+    pub fn trace_step(&mut self, n: usize) -> Result<(), String> {
+        let result = self.algorithms.step(n);
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Steps the trace back `n` operations.
+    pub fn trace_back(&mut self, n: usize) -> Result<(), String> {
+        let result = self.algorithms.back(n);
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Goes to step `k` (clamped to the trace).
+    pub fn trace_goto(&mut self, k: usize) -> Result<(), String> {
+        let result = self.algorithms.goto(k);
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Stops the running algorithm.
+    pub fn abort_algorithm(&mut self) -> Result<(), String> {
+        let result = self.algorithms.abort();
+        result.map_err(|message| self.fail(message))
+    }
+
+    /// Toggles a breakpoint on a source line of the running algorithm.
+    pub fn toggle_breakpoint(&mut self, line: u32) {
+        self.algorithms.toggle_breakpoint(line);
+    }
+
+    /// A click on an element in the view or the tables: an input for a
+    /// waiting algorithm, nothing while a trace is shown, else a selection.
+    pub(super) fn element_clicked(&mut self, element: Option<ElementRef>) {
+        match (&self.algorithms.run, element) {
+            (Run::Picking(_), Some(element)) => {
+                let result = match &self.document {
+                    Some(document) => self.algorithms.pick(element, document.mesh()),
+                    None => Ok(()),
+                };
+                if let Err(message) = result {
+                    self.fail(message);
+                }
+            }
+            (Run::Picking(_) | Run::Tracing(_), _) => {}
+            (Run::Idle, element) => {
+                self.select(element).ok();
+            }
+        }
+    }
+
+    /// Only the kind of element a waiting algorithm needs can be picked.
+    pub(super) fn pick_filter(&self) -> PickFilter {
+        match &self.algorithms.run {
+            Run::Picking(pending) => match pending.wanted_kind() {
+                Some(ElementKind::Vertex) => PickFilter::Only(PickKind::Vertex),
+                Some(ElementKind::Edge) => PickFilter::Only(PickKind::Edge),
+                Some(ElementKind::Face) => PickFilter::Only(PickKind::Face),
+                None => PickFilter::All,
+            },
+            _ => PickFilter::All,
+        }
+    }
+
+    /// The message line while an algorithm runs: its prompt or the step.
+    pub(super) fn algorithm_message(&self) -> Option<String> {
+        match &self.algorithms.run {
+            Run::Idle => None,
+            Run::Picking(pending) => Some(pending.prompt().unwrap_or_else(|| {
+                format!(
+                    "{}: set its inputs, then press Start",
+                    pending.algorithm.name
+                )
+            })),
+            Run::Tracing(session) => {
+                let frame =
+                    crate::algorithm::frame::frame_at(&session.trace, session.step(), &self.theme);
+                Some(format!(
+                    "Step {} of {}: {}",
+                    frame.step, frame.steps, frame.message
+                ))
+            }
+        }
+    }
+
+    /// Advances a playing trace and schedules the next frame for it.
+    pub(super) fn play_tick(&mut self, ctx: &egui::Context) {
+        let now = ctx.input(|i| i.time);
+        if let Some(wait) = self.algorithms.tick(now) {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait.max(0.0)));
+        }
+    }
+
+    /// Space or → steps, ← steps back, Home and End jump, P plays or pauses.
+    pub(super) fn trace_keys(&mut self, ctx: &egui::Context) {
+        if ctx.egui_wants_keyboard_input() || self.algorithms.session().is_none() {
+            return;
+        }
+        let (forward, back, home, end, play, now) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::Space) || i.key_pressed(egui::Key::ArrowRight),
+                i.key_pressed(egui::Key::ArrowLeft),
+                i.key_pressed(egui::Key::Home),
+                i.key_pressed(egui::Key::End),
+                i.key_pressed(egui::Key::P),
+                i.time,
+            )
+        });
+        if forward {
+            self.algorithms.step(1).ok();
+        }
+        if back {
+            self.algorithms.back(1).ok();
+        }
+        if home {
+            self.algorithms.goto(0).ok();
+        }
+        if end {
+            self.algorithms.goto(usize::MAX).ok();
+        }
+        if play {
+            let playing = self.algorithms.session().is_some_and(|s| s.playing);
+            self.algorithms.set_playing(!playing, now);
+        }
+    }
+
+    /// The Algorithm menu: the library for the mesh's structure, the other
+    /// structure's algorithms greyed with a hint, and the editor.
+    pub(super) fn algorithm_menu_ui(&mut self, ui: &mut egui::Ui) {
+        let structure = self
+            .document
+            .as_ref()
+            .map(|d| Structure::from(d.structure()));
+        let mut chosen = None;
+        let mut write = false;
+        ui.menu_button("Algorithm", |ui| {
+            ui.set_min_width(260.0);
+            let Some(structure) = structure else {
+                ui.weak("Open a mesh to run algorithms on it.");
+                return;
+            };
+            for (label, ours) in [(structure.prose(), true), (other(structure).prose(), false)] {
+                ui.label(egui::RichText::new(format!("For {label} meshes")).strong());
+                for entry in self.algorithms.library.entries() {
+                    let algorithm = &entry.algorithm;
+                    if (algorithm.structure == structure) != ours {
+                        continue;
+                    }
+                    let button = ui.add_enabled(
+                        ours,
+                        egui::Button::new(egui::RichText::new(&algorithm.name).monospace()),
+                    );
+                    let button = if ours {
+                        button.on_hover_text(algorithm.signature())
+                    } else {
+                        button.on_disabled_hover_text(format!(
+                            "Written for {} meshes: switch the structure in the top bar to run it",
+                            algorithm.structure.prose()
+                        ))
+                    };
+                    if button.clicked() {
+                        chosen = Some(algorithm.name.clone());
+                    }
+                }
+                ui.separator();
+            }
+            if ui.button("Write or open an algorithm…").clicked() {
+                write = true;
+            }
+        });
+        if let Some(name) = chosen {
+            self.run_algorithm(&name, &[]).ok();
+        }
+        if write {
+            self.show_algorithm_panel = true;
+            self.algorithm_tab = AlgorithmTab::Write;
+        }
+    }
+
+    /// The side panel: the algorithm view or the algorithm editor.
+    pub(super) fn algorithm_panel_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.selectable_value(&mut self.algorithm_tab, AlgorithmTab::Run, "Algorithm");
+            ui.selectable_value(&mut self.algorithm_tab, AlgorithmTab::Write, "Write");
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                if ui.button("✖").on_hover_text("Close the panel").clicked() {
+                    self.show_algorithm_panel = false;
+                    self.algorithms.abort().ok();
+                }
+            });
+        });
+        ui.separator();
+        match self.algorithm_tab {
+            AlgorithmTab::Run => {
+                let mesh = self.document.as_ref().map(crate::document::Document::mesh);
+                if let Some(message) = self.algorithms.panel_ui(ui, &self.theme, mesh) {
+                    self.fail(message);
+                }
+            }
+            AlgorithmTab::Write => {
+                let Self {
+                    algorithms, theme, ..
+                } = self;
+                algorithms.editor.ui(ui, &mut algorithms.library, theme);
+            }
+        }
+    }
+}
+
+fn other(structure: Structure) -> Structure {
+    match structure {
+        Structure::WingedEdge => Structure::HalfEdge,
+        Structure::HalfEdge => Structure::WingedEdge,
+    }
+}
+
+/// "a Vertex id", "an Integer", "true or false".
+fn type_phrase(ty: edgewise_core::lang::Type) -> &'static str {
+    use edgewise_core::lang::Type;
+    match ty {
+        Type::Vertex => "a Vertex id",
+        Type::Edge => "an Edge id",
+        Type::Face => "a Face id",
+        Type::Integer => "an Integer",
+        Type::Boolean => "true or false",
+        Type::Null => "null",
+    }
+}
