@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use edgewise_core::lang::{Algorithm, Structure};
+use edgewise_core::lang::Algorithm;
 use serde::Serialize;
 
 use crate::{
@@ -73,10 +73,7 @@ impl TraceState {
     pub fn new(algorithm: &Algorithm, frame: &TraceFrame) -> Self {
         Self {
             algorithm: algorithm.name.clone(),
-            structure: match algorithm.structure {
-                Structure::WingedEdge => "winged",
-                Structure::HalfEdge => "half",
-            },
+            structure: crate::structure_name(algorithm.structure.into()),
             step: frame.step,
             steps: frame.steps,
             line: frame.line,
@@ -124,4 +121,17 @@ pub struct HighlightState {
     pub kind: ElementKind,
     pub id: u32,
     pub role: String,
+}
+
+/// One entry of `window.edgewise.algorithms()`.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct AlgorithmInfo {
+    pub name: String,
+    /// 'winged' or 'half'.
+    pub structure: &'static str,
+    /// "v : Vertex" for each parameter.
+    pub parameters: Vec<String>,
+    pub description: Option<String>,
+    /// 'library', or the file the user loaded it from.
+    pub origin: String,
 }

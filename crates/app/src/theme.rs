@@ -78,16 +78,22 @@ impl Theme {
 }
 
 /// Registers the bold code face as the font family
-/// [`crate::algorithm::highlight::BOLD`]. Call before any text is laid out
-/// in the first frame, so it applies at once.
+/// [`crate::algorithm::highlight::BOLD`], and as the last fallback of the
+/// other families for the control symbols (▶ ◀ ❚ ✖) the default fonts lack.
+/// Call before any text is laid out in the first frame, so it applies at once.
 pub fn install_fonts(ctx: &egui::Context) {
     use egui::epaint::text::{FontData, FontInsert, FontPriority, InsertFontFamily};
+    let family = |family, priority| InsertFontFamily { family, priority };
     ctx.add_font(FontInsert::new(
         "DejaVuSansMono-Bold",
         FontData::from_static(CODE_BOLD),
-        vec![InsertFontFamily {
-            family: egui::FontFamily::Name(crate::algorithm::highlight::BOLD.into()),
-            priority: FontPriority::Highest,
-        }],
+        vec![
+            family(
+                egui::FontFamily::Name(crate::algorithm::highlight::BOLD.into()),
+                FontPriority::Highest,
+            ),
+            family(egui::FontFamily::Proportional, FontPriority::Lowest),
+            family(egui::FontFamily::Monospace, FontPriority::Lowest),
+        ],
     ));
 }

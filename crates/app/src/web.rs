@@ -10,7 +10,7 @@ use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 use edgewise_core::mesh::Structure;
 
 use crate::{
-    EdgewiseApp,
+    Argument, EdgewiseApp,
     selection::{ElementKind, ElementRef},
 };
 
@@ -193,8 +193,123 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     });
     set_fn(&api, "setStructure", &set_structure.into_js_value())?;
 
+    install_algorithm_api(runner, &api)?;
+
     js_sys::Reflect::set(&window, &"edgewise".into(), &api)?;
     Ok(())
+}
+
+/// The algorithm half of the API: loadAlgorithms, algorithms, run, step,
+/// back, goto and abort.
+fn install_algorithm_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<(), JsValue> {
+    let r = runner.clone();
+    let load = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+        move |source: JsValue, file: JsValue| {
+            let result = (|| {
+                let source = source
+                    .as_string()
+                    .ok_or("loadAlgorithms(source): source must be a string")?;
+                let file = file.as_string().unwrap_or_else(|| "page.alg".to_owned());
+                command(&r, |app| app.load_algorithms(&source, &file).map(|_| ()))
+            })();
+            settle(result)
+        },
+    );
+    set_fn(api, "loadAlgorithms", &load.into_js_value())?;
+
+    let r = runner.clone();
+    let list = Closure::<dyn Fn() -> Result<JsValue, JsValue>>::new(move || {
+        let json = with_app(&r, |app| serde_json::to_string(&app.algorithm_list()))?
+            .map_err(|err| JsValue::from_str(&err.to_string()))?;
+        js_sys::JSON::parse(&json)
+    });
+    set_fn(api, "algorithms", &list.into_js_value())?;
+
+    let r = runner.clone();
+    let run = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+        move |name: JsValue, args: JsValue| {
+            let result = (|| {
+                let name = name
+                    .as_string()
+                    .ok_or("run(name, args): name must be a string")?;
+                let args = arguments(&args)?;
+                command(&r, |app| app.run_algorithm(&name, &args))
+            })();
+            settle(result)
+        },
+    );
+    set_fn(api, "run", &run.into_js_value())?;
+
+    type StepFn = fn(&mut EdgewiseApp, usize) -> Result<(), String>;
+    let steppers: [(&str, StepFn, f64); 3] = [
+        ("step", EdgewiseApp::trace_step, 1.0),
+        ("back", EdgewiseApp::trace_back, 1.0),
+        ("goto", EdgewiseApp::trace_goto, f64::NAN),
+    ];
+    for (name, f, default) in steppers {
+        let r = runner.clone();
+        let stepper = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |n: JsValue| {
+            let result = (|| {
+                let n = if n.is_undefined() || n.is_null() {
+                    default
+                } else {
+                    n.as_f64().unwrap_or(f64::NAN)
+                };
+                if !(n.is_finite() && n.fract() == 0.0 && n >= 0.0) {
+                    return Err(format!("{name}(n): n must be a whole number from 0"));
+                }
+                command(&r, |app| f(app, n as usize))
+            })();
+            settle(result)
+        });
+        set_fn(api, name, &stepper.into_js_value())?;
+    }
+
+    let r = runner.clone();
+    let abort = Closure::<dyn Fn() -> js_sys::Promise>::new(move || {
+        settle(command(&r, EdgewiseApp::abort_algorithm))
+    });
+    set_fn(api, "abort", &abort.into_js_value())
+}
+
+/// Runs a command on the app and asks for a frame to show its effect.
+fn command(
+    runner: &eframe::WebRunner,
+    f: impl FnOnce(&mut EdgewiseApp) -> Result<(), String>,
+) -> Result<(), String> {
+    with_app(runner, |app| {
+        let result = f(app);
+        app.request_repaint();
+        result
+    })
+    .map_err(|err| js_error_text(&err))?
+}
+
+/// `run`'s arguments object: parameter names to ids, integers or booleans.
+fn arguments(args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
+    if args.is_undefined() || args.is_null() {
+        return Ok(Vec::new());
+    }
+    let object = args
+        .dyn_ref::<js_sys::Object>()
+        .ok_or("run(name, args): args must be an object such as {v: 0}")?;
+    let mut out = Vec::new();
+    for entry in js_sys::Object::entries(object).iter() {
+        let pair = js_sys::Array::from(&entry);
+        let key = pair.get(0).as_string().unwrap_or_default();
+        let value = pair.get(1);
+        let argument = if let Some(b) = value.as_bool() {
+            Argument::Boolean(b)
+        } else if let Some(n) = value.as_f64() {
+            Argument::Number(n)
+        } else {
+            return Err(format!(
+                "run(name, args): args.{key} must be a number (an id) or a boolean"
+            ));
+        };
+        out.push((key, argument));
+    }
+    Ok(out)
 }
 
 /// Puts a function on the API object. The API lives as long as the page, so

@@ -152,7 +152,7 @@ impl Algorithms {
         let now = ui.input(|i| i.time);
         ui.horizontal_wrapped(|ui| {
             if ui
-                .add_enabled(step > 0, egui::Button::new("⏮"))
+                .add_enabled(step > 0, egui::Button::new("|◀"))
                 .on_hover_text("Go to the start (Home)")
                 .clicked()
             {
@@ -173,13 +173,13 @@ impl Algorithms {
                 self.step(1).ok();
             }
             if ui
-                .add_enabled(step < steps, egui::Button::new("⏭"))
+                .add_enabled(step < steps, egui::Button::new("▶|"))
                 .on_hover_text("Go to the end (End)")
                 .clicked()
             {
                 self.goto(steps).ok();
             }
-            let play_label = if playing { "⏸ Pause" } else { "⏵ Play" };
+            let play_label = if playing { "❚❚ Pause" } else { "▶ Play" };
             if ui
                 .button(play_label)
                 .on_hover_text("Step automatically; stops at breakpoints (P)")
@@ -189,7 +189,7 @@ impl Algorithms {
             }
             if !self.breakpoints().is_empty()
                 && ui
-                    .add_enabled(step < steps, egui::Button::new("⏩ Breakpoint"))
+                    .add_enabled(step < steps, egui::Button::new("▶▶ Breakpoint"))
                     .on_hover_text("Go to the next step on a breakpoint line")
                     .clicked()
             {
@@ -212,14 +212,12 @@ impl Algorithms {
                 self.goto(k).ok();
             }
         });
-        ui.horizontal(|ui| {
-            ui.label("Delay");
-            ui.add(
-                egui::Slider::new(&mut self.delay, 0.05..=2.0)
-                    .logarithmic(true)
-                    .suffix(" s"),
-            );
-        });
+        ui.add(
+            egui::Slider::new(&mut self.delay, 0.05..=2.0)
+                .logarithmic(true)
+                .suffix(" s")
+                .text("delay between steps when playing"),
+        );
     }
 
     fn source_ui(

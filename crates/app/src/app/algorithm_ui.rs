@@ -7,8 +7,9 @@ use edgewise_core::lang::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
-    algorithm::{Run, session::argument_value},
+    algorithm::{Origin, Run, session::argument_value},
     selection::{ElementKind, ElementRef},
+    state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
 };
 
@@ -77,6 +78,31 @@ impl EdgewiseApp {
             None => Ok(()),
         };
         result.map_err(|message| self.fail(message))
+    }
+
+    /// Every algorithm known, for `window.edgewise.algorithms()`.
+    pub fn algorithm_list(&self) -> Vec<AlgorithmInfo> {
+        self.algorithms
+            .library
+            .entries()
+            .iter()
+            .map(|entry| {
+                let algorithm = &entry.algorithm;
+                AlgorithmInfo {
+                    name: algorithm.name.clone(),
+                    structure: super::structure_name(algorithm.structure.into()),
+                    parameters: algorithm
+                        .params()
+                        .map(|p| format!("{} : {}", p.name, p.ty))
+                        .collect(),
+                    description: algorithm.description.clone(),
+                    origin: match &entry.origin {
+                        Origin::Library => "library".to_owned(),
+                        Origin::User(file) => file.clone(),
+                    },
+                }
+            })
+            .collect()
     }
 
     /// Steps the trace forward `n` operations.
