@@ -543,7 +543,12 @@ impl EdgewiseApp {
         let mut response = TablesResponse::default();
         let mut table = |ui: &mut egui::Ui, kind: ElementKind, title: &str| {
             ui.strong(title);
-            tables::table_ui(ui, document.mesh(), kind, &self.paint, &mut response);
+            // A narrow window scrolls a wide table sideways instead of cutting it.
+            egui::ScrollArea::horizontal()
+                .id_salt(("table_scroll", kind))
+                .show(ui, |ui| {
+                    tables::table_ui(ui, document.mesh(), kind, &self.paint, &mut response);
+                });
         };
         let edge_title = match document.mesh() {
             Mesh::Winged(_) => "Edges",
