@@ -16,6 +16,7 @@ use crate::{
     paint::Paint,
     samples::{self, SampleData},
     selection::{ElementKind, ElementRef, Role},
+    settings::Settings,
     state::{AppState, Counts, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
     theme::Theme,
@@ -25,6 +26,7 @@ use crate::{
 };
 
 pub mod algorithm_ui;
+pub mod settings_ui;
 
 /// What the algorithm panel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,14 +50,22 @@ pub struct EdgewiseApp {
     styles: SceneStyles,
     /// What the views colour: the selection, or the trace's current step.
     paint: Paint,
-    /// (document generation, algorithm generation, dark) `paint` and
+    /// (document generation, algorithm generation, theme key) `paint` and
     /// `styles` were derived from.
-    paint_key: Option<(u64, u64, bool)>,
+    paint_key: Option<(u64, u64, u64)>,
     /// The algorithm library, the run and its trace.
     pub(crate) algorithms: Algorithms,
     show_algorithm_panel: bool,
     algorithm_tab: AlgorithmTab,
     fonts_installed: bool,
+    settings: Settings,
+    show_settings: bool,
+    /// The theme key last applied to egui's visuals.
+    applied_theme: Option<u64>,
+    presentation: Option<settings_ui::Presentation>,
+    /// The panels the Present menu offers, as last chosen.
+    presentation_choice: settings_ui::Presentation,
+    zoom_before_presenting: f32,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
     obj_editor: ObjEditor,
@@ -73,8 +83,12 @@ impl EdgewiseApp {
             GraphicsBackend::from_render_state(cc.wgpu_render_state.as_ref()),
             cc.wgpu_render_state.as_ref(),
         );
-        app.theme.apply(&cc.egui_ctx);
         app.ctx = Some(cc.egui_ctx.clone());
+        let (settings, message) = crate::settings::load_stored();
+        app.set_settings(settings);
+        if let Some(message) = message {
+            app.fail(message);
+        }
         app
     }
 
@@ -98,6 +112,12 @@ impl EdgewiseApp {
             show_algorithm_panel: false,
             algorithm_tab: AlgorithmTab::Run,
             fonts_installed: false,
+            settings: Settings::default(),
+            show_settings: false,
+            applied_theme: None,
+            presentation: None,
+            presentation_choice: settings_ui::Presentation::default(),
+            zoom_before_presenting: 1.0,
             structure: Structure::WingedEdge,
             obj_editor: ObjEditor::default(),
             show_obj_editor: false,
@@ -310,6 +330,7 @@ impl EdgewiseApp {
                     kind: p.element.kind,
                     id: p.element.id,
                     role: p.role.clone(),
+                    colour: crate::settings::to_hex(p.colour),
                 })
                 .collect(),
             error: self.error.clone(),
@@ -356,7 +377,7 @@ impl EdgewiseApp {
         let key = (
             document.generation(),
             self.algorithms.generation(),
-            self.theme.dark,
+            self.theme.key(),
         );
         if self.paint_key == Some(key) {
             return;
@@ -440,14 +461,12 @@ impl EdgewiseApp {
                 "Dark theme"
             };
             if ui.button(theme_label).clicked() {
-                self.theme = if self.theme.dark {
-                    Theme::light()
-                } else {
-                    Theme::dark()
-                };
-                self.theme.apply(ui.ctx());
-                self.paint_key = None;
+                self.toggle_theme();
             }
+            if ui.button("Settings…").clicked() {
+                self.show_settings = !self.show_settings;
+            }
+            self.present_menu_ui(ui);
             ui.separator();
             if let Some(doc) = &self.document {
                 let mesh = doc.mesh();
@@ -607,28 +626,42 @@ impl eframe::App for EdgewiseApp {
             crate::theme::install_fonts(ui.ctx());
             self.fonts_installed = true;
         }
+        if self.applied_theme != Some(self.theme.key()) {
+            self.theme.apply(ui.ctx());
+            self.applied_theme = Some(self.theme.key());
+        }
         self.play_tick(ui.ctx());
-        egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
+        self.presentation_keys(ui.ctx());
+        let presenting = self.presentation;
+        if presenting.is_none_or(|p| p.menu) {
+            egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
+        }
         self.keyboard_walk(ui.ctx());
         self.trace_keys(ui.ctx());
-        if self.show_algorithm_panel || self.algorithms.is_active() {
+        self.settings_window_ui(ui.ctx());
+        self.presentation_hint_ui(ui.ctx());
+        if (self.show_algorithm_panel || self.algorithms.is_active())
+            && presenting.is_none_or(|p| p.algorithm)
+        {
             egui::Panel::right("algorithm")
                 .resizable(true)
                 .default_size(420.0)
                 .min_size(300.0)
                 .show(ui, |ui| self.algorithm_panel_ui(ui));
         }
-        if self.show_obj_editor {
+        if self.show_obj_editor && presenting.is_none() {
             egui::Panel::right("obj_editor")
                 .resizable(true)
                 .default_size(320.0)
                 .show(ui, |ui| self.obj_editor_ui(ui));
         }
-        egui::Panel::bottom("tables")
-            .resizable(true)
-            .default_size(260.0)
-            .min_size(120.0)
-            .show(ui, |ui| self.tables_ui(ui));
+        if presenting.is_none_or(|p| p.tables) {
+            egui::Panel::bottom("tables")
+                .resizable(true)
+                .default_size(260.0)
+                .min_size(120.0)
+                .show(ui, |ui| self.tables_ui(ui));
+        }
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
             self.view_ui(ui);

@@ -11,6 +11,7 @@ mod obj_editor;
 pub mod paint;
 pub mod samples;
 pub mod selection;
+pub mod settings;
 pub mod state;
 mod tables;
 mod theme;
@@ -19,5 +20,7 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-pub use app::{EdgewiseApp, algorithm_ui::Argument, parse_structure, structure_name};
+pub use app::{
+    EdgewiseApp, algorithm_ui::Argument, parse_structure, settings_ui::Presentation, structure_name,
+};
 pub use backend::GraphicsBackend;

@@ -121,6 +121,8 @@ pub struct HighlightState {
     pub kind: ElementKind,
     pub id: u32,
     pub role: String,
+    /// The colour it is drawn in, `#rrggbb`.
+    pub colour: String,
 }
 
 /// One entry of `window.edgewise.algorithms()`.

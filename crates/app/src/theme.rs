@@ -9,18 +9,32 @@ use crate::{algorithm::TraceRole, selection::Role};
 const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
 
 /// The app's visual theme.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Theme {
     pub dark: bool,
+    /// The user's own trace colours, replacing the journal's (Table 3).
+    pub trace_overrides: Vec<(TraceRole, Color32)>,
 }
 
 impl Theme {
     pub fn light() -> Self {
-        Self { dark: false }
+        Self::default()
     }
 
     pub fn dark() -> Self {
-        Self { dark: true }
+        Self {
+            dark: true,
+            ..Self::default()
+        }
+    }
+
+    /// A number that changes whenever anything drawn from the theme does,
+    /// for caches of derived colours.
+    pub fn key(&self) -> u64 {
+        use std::hash::{Hash as _, Hasher as _};
+        let mut hasher = std::collections::hash_map::DefaultHasher::new();
+        self.hash(&mut hasher);
+        hasher.finish()
     }
 
     /// Applies the theme to egui's visuals.
@@ -65,6 +79,14 @@ impl Theme {
     /// lookup, yellow highlight, purple variables, light blue comparison.
     /// Yellow is deepened to amber on the light theme to stay readable.
     pub fn trace_colour(&self, role: TraceRole) -> Color32 {
+        if let Some(&(_, colour)) = self.trace_overrides.iter().find(|(r, _)| *r == role) {
+            return colour;
+        }
+        self.journal_trace_colour(role)
+    }
+
+    /// The journal's default colour of a trace role in this theme.
+    pub fn journal_trace_colour(&self, role: TraceRole) -> Color32 {
         let (light, dark) = match role {
             TraceRole::Output => ((0x1d, 0x5b, 0xd8), (0x5c, 0x9d, 0xff)),
             TraceRole::Lookup => ((0x23, 0x9b, 0x3c), (0x5f, 0xd8, 0x74)),

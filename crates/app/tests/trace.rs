@@ -394,3 +394,78 @@ fn a_loaded_algorithm_joins_the_menu_and_replaces_its_namesake() {
         .expect_err("no parameter x");
     assert!(err.contains("no parameter `x`"), "{err}");
 }
+
+#[test]
+fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .expect("opens");
+    let mut settings = harness.state().settings().clone();
+    settings.set_colour(
+        edgewise_app::algorithm::TraceRole::Lookup,
+        egui::Color32::from_rgb(0x12, 0x34, 0x56),
+    );
+    harness.state_mut().set_settings(settings);
+    run(&mut harness, "vertexAdjacentEdge", 1.0);
+    harness.state_mut().trace_step(1).expect("steps");
+    harness.run();
+    let state = harness.state().state();
+    let lookup = state
+        .highlights
+        .iter()
+        .find(|h| h.role == "lookup")
+        .expect("a lookup");
+    assert_eq!(lookup.colour, "#123456");
+
+    harness.get_by_label("Settings…").click();
+    harness.run();
+    harness
+        .get_by_label("Reset to the journal's colours")
+        .click();
+    harness.run();
+    let state = harness.state().state();
+    let lookup = state
+        .highlights
+        .iter()
+        .find(|h| h.role == "lookup")
+        .expect("a lookup");
+    assert_ne!(lookup.colour, "#123456");
+    assert!(harness.state().settings().colours.is_empty());
+}
+
+#[test]
+fn presenting_shows_the_chosen_panels_and_escape_leaves() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("cube", Some(Structure::HalfEdge))
+        .expect("opens");
+    run(&mut harness, "vertexAdjacentEdge", 0.0);
+    let ctx = harness.ctx.clone();
+    harness.state_mut().enter_presentation(
+        &ctx,
+        edgewise_app::Presentation {
+            algorithm: true,
+            tables: false,
+            menu: false,
+        },
+    );
+    harness.run();
+    assert!(harness.query_by_label("Samples").is_none(), "no menu bar");
+    assert!(
+        harness.query_by_label("left pred").is_none() && harness.query_by_label("pair").is_none(),
+        "no tables"
+    );
+    harness.get_by_label("Step ▶");
+    harness.get_by_label("Esc leaves the presentation");
+    assert!(ctx.zoom_factor() > 1.2, "larger type");
+
+    harness.key_press(egui::Key::Escape);
+    harness.run();
+    assert!(harness.state().presentation().is_none());
+    harness.get_by_label("Samples");
+    harness.get_by_label("pair");
+    assert!((ctx.zoom_factor() - 1.0).abs() < 1e-6);
+}

@@ -26,7 +26,7 @@ use crate::{
 
 /// The journal's colour meanings (Table 3); the base colour is the view's
 /// own gray.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum TraceRole {
     /// Blue: marked, the algorithm's output.
     Output,
@@ -58,6 +58,11 @@ impl TraceRole {
             TraceRole::Variable => "variable",
             TraceRole::Compared => "compared",
         }
+    }
+
+    /// Parses [`Self::key`].
+    pub fn parse(key: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|role| role.key() == key)
     }
 
     /// The legend's wording.

@@ -42,8 +42,8 @@ pub struct Algorithms {
     pub delay: f32,
     /// Bumped on every change of run or step, so views re-derive colours.
     generation: u64,
-    /// The frame of the current step, and the (generation, dark) it is for.
-    frame: Option<((u64, bool), TraceFrame)>,
+    /// The frame of the current step, and the (generation, theme key) it is for.
+    frame: Option<((u64, u64), TraceFrame)>,
     pub editor: editor::AlgorithmEditor,
     /// Point size of the algorithm view's code.
     pub code_size: f32,
@@ -303,7 +303,7 @@ impl Algorithms {
 
     /// The frame of the current step, derived once per change.
     pub fn frame(&mut self, theme: &Theme) -> Option<&TraceFrame> {
-        let key = (self.generation, theme.dark);
+        let key = (self.generation, theme.key());
         let Run::Tracing(session) = &self.run else {
             return None;
         };

@@ -1,0 +1,214 @@
+//! The user's configuration: theme, the algorithm view's font size and the
+//! trace colours. It is kept in the browser's local storage and goes into a
+//! shared link only where it differs from the defaults.
+
+use std::collections::BTreeMap;
+
+use egui::Color32;
+use serde::{Deserialize, Serialize};
+
+use crate::{algorithm::TraceRole, theme::Theme};
+
+/// The local-storage key.
+pub const STORAGE_KEY: &str = "edgewise.settings";
+
+/// The algorithm view's default code size, in points.
+pub const DEFAULT_CODE_SIZE: f32 = 14.0;
+/// The range offered for the code size.
+pub const CODE_SIZES: std::ops::RangeInclusive<f32> = 10.0..=32.0;
+
+/// What the user configured.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    pub dark: bool,
+    pub code_size: f32,
+    /// Trace role key ('lookup', 'marked', …) to `#rrggbb`, only for roles
+    /// the user changed.
+    pub colours: BTreeMap<String, String>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            dark: false,
+            code_size: DEFAULT_CODE_SIZE,
+            colours: BTreeMap::new(),
+        }
+    }
+}
+
+impl Settings {
+    /// Reads stored settings; anything unreadable falls back to defaults,
+    /// with a message saying what was ignored.
+    pub fn from_json(json: &str) -> (Self, Option<String>) {
+        match serde_json::from_str::<Self>(json) {
+            Ok(settings) => settings.sanitized(),
+            Err(err) => (
+                Self::default(),
+                Some(format!(
+                    "the saved settings could not be read ({err}); the defaults are used"
+                )),
+            ),
+        }
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_default()
+    }
+
+    /// Drops unknown roles and malformed colours, and clamps the code size.
+    pub fn sanitized(mut self) -> (Self, Option<String>) {
+        let mut ignored = Vec::new();
+        self.colours.retain(|role, colour| {
+            let fine = TraceRole::parse(role).is_some() && parse_hex(colour).is_some();
+            if !fine {
+                ignored.push(format!("{role}:{colour}"));
+            }
+            fine
+        });
+        if !self.code_size.is_finite() {
+            self.code_size = DEFAULT_CODE_SIZE;
+        }
+        self.code_size = self.code_size.clamp(*CODE_SIZES.start(), *CODE_SIZES.end());
+        let message = (!ignored.is_empty()).then(|| {
+            format!(
+                "ignored colours: {} (a colour is a trace role and six hex digits, such as lookup:22aa44)",
+                ignored.join(", ")
+            )
+        });
+        (self, message)
+    }
+
+    /// The theme these settings describe.
+    pub fn theme(&self) -> Theme {
+        Theme {
+            dark: self.dark,
+            trace_overrides: self
+                .colours
+                .iter()
+                .filter_map(|(role, hex)| Some((TraceRole::parse(role)?, parse_hex(hex)?)))
+                .collect(),
+        }
+    }
+
+    /// Sets (or, with the journal's own colour, clears) a role's colour.
+    pub fn set_colour(&mut self, role: TraceRole, colour: Color32) {
+        let journal = Theme {
+            dark: self.dark,
+            trace_overrides: Vec::new(),
+        }
+        .journal_trace_colour(role);
+        if colour == journal {
+            self.colours.remove(role.key());
+        } else {
+            self.colours.insert(role.key().to_owned(), to_hex(colour));
+        }
+    }
+
+    /// Back to the journal's scheme (Table 3).
+    pub fn reset_colours(&mut self) {
+        self.colours.clear();
+    }
+}
+
+/// `#rrggbb` or `rrggbb`.
+pub fn parse_hex(text: &str) -> Option<Color32> {
+    let hex = text.strip_prefix('#').unwrap_or(text);
+    if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return None;
+    }
+    let value = u32::from_str_radix(hex, 16).ok()?;
+    let [_, r, g, b] = value.to_be_bytes();
+    Some(Color32::from_rgb(r, g, b))
+}
+
+/// `#rrggbb`.
+pub fn to_hex(colour: Color32) -> String {
+    let [r, g, b, _] = colour.to_srgba_unmultiplied();
+    format!("#{r:02x}{g:02x}{b:02x}")
+}
+
+/// Loads the settings saved in this browser, if any.
+#[cfg(target_arch = "wasm32")]
+pub fn load_stored() -> (Settings, Option<String>) {
+    let stored = web_sys::window()
+        .and_then(|w| w.local_storage().ok().flatten())
+        .and_then(|storage| storage.get_item(STORAGE_KEY).ok().flatten());
+    match stored {
+        Some(json) => Settings::from_json(&json),
+        None => (Settings::default(), None),
+    }
+}
+
+/// Saves the settings in this browser; a full or disabled storage is
+/// logged, not fatal.
+#[cfg(target_arch = "wasm32")]
+pub fn store(settings: &Settings) {
+    let storage = web_sys::window().and_then(|w| w.local_storage().ok().flatten());
+    match storage {
+        Some(storage) => {
+            if storage.set_item(STORAGE_KEY, &settings.to_json()).is_err() {
+                log::warn!("the settings could not be saved in local storage");
+            }
+        }
+        None => log::warn!("this browser offers no local storage; settings last this visit"),
+    }
+}
+
+/// Native runs (development, UI tests) keep settings for the session only.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn load_stored() -> (Settings, Option<String>) {
+    (Settings::default(), None)
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+pub fn store(_settings: &Settings) {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn colours_round_trip_and_the_journal_colour_clears_an_override() {
+        let mut settings = Settings::default();
+        settings.set_colour(TraceRole::Lookup, Color32::from_rgb(0x12, 0x34, 0x56));
+        assert_eq!(settings.colours["lookup"], "#123456");
+        let theme = settings.theme();
+        assert_eq!(
+            theme.trace_colour(TraceRole::Lookup),
+            Color32::from_rgb(0x12, 0x34, 0x56)
+        );
+        let (back, message) = Settings::from_json(&settings.to_json());
+        assert_eq!(back, settings);
+        assert!(message.is_none());
+        let journal = Theme::light().journal_trace_colour(TraceRole::Lookup);
+        settings.set_colour(TraceRole::Lookup, journal);
+        assert!(settings.colours.is_empty());
+    }
+
+    #[test]
+    fn bad_stored_values_fall_back_with_a_message() {
+        let (settings, message) = Settings::from_json(
+            r##"{"dark": true, "code_size": 900, "colours": {"lookup": "zz0000", "nope": "#ffffff", "marked": "#0000ff"}}"##,
+        );
+        assert!(settings.dark);
+        assert_eq!(settings.code_size, 32.0);
+        assert_eq!(settings.colours.len(), 1);
+        let message = message.expect("a message");
+        assert!(message.contains("lookup:zz0000"), "{message}");
+        assert!(message.contains("nope:#ffffff"), "{message}");
+        let (settings, message) = Settings::from_json("not json");
+        assert_eq!(settings, Settings::default());
+        assert!(message.is_some_and(|m| m.contains("defaults are used")));
+    }
+
+    #[test]
+    fn hex_colours_parse_strictly() {
+        assert_eq!(parse_hex("#ff8000"), Some(Color32::from_rgb(255, 128, 0)));
+        assert_eq!(parse_hex("ff8000"), Some(Color32::from_rgb(255, 128, 0)));
+        assert_eq!(parse_hex("#ff800"), None);
+        assert_eq!(parse_hex("#gg8000"), None);
+        assert_eq!(to_hex(Color32::from_rgb(1, 2, 3)), "#010203");
+    }
+}
