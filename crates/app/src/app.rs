@@ -27,6 +27,8 @@ use crate::{
 
 pub mod algorithm_ui;
 pub mod settings_ui;
+mod tabs;
+mod twin;
 
 /// What the algorithm panel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,6 +68,14 @@ pub struct EdgewiseApp {
     /// The panels the Present menu offers, as last chosen.
     presentation_choice: settings_ui::Presentation,
     zoom_before_presenting: f32,
+    /// For making more views (tabs, side by side); None in headless tests.
+    render_state: Option<eframe::egui_wgpu::RenderState>,
+    /// Every tab; the active one's slot is empty because its contents are
+    /// the app's own fields.
+    tabs: Vec<Option<tabs::ParkedTab>>,
+    active_tab: usize,
+    side_by_side: bool,
+    twin: Option<twin::Twin>,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
     obj_editor: ObjEditor,
@@ -118,6 +128,11 @@ impl EdgewiseApp {
             presentation: None,
             presentation_choice: settings_ui::Presentation::default(),
             zoom_before_presenting: 1.0,
+            render_state: render_state.cloned(),
+            tabs: vec![None],
+            active_tab: 0,
+            side_by_side: false,
+            twin: None,
             structure: Structure::WingedEdge,
             obj_editor: ObjEditor::default(),
             show_obj_editor: false,
@@ -336,6 +351,9 @@ impl EdgewiseApp {
             error: self.error.clone(),
             trace: self.trace_state(),
             pending: self.pending_state(),
+            tabs: self.tab_states(),
+            side_by_side: self.side_by_side,
+            twin_selection: self.twin_selection(),
         }
     }
 
@@ -386,38 +404,7 @@ impl EdgewiseApp {
             Some(frame) => frame.paint.clone(),
             None => Paint::from_selection(document.highlights(), &self.theme),
         };
-        let mesh = document.mesh();
-        let base = ElementStyle {
-            faded: paint.fade_others && !paint.is_empty(),
-            ..ElementStyle::default()
-        };
-        let mut styles = SceneStyles {
-            generation: self.styles.generation + 1,
-            vertices: vec![base.clone(); mesh.vertex_count()],
-            edges: vec![base.clone(); mesh.edge_row_count()],
-            faces: vec![base; mesh.face_count()],
-            pointers: paint
-                .pointers
-                .iter()
-                .map(|&(element, colour)| Pointer {
-                    target: pick_of(element),
-                    colour,
-                })
-                .collect(),
-        };
-        // An element's first entry gives its colour: paint in reverse.
-        for p in paint.painted.iter().rev() {
-            if let Some(style) = style_of(&mut styles, p.element) {
-                style.colour = Some(p.colour);
-                style.faded = false;
-            }
-        }
-        for (&element, label) in &paint.labels {
-            if let Some(style) = style_of(&mut styles, element) {
-                style.label = Some(format!("{}: {label}", element.id));
-                style.faded = false;
-            }
-        }
+        let styles = scene_styles(document.mesh(), &paint, self.styles.generation + 1);
         self.styles = styles;
         self.paint = paint;
         self.paint_key = Some(key);
@@ -467,6 +454,13 @@ impl EdgewiseApp {
                 self.show_settings = !self.show_settings;
             }
             self.present_menu_ui(ui);
+            if ui
+                .button("New tab")
+                .on_hover_text("Open another mesh beside this one, in a tab")
+                .clicked()
+            {
+                self.new_tab();
+            }
             ui.separator();
             if let Some(doc) = &self.document {
                 let mesh = doc.mesh();
@@ -495,6 +489,13 @@ impl EdgewiseApp {
             ui.checkbox(&mut options.show_axes, "Axes");
             ui.checkbox(&mut options.show_orientation, "Face orientation");
             ui.checkbox(&mut options.solid_faces, "Solid faces");
+            let mut side_by_side = self.side_by_side;
+            if ui
+                .checkbox(&mut side_by_side, "Winged-edge and half-edge side by side")
+                .changed()
+            {
+                self.set_side_by_side(side_by_side).ok();
+            }
             if ui.button("Frame the mesh").clicked() {
                 self.view.frame_all();
             }
@@ -635,6 +636,9 @@ impl eframe::App for EdgewiseApp {
         let presenting = self.presentation;
         if presenting.is_none_or(|p| p.menu) {
             egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
+            if self.tabs.len() > 1 {
+                egui::Panel::top("tab_bar").show(ui, |ui| self.tab_bar_ui(ui));
+            }
         }
         self.keyboard_walk(ui.ctx());
         self.trace_keys(ui.ctx());
@@ -664,7 +668,16 @@ impl eframe::App for EdgewiseApp {
         }
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
-            self.view_ui(ui);
+            if self.side_by_side && self.document.is_some() {
+                StripBuilder::new(ui)
+                    .sizes(Size::remainder(), 2)
+                    .horizontal(|mut strip| {
+                        strip.cell(|ui| self.view_ui(ui));
+                        strip.cell(|ui| self.twin_view_ui(ui));
+                    });
+            } else {
+                self.view_ui(ui);
+            }
         });
     }
 
@@ -672,6 +685,42 @@ impl eframe::App for EdgewiseApp {
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(&mut *self)
     }
+}
+
+/// Per-element styles for `mesh` from a paint.
+fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
+    let base = ElementStyle {
+        faded: paint.fade_others && !paint.is_empty(),
+        ..ElementStyle::default()
+    };
+    let mut styles = SceneStyles {
+        generation,
+        vertices: vec![base.clone(); mesh.vertex_count()],
+        edges: vec![base.clone(); mesh.edge_row_count()],
+        faces: vec![base; mesh.face_count()],
+        pointers: paint
+            .pointers
+            .iter()
+            .map(|&(element, colour)| Pointer {
+                target: pick_of(element),
+                colour,
+            })
+            .collect(),
+    };
+    // An element's first entry gives its colour: paint in reverse.
+    for p in paint.painted.iter().rev() {
+        if let Some(style) = style_of(&mut styles, p.element) {
+            style.colour = Some(p.colour);
+            style.faded = false;
+        }
+    }
+    for (&element, label) in &paint.labels {
+        if let Some(style) = style_of(&mut styles, element) {
+            style.label = Some(format!("{}: {label}", element.id));
+            style.faded = false;
+        }
+    }
+    styles
 }
 
 fn pick_of(element: ElementRef) -> Pick {

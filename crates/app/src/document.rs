@@ -2,7 +2,7 @@
 
 use edgewise_core::{
     formats::{self, Loaded},
-    mesh::{Mesh, Structure},
+    mesh::{EdgeCorrespondence, EdgeId, HalfEdgeId, Mesh, Structure},
 };
 
 use crate::selection::{self, ElementKind, ElementRef, Highlight};
@@ -19,6 +19,8 @@ pub struct Document {
     /// Increases whenever the mesh or the selection changes, so views
     /// re-derive colours and labels only then.
     generation: u64,
+    /// See [`Self::mesh_id`].
+    mesh_id: u64,
 }
 
 impl Document {
@@ -34,6 +36,7 @@ impl Document {
             selection: None,
             highlights: Vec::new(),
             generation: 0,
+            mesh_id: next_mesh_id(),
         })
     }
 
@@ -52,6 +55,7 @@ impl Document {
             selection: None,
             highlights: Vec::new(),
             generation: 0,
+            mesh_id: next_mesh_id(),
         })
     }
 
@@ -107,34 +111,77 @@ impl Document {
         if structure == self.structure() {
             return Ok(());
         }
-        let selection = self.selection;
-        let (mesh, mapped) = match &self.mesh {
-            Mesh::Winged(m) => {
-                let (he, correspondence) = m
-                    .to_half_edge_with_correspondence()
-                    .map_err(|err| err.to_string())?;
-                let mapped = selection.and_then(|s| match s.kind {
-                    ElementKind::Edge => correspondence
-                        .half_edges(edgewise_core::mesh::EdgeId::new(s.id))
-                        .map(|(h, _)| ElementRef::half_edge(h)),
-                    _ => Some(s),
-                });
-                (Mesh::Half(he), mapped)
-            }
-            Mesh::Half(m) => {
-                let (we, correspondence) = m
-                    .to_winged_edge_with_correspondence()
-                    .map_err(|err| err.to_string())?;
-                let mapped = selection.and_then(|s| match s.kind {
-                    ElementKind::Edge => correspondence
-                        .edge(edgewise_core::mesh::HalfEdgeId::new(s.id))
-                        .map(ElementRef::edge),
-                    _ => Some(s),
-                });
-                (Mesh::Winged(we), mapped)
-            }
-        };
+        let (mesh, correspondence) = convert(&self.mesh)?;
+        let mapped = self
+            .selection
+            .and_then(|s| map_element(s, self.structure(), &correspondence));
         self.mesh = mesh;
+        self.mesh_id = next_mesh_id();
         self.select(mapped)
     }
+
+    /// The same mesh in the other structure, with the selection mapped, and
+    /// how their edges correspond (for side-by-side views).
+    pub fn twin(&self) -> Result<(Document, EdgeCorrespondence), String> {
+        let (mesh, correspondence) = convert(&self.mesh)?;
+        let mut twin = Document {
+            name: self.name.clone(),
+            mesh,
+            warnings: Vec::new(),
+            selection: None,
+            highlights: Vec::new(),
+            generation: 0,
+            mesh_id: next_mesh_id(),
+        };
+        let mapped = self
+            .selection
+            .and_then(|s| map_element(s, self.structure(), &correspondence));
+        twin.select(mapped)?;
+        Ok((twin, correspondence))
+    }
+
+    /// Identifies the mesh itself: it changes when the mesh is replaced or
+    /// converted, not when the selection changes.
+    pub fn mesh_id(&self) -> u64 {
+        self.mesh_id
+    }
+}
+
+/// The mesh in the other structure, with its edge correspondence.
+fn convert(mesh: &Mesh) -> Result<(Mesh, EdgeCorrespondence), String> {
+    match mesh {
+        Mesh::Winged(m) => m
+            .to_half_edge_with_correspondence()
+            .map(|(he, c)| (Mesh::Half(he), c))
+            .map_err(|err| err.to_string()),
+        Mesh::Half(m) => m
+            .to_winged_edge_with_correspondence()
+            .map(|(we, c)| (Mesh::Winged(we), c))
+            .map_err(|err| err.to_string()),
+    }
+}
+
+/// An element of a mesh in structure `from`, in the converted mesh: vertices
+/// and faces keep their ids; a winged edge maps to its first half-edge, a
+/// half-edge to its winged edge.
+pub fn map_element(
+    element: ElementRef,
+    from: Structure,
+    correspondence: &EdgeCorrespondence,
+) -> Option<ElementRef> {
+    match (element.kind, from) {
+        (ElementKind::Edge, Structure::WingedEdge) => correspondence
+            .half_edges(EdgeId::new(element.id))
+            .map(|(h, _)| ElementRef::half_edge(h)),
+        (ElementKind::Edge, Structure::HalfEdge) => correspondence
+            .edge(HalfEdgeId::new(element.id))
+            .map(ElementRef::edge),
+        _ => Some(element),
+    }
+}
+
+fn next_mesh_id() -> u64 {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(1);
+    NEXT.fetch_add(1, Ordering::Relaxed)
 }

@@ -37,6 +37,21 @@ pub struct AppState {
     pub trace: Option<TraceState>,
     /// An algorithm waiting for its inputs, or null.
     pub pending: Option<PendingState>,
+    /// The open tabs; the active one is the mesh everything else describes.
+    pub tabs: Vec<TabState>,
+    /// Whether the mesh is shown as winged-edge and half-edge side by side.
+    #[serde(rename = "sideBySide")]
+    pub side_by_side: bool,
+    /// The selection in the side-by-side twin (the other structure), or null.
+    #[serde(rename = "twinSelection")]
+    pub twin_selection: Option<ElementRef>,
+}
+
+/// One tab.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct TabState {
+    pub title: String,
+    pub active: bool,
 }
 
 /// Where a trace is, as `state().trace` reports it.

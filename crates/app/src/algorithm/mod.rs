@@ -215,6 +215,13 @@ impl Algorithms {
         Ok(())
     }
 
+    /// Puts another tab's run in place of this one's and returns this one.
+    pub fn replace_run(&mut self, run: Run) -> Run {
+        let old = std::mem::replace(&mut self.run, run);
+        self.changed();
+        old
+    }
+
     /// Stops the run; the mesh returns to its plain look.
     pub fn abort(&mut self) -> Result<(), String> {
         if !self.is_active() {

@@ -1,0 +1,125 @@
+//! Side by side: the open mesh as winged-edge and as half-edge at once, in
+//! two 3D views with one linked selection. The twin is the same mesh
+//! converted to the other structure; selecting in either view selects the
+//! corresponding element in both (a winged edge and its first half-edge).
+
+use edgewise_core::mesh::EdgeCorrespondence;
+
+use super::{EdgewiseApp, element_of};
+use crate::{
+    document::{Document, map_element},
+    paint::Paint,
+    selection::ElementRef,
+    view3d::{MeshGeometry, SceneStyles, View3d},
+};
+
+/// The other structure's copy of the open mesh and its view.
+pub(super) struct Twin {
+    document: Document,
+    correspondence: EdgeCorrespondence,
+    view: View3d,
+    styles: SceneStyles,
+    /// The main document's mesh id the twin was made from.
+    source_mesh: u64,
+    /// The main document generation whose selection the twin shows.
+    synced: u64,
+    /// The twin's own generation and theme key its styles were made for.
+    styles_key: Option<(u64, u64)>,
+}
+
+impl EdgewiseApp {
+    /// Turns the side-by-side view on or off.
+    pub fn set_side_by_side(&mut self, on: bool) -> Result<(), String> {
+        self.side_by_side = on;
+        if !on {
+            self.twin = None;
+            return Ok(());
+        }
+        self.sync_twin()
+    }
+
+    pub fn side_by_side(&self) -> bool {
+        self.side_by_side
+    }
+
+    /// The twin's selection, for `state().twin`.
+    pub(super) fn twin_selection(&self) -> Option<ElementRef> {
+        self.twin.as_ref().and_then(|t| t.document.selection())
+    }
+
+    /// Rebuilds the twin when the mesh changed and copies the selection over.
+    fn sync_twin(&mut self) -> Result<(), String> {
+        let Some(document) = &self.document else {
+            self.twin = None;
+            return Ok(());
+        };
+        let stale = self
+            .twin
+            .as_ref()
+            .is_none_or(|t| t.source_mesh != document.mesh_id());
+        if stale {
+            let (twin_document, correspondence) = match document.twin() {
+                Ok(made) => made,
+                Err(message) => {
+                    self.side_by_side = false;
+                    self.twin = None;
+                    return Err(self.fail(format!("side by side: {message}")));
+                }
+            };
+            let mut view = View3d::new(self.render_state.as_ref());
+            view.set_geometry(MeshGeometry::from_mesh(twin_document.mesh()), false);
+            view.set_camera(self.view.camera());
+            self.twin = Some(Twin {
+                document: twin_document,
+                correspondence,
+                view,
+                styles: SceneStyles::default(),
+                source_mesh: document.mesh_id(),
+                synced: document.generation(),
+                styles_key: None,
+            });
+            return Ok(());
+        }
+        if let Some(twin) = &mut self.twin
+            && twin.synced != document.generation()
+        {
+            let mapped = document
+                .selection()
+                .and_then(|s| map_element(s, document.structure(), &twin.correspondence));
+            twin.document.select(mapped).ok();
+            twin.synced = document.generation();
+        }
+        Ok(())
+    }
+
+    /// The twin's view, beside the main one; a click there selects in both.
+    pub(super) fn twin_view_ui(&mut self, ui: &mut egui::Ui) {
+        if self.sync_twin().is_err() {
+            return;
+        }
+        let theme_key = self.theme.key();
+        let Some(twin) = &mut self.twin else {
+            return;
+        };
+        let key = (twin.document.generation(), theme_key);
+        if twin.styles_key != Some(key) {
+            let paint = Paint::from_selection(twin.document.highlights(), &self.theme);
+            twin.styles =
+                super::scene_styles(twin.document.mesh(), &paint, twin.styles.generation + 1);
+            twin.styles_key = Some(key);
+        }
+        ui.weak(match twin.document.structure() {
+            edgewise_core::mesh::Structure::WingedEdge => "The same mesh as winged-edge",
+            edgewise_core::mesh::Structure::HalfEdge => "The same mesh as half-edge",
+        });
+        let response = twin.view.ui(ui, &twin.styles, &self.view_options);
+        let clicked = response.clicked.map(element_of).and_then(|element| {
+            map_element(element, twin.document.structure(), &twin.correspondence)
+        });
+        if let Some(element) = clicked {
+            self.element_clicked(Some(element));
+        } else if response.background_clicked {
+            self.element_clicked(None);
+        }
+    }
+}
