@@ -26,6 +26,7 @@ use crate::{
 };
 
 pub mod algorithm_ui;
+pub mod embed;
 pub mod settings_ui;
 mod tabs;
 mod twin;
@@ -76,6 +77,8 @@ pub struct EdgewiseApp {
     active_tab: usize,
     side_by_side: bool,
     twin: Option<twin::Twin>,
+    /// Embedded in an iframe (`?embed=1`): no menu bar.
+    embed: Option<embed::Embed>,
     /// The structure new PLY and OBJ loads are built into.
     structure: Structure,
     obj_editor: ObjEditor,
@@ -133,6 +136,7 @@ impl EdgewiseApp {
             active_tab: 0,
             side_by_side: false,
             twin: None,
+            embed: None,
             structure: Structure::WingedEdge,
             obj_editor: ObjEditor::default(),
             show_obj_editor: false,
@@ -633,6 +637,11 @@ impl eframe::App for EdgewiseApp {
         }
         self.play_tick(ui.ctx());
         self.presentation_keys(ui.ctx());
+        if let Some(embed) = self.embed {
+            self.trace_keys(ui.ctx());
+            self.embed_ui(ui, embed);
+            return;
+        }
         let presenting = self.presentation;
         if presenting.is_none_or(|p| p.menu) {
             egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));

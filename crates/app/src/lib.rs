@@ -21,6 +21,7 @@ pub mod view3d;
 pub mod web;
 
 pub use app::{
-    EdgewiseApp, algorithm_ui::Argument, parse_structure, settings_ui::Presentation, structure_name,
+    EdgewiseApp, algorithm_ui::Argument, embed::Embed, parse_structure, settings_ui::Presentation,
+    structure_name,
 };
 pub use backend::GraphicsBackend;

@@ -120,3 +120,30 @@ fn side_by_side_links_the_selection_across_structures() {
             .is_none()
     );
 }
+
+#[test]
+fn an_embedded_view_shows_the_view_the_step_controls_and_optional_tables() {
+    let mut harness = harness();
+    let app = harness.state_mut();
+    app.set_embed(Some(edgewise_app::Embed { tables: false }));
+    app.load_sample("cube", Some(Structure::HalfEdge))
+        .expect("opens");
+    app.run_algorithm(
+        "vertexAdjacentEdge",
+        &[("v".to_owned(), Argument::Number(0.0))],
+    )
+    .expect("runs");
+    harness.run();
+    assert!(harness.query_by_label("Samples").is_none(), "no menu bar");
+    assert!(harness.query_by_label("pair").is_none(), "no tables");
+    harness.get_by_label("Step ▶").click();
+    harness.run();
+    assert_eq!(harness.state().state().trace.expect("runs").step, 1);
+
+    harness
+        .state_mut()
+        .set_embed(Some(edgewise_app::Embed { tables: true }));
+    harness.run();
+    harness.get_by_label("pair");
+    assert!(harness.query_by_label("Samples").is_none());
+}

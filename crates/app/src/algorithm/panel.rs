@@ -148,6 +148,16 @@ impl Algorithms {
         legend_ui(ui, theme);
     }
 
+    /// The step buttons, the step slider and the delay, for the panel and for
+    /// embedded views.
+    pub fn trace_controls_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(session) = self.session() else {
+            return;
+        };
+        let (step, steps, playing) = (session.step(), session.steps(), session.playing);
+        self.controls_ui(ui, step, steps, playing);
+    }
+
     fn controls_ui(&mut self, ui: &mut egui::Ui, step: usize, steps: usize, playing: bool) {
         let now = ui.input(|i| i.time);
         ui.horizontal_wrapped(|ui| {

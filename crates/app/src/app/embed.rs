@@ -1,0 +1,48 @@
+//! Embed mode (`?embed=1`), for iframes in lecture notes: only the 3D view,
+//! optionally the tables, and the step controls, sized to the frame, with no
+//! menu bar.
+
+use super::EdgewiseApp;
+
+/// What an embedded view shows besides the 3D view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Embed {
+    pub tables: bool,
+}
+
+impl EdgewiseApp {
+    /// Turns embed mode on (with its options) or off.
+    pub fn set_embed(&mut self, embed: Option<Embed>) {
+        self.embed = embed;
+    }
+
+    pub fn embed(&self) -> Option<Embed> {
+        self.embed
+    }
+
+    /// The embedded layout: step controls under the view when a trace runs,
+    /// the tables if asked for, and the view filling the rest.
+    pub(super) fn embed_ui(&mut self, ui: &mut egui::Ui, embed: Embed) {
+        if self.algorithms.session().is_some() {
+            egui::Panel::bottom("embed_controls").show(ui, |ui| {
+                ui.horizontal(|ui| {
+                    if let Some(algorithm) = self.algorithms.algorithm() {
+                        ui.strong(egui::RichText::new(&algorithm.name).monospace());
+                    }
+                });
+                self.algorithms.trace_controls_ui(ui);
+            });
+        }
+        if embed.tables {
+            egui::Panel::bottom("tables")
+                .resizable(true)
+                .default_size(200.0)
+                .min_size(100.0)
+                .show(ui, |ui| self.tables_ui(ui));
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            self.error_ui(ui);
+            self.view_ui(ui);
+        });
+    }
+}
