@@ -194,6 +194,7 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     set_fn(&api, "setStructure", &set_structure.into_js_value())?;
 
     install_algorithm_api(runner, &api)?;
+    install_view_api(runner, &api)?;
 
     js_sys::Reflect::set(&window, &"edgewise".into(), &api)?;
     Ok(())
@@ -270,6 +271,44 @@ fn install_algorithm_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Re
         settle(command(&r, EdgewiseApp::abort_algorithm))
     });
     set_fn(api, "abort", &abort.into_js_value())
+}
+
+/// Tabs and the side-by-side view: newTab, switchTab, closeTab, setSideBySide.
+fn install_view_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<(), JsValue> {
+    let r = runner.clone();
+    let new_tab = Closure::<dyn Fn() -> js_sys::Promise>::new(move || {
+        settle(command(&r, |app| {
+            app.new_tab();
+            Ok(())
+        }))
+    });
+    set_fn(api, "newTab", &new_tab.into_js_value())?;
+
+    type TabFn = fn(&mut EdgewiseApp, usize) -> Result<(), String>;
+    let tab_commands: [(&str, TabFn); 2] = [
+        ("switchTab", EdgewiseApp::switch_tab),
+        ("closeTab", EdgewiseApp::close_tab),
+    ];
+    for (name, f) in tab_commands {
+        let r = runner.clone();
+        let tab = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |index: JsValue| {
+            let result = match index.as_f64() {
+                Some(i) if i.fract() == 0.0 && i >= 0.0 => command(&r, |app| f(app, i as usize)),
+                _ => Err(format!(
+                    "{name}(index): index must be a whole number from 0"
+                )),
+            };
+            settle(result)
+        });
+        set_fn(api, name, &tab.into_js_value())?;
+    }
+
+    let r = runner.clone();
+    let side_by_side = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |on: JsValue| {
+        let on = on.as_bool().unwrap_or(true);
+        settle(command(&r, |app| app.set_side_by_side(on)))
+    });
+    set_fn(api, "setSideBySide", &side_by_side.into_js_value())
 }
 
 /// Runs a command on the app and asks for a frame to show its effect.
