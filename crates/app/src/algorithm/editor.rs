@@ -9,7 +9,7 @@ use egui::{Color32, Stroke, text::LayoutJob};
 
 use super::{
     AlgorithmLibrary,
-    highlight::{CodeStyle, Highlighted},
+    highlight::{CodeStyle, Highlighted, Mark},
 };
 use crate::theme::Theme;
 
@@ -155,36 +155,16 @@ impl AlgorithmEditor {
 
 /// The coloured text with each problem's range underlined in red.
 fn layout(text: &str, style: &CodeStyle, problems: &[Problem], error: Color32) -> LayoutJob {
-    let highlighted = Highlighted::new(text);
-    let mut job = LayoutJob::default();
-    for (range, class) in &highlighted.segments {
-        let mut cuts = vec![range.start, range.end];
-        for p in problems {
-            cuts.extend(
-                [p.range.start, p.range.end]
-                    .into_iter()
-                    .filter(|&c| c > range.start && c < range.end),
-            );
-        }
-        cuts.sort_unstable();
-        cuts.dedup();
-        for pair in cuts.windows(2) {
-            let (a, b) = (pair[0], pair[1]);
-            let Some(piece) = text.get(a..b) else {
-                continue;
-            };
-            let mut format = style.format(*class);
-            if problems
-                .iter()
-                .any(|p| a >= p.range.start && b <= p.range.end.max(p.range.start + 1))
-            {
-                format.underline = Stroke::new(2.0, error);
-                format.background = error.gamma_multiply(0.15);
-            }
-            job.append(piece, 0.0, format);
-        }
-    }
-    job
+    let marks: Vec<Mark> = problems
+        .iter()
+        .map(|p| Mark {
+            range: p.range.clone(),
+            background: error.gamma_multiply(0.15),
+            text: None,
+            underline: Stroke::new(2.0, error),
+        })
+        .collect();
+    Highlighted::new(text).layout(text, 0..text.len(), &marks, style)
 }
 
 #[cfg(test)]

@@ -63,29 +63,29 @@ impl Highlighted {
         Self { segments }
     }
 
-    /// A layout of `line` (a byte range of `source`, without its newline),
-    /// with `emphasis` (the expression being executed) on a coloured
-    /// background.
-    pub fn layout_line(
+    /// A layout of `range` of `source` (a line, or the whole text), with
+    /// each mark's bytes restyled: the expression being executed on a
+    /// coloured background, or an error underlined.
+    pub fn layout(
         &self,
         source: &str,
-        line: Range<usize>,
-        emphasis: Option<&(Range<usize>, Color32)>,
+        range: Range<usize>,
+        marks: &[Mark],
         style: &CodeStyle,
     ) -> LayoutJob {
         let mut job = LayoutJob::default();
-        let first = self.segments.partition_point(|(r, _)| r.end <= line.start);
-        for (range, class) in self.segments.get(first..).unwrap_or(&[]) {
-            if range.start >= line.end {
+        let first = self.segments.partition_point(|(r, _)| r.end <= range.start);
+        for (segment, class) in self.segments.get(first..).unwrap_or(&[]) {
+            if segment.start >= range.end {
                 break;
             }
-            let start = range.start.max(line.start);
-            let end = range.end.min(line.end);
-            // Split where the emphasis starts and ends.
+            let start = segment.start.max(range.start);
+            let end = segment.end.min(range.end);
+            // Split where marks start and end.
             let mut cuts = vec![start, end];
-            if let Some((e, _)) = emphasis {
+            for mark in marks {
                 cuts.extend(
-                    [e.start, e.end]
+                    [mark.range.start, mark.range.end]
                         .into_iter()
                         .filter(|&c| c > start && c < end),
                 );
@@ -98,18 +98,32 @@ impl Highlighted {
                     continue;
                 };
                 let mut format = style.format(*class);
-                if let Some((e, colour)) = emphasis
-                    && a >= e.start
-                    && b <= e.end
-                {
-                    format.background = *colour;
-                    format.color = style.emphasis_text;
+                // An empty mark (an error at the end of a line) still marks
+                // the character it stands on.
+                let covers =
+                    |m: &&Mark| a >= m.range.start && b <= m.range.end.max(m.range.start + 1);
+                if let Some(mark) = marks.iter().find(covers) {
+                    format.background = mark.background;
+                    if let Some(colour) = mark.text {
+                        format.color = colour;
+                    }
+                    format.underline = mark.underline;
                 }
                 job.append(text, 0.0, format);
             }
         }
         job
     }
+}
+
+/// A restyled stretch of code.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    pub range: Range<usize>,
+    pub background: Color32,
+    /// Replaces the syntax colour, for contrast on the background.
+    pub text: Option<Color32>,
+    pub underline: egui::Stroke,
 }
 
 /// Comments inside a stretch between tokens (whitespace otherwise).

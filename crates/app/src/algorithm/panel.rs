@@ -12,7 +12,10 @@ use edgewise_core::{
 };
 use egui::{Align, Color32, RichText, Sense, vec2};
 
-use super::{Algorithms, Run, TraceFrame, TraceRole, highlight::CodeStyle};
+use super::{
+    Algorithms, Run, TraceFrame, TraceRole,
+    highlight::{CodeStyle, Mark},
+};
 use crate::theme::Theme;
 
 impl Algorithms {
@@ -247,9 +250,16 @@ impl Algorithms {
             _ => ui.visuals().selection.bg_fill,
         }
         .gamma_multiply(0.55);
-        let emphasis = frame
+        let emphasis: Vec<Mark> = frame
             .span
-            .map(|(start, end)| (start as usize..end as usize, emphasis_colour));
+            .map(|(start, end)| Mark {
+                range: start as usize..end as usize,
+                background: emphasis_colour,
+                text: Some(style.emphasis_text),
+                underline: egui::Stroke::NONE,
+            })
+            .into_iter()
+            .collect();
         let line_fill = ui.visuals().selection.bg_fill.gamma_multiply(0.22);
         let row_height = ui.fonts_mut(|f| f.row_height(&style.font)) + 2.0;
         let gutter = ui.fonts_mut(|f| f.glyph_width(&style.font, '0')) * 4.0 + 18.0;
@@ -301,12 +311,8 @@ impl Algorithms {
                         if response.clicked() {
                             toggled = Some(number);
                         }
-                        let job = highlighted.layout_line(
-                            &source,
-                            range.clone(),
-                            emphasis.as_ref().filter(|_| current),
-                            &style,
-                        );
+                        let marks = if current { emphasis.as_slice() } else { &[] };
+                        let job = highlighted.layout(&source, range.clone(), marks, &style);
                         ui.add(egui::Label::new(job).extend());
                     });
                     let rect = row.response.rect;
