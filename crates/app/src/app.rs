@@ -11,10 +11,11 @@ use edgewise_core::{
 use crate::{
     GraphicsBackend,
     document::Document,
+    files::FileState,
     obj_editor::{EDITOR_FILE, ObjEditor},
     samples::{self, SampleData},
     selection::{self, ElementKind, ElementRef, Role},
-    state::{AppState, Counts, HighlightState},
+    state::{AppState, Counts, DialogState, HighlightState},
     tables::{self, TablesResponse},
     theme::Theme,
     view3d::{DrawIds, ElementStyle, MeshGeometry, Pick, SceneStyles, View3d, ViewOptions},
@@ -25,7 +26,7 @@ pub struct EdgewiseApp {
     backend: GraphicsBackend,
     frames: u64,
     theme: Theme,
-    document: Option<Document>,
+    pub(crate) document: Option<Document>,
     /// The last failed load or command, shown until dismissed.
     error: Option<String>,
     view: View3d,
@@ -34,13 +35,15 @@ pub struct EdgewiseApp {
     /// The document generation `styles` were derived from.
     styles_generation: Option<u64>,
     /// The structure new PLY and OBJ loads are built into.
-    structure: Structure,
+    pub(crate) structure: Structure,
     obj_editor: ObjEditor,
     show_obj_editor: bool,
     /// The element under the pointer in the 3D view, for the message line.
     hovered: Option<Pick>,
     /// Kept so commands from JavaScript can ask for a new frame.
     ctx: Option<egui::Context>,
+    /// Opening and saving files (see `files.rs`).
+    pub(crate) files: FileState,
 }
 
 impl EdgewiseApp {
@@ -75,6 +78,7 @@ impl EdgewiseApp {
             show_obj_editor: false,
             hovered: None,
             ctx: None,
+            files: FileState::default(),
         }
     }
 
@@ -202,12 +206,12 @@ impl EdgewiseApp {
         ui.strong("OBJ");
         ui.weak("Edit the text: the mesh and its tables follow.");
         if let Some(text) = self.obj_editor.ui(ui) {
-            let loaded = Document::load(text.as_bytes(), EDITOR_FILE, self.structure);
+            let loaded = Document::parse(text.as_bytes(), EDITOR_FILE, self.structure);
+            self.obj_editor.set_error(loaded.as_ref().err());
             let first = self.document.is_none();
-            let result = self.open(loaded, first);
-            // The editor shows its own message; the view keeps the last good mesh.
-            self.obj_editor.error = result.err();
-            if self.obj_editor.error.is_some() {
+            let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
+            // The editor marks its own problems; the view keeps the last good mesh.
+            if self.open(loaded, first).is_err() {
                 self.error = None;
             }
         }
@@ -250,7 +254,7 @@ impl EdgewiseApp {
     }
 
     /// Records a failure for the error panel and `state().error`.
-    fn fail(&mut self, message: String) -> String {
+    pub(crate) fn fail(&mut self, message: String) -> String {
         self.error = Some(message.clone());
         message
     }
@@ -280,6 +284,14 @@ impl EdgewiseApp {
                 })
                 .unwrap_or_default(),
             error: self.error.clone(),
+            diagnostics: self.obj_editor.diagnostics.clone(),
+            dialog: self
+                .structure_dialog()
+                .map(|(file, structure)| DialogState {
+                    kind: "structure",
+                    file: file.to_owned(),
+                    structure: structure_name(structure),
+                }),
         }
     }
 
@@ -327,6 +339,7 @@ impl EdgewiseApp {
         ui.horizontal(|ui| {
             ui.heading("Edgewise");
             ui.separator();
+            self.files_menu_ui(ui);
             let mut chosen = None;
             ui.menu_button("Samples", |ui| {
                 for sample in samples::SAMPLES {
@@ -522,6 +535,7 @@ impl EdgewiseApp {
 impl eframe::App for EdgewiseApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frames += 1;
+        self.receive_files(ui.ctx());
         egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
         self.keyboard_walk(ui.ctx());
         if self.show_obj_editor {
@@ -539,6 +553,7 @@ impl eframe::App for EdgewiseApp {
             self.error_ui(ui);
             self.view_ui(ui);
         });
+        self.files_overlay_ui(ui.ctx());
     }
 
     #[cfg(target_arch = "wasm32")]

@@ -5,8 +5,11 @@
 
 mod app;
 mod backend;
+pub mod code_editor;
 mod document;
+pub mod files;
 mod obj_editor;
+mod open_dialog;
 pub mod samples;
 pub mod selection;
 pub mod state;
@@ -16,6 +19,8 @@ pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+#[cfg(target_arch = "wasm32")]
+mod web_files;
 
 pub use app::{EdgewiseApp, parse_structure, structure_name};
 pub use backend::GraphicsBackend;

@@ -5,7 +5,10 @@
 
 use serde::Serialize;
 
-use crate::selection::{ElementKind, ElementRef};
+use crate::{
+    code_editor::Diagnostic,
+    selection::{ElementKind, ElementRef},
+};
 
 /// A JSON-serialisable snapshot of what the app shows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -27,6 +30,19 @@ pub struct AppState {
     pub highlights: Vec<HighlightState>,
     /// The message of the last failed load or command, or null.
     pub error: Option<String>,
+    /// The OBJ editor's problems, each marked at its line: `{line, column, message}`.
+    pub diagnostics: Vec<Diagnostic>,
+    /// The dialog waiting for an answer, or null.
+    pub dialog: Option<DialogState>,
+}
+
+/// An open dialog: `kind` is `'structure'` (which structure to build a PLY or
+/// OBJ file as), with the file and the choice it offers first.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct DialogState {
+    pub kind: &'static str,
+    pub file: String,
+    pub structure: &'static str,
 }
 
 /// Table sizes. In a winged-edge mesh `halfedges` is twice `edges`, the
