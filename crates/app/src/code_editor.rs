@@ -98,6 +98,13 @@ impl<'a> CodeEditor<'a> {
         let (row_height, digit_width) =
             ui.fonts_mut(|f| (f.row_height(&code_font), f.glyph_width(&code_font, '0')));
         let error = ui.visuals().error_fg_color;
+        // Messages are text on the tinted band: lighter on dark backgrounds
+        // so they stay readable when projected.
+        let message_colour = if ui.visuals().dark_mode {
+            error.lerp_to_gamma(Color32::WHITE, 0.45)
+        } else {
+            error.lerp_to_gamma(Color32::BLACK, 0.2)
+        };
         let by_line = messages_by_line(diagnostics);
 
         let line_count = text.split('\n').count();
@@ -239,7 +246,7 @@ impl<'a> CodeEditor<'a> {
                     text_rect.right()
                 };
                 let (left, right) = (start.left(), right.max(start.left() + 6.0));
-                let y = start.top() + row_height - 1.0;
+                let y = start.top() + row_height + 0.5;
                 painter.add(wavy_line(left, right, y, Stroke::new(1.5, error)));
             }
         }
@@ -250,7 +257,7 @@ impl<'a> CodeEditor<'a> {
             let label = egui::Label::new(
                 egui::RichText::new(message.as_str())
                     .font(message_font.clone())
-                    .color(error),
+                    .color(message_colour),
             )
             .selectable(false);
             if has_blank(text, line) {
@@ -262,7 +269,7 @@ impl<'a> CodeEditor<'a> {
                     ),
                     Pos2::new(text_rect.right() - 4.0, placed.message_bottom),
                 );
-                ui.put(rect, label.wrap());
+                put_left(ui, rect, label.wrap());
             } else {
                 // A line of one word has no room under it: the message
                 // follows the word, shortened if need be (hover shows it all).
@@ -270,11 +277,21 @@ impl<'a> CodeEditor<'a> {
                     Pos2::new(placed.right + message_indent, placed.top),
                     Pos2::new(text_rect.right() - 4.0, placed.top + row_height),
                 );
-                ui.put(rect, label.truncate());
+                put_left(ui, rect, label.truncate());
             }
         }
         response
     }
+}
+
+/// Adds `label` in `rect`, left-aligned (`Ui::put` would centre and justify it).
+fn put_left(ui: &mut egui::Ui, rect: Rect, label: egui::Label) {
+    ui.scope_builder(
+        egui::UiBuilder::new()
+            .max_rect(rect)
+            .layout(egui::Layout::top_down(Align::LEFT)),
+        |ui| ui.add(label),
+    );
 }
 
 /// Where a source line ended up on screen.

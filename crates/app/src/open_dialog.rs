@@ -38,7 +38,7 @@ impl StructureDialog {
         let enter = self.shown && ctx.input(|i| i.key_pressed(egui::Key::Enter));
         self.shown = true;
         let modal = egui::Modal::new(egui::Id::unique("structure_dialog")).show(ctx, |ui| {
-            ui.set_width(380.0);
+            ui.set_width(460.0);
             ui.heading(format!("Open {}", self.name));
             ui.add_space(4.0);
             ui.label("This file holds polygons. Which structure should Edgewise build from them?");
@@ -55,7 +55,8 @@ impl StructureDialog {
             );
             ui.add_space(12.0);
             ui.horizontal(|ui| {
-                if ui.button("Open").clicked() || enter {
+                let open = egui::Button::new("Open").fill(ui.visuals().selection.bg_fill);
+                if ui.add(open).clicked() || enter {
                     Some(Answer::Open(self.choice))
                 } else if ui.button("Cancel").clicked() {
                     Some(Answer::Cancel)
