@@ -12,12 +12,13 @@ use crate::{
     GraphicsBackend,
     algorithm::{Algorithms, Run, frame},
     document::Document,
+    files::FileState,
     obj_editor::{EDITOR_FILE, ObjEditor},
     paint::Paint,
     samples::{self, SampleData},
     selection::{ElementKind, ElementRef, Role},
     settings::Settings,
-    state::{AppState, Counts, HighlightState, PendingState, TraceState},
+    state::{AppState, Counts, DialogState, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
     theme::Theme,
     view3d::{
@@ -45,7 +46,7 @@ pub struct EdgewiseApp {
     backend: GraphicsBackend,
     frames: u64,
     theme: Theme,
-    document: Option<Document>,
+    pub(crate) document: Option<Document>,
     /// The last failed load or command, shown until dismissed.
     error: Option<String>,
     view: View3d,
@@ -80,13 +81,15 @@ pub struct EdgewiseApp {
     /// Embedded in an iframe (`?embed=1`): no menu bar.
     embed: Option<embed::Embed>,
     /// The structure new PLY and OBJ loads are built into.
-    structure: Structure,
+    pub(crate) structure: Structure,
     obj_editor: ObjEditor,
     show_obj_editor: bool,
     /// The element under the pointer in the 3D view, for the message line.
     hovered: Option<Pick>,
     /// Kept so commands from JavaScript can ask for a new frame.
     ctx: Option<egui::Context>,
+    /// Opening and saving files (see `files.rs`).
+    pub(crate) files: FileState,
 }
 
 impl EdgewiseApp {
@@ -142,6 +145,7 @@ impl EdgewiseApp {
             show_obj_editor: false,
             hovered: None,
             ctx: None,
+            files: FileState::default(),
         }
     }
 
@@ -274,12 +278,12 @@ impl EdgewiseApp {
         ui.strong("OBJ");
         ui.weak("Edit the text: the mesh and its tables follow.");
         if let Some(text) = self.obj_editor.ui(ui) {
-            let loaded = Document::load(text.as_bytes(), EDITOR_FILE, self.structure);
+            let loaded = Document::parse(text.as_bytes(), EDITOR_FILE, self.structure);
+            self.obj_editor.set_error(loaded.as_ref().err());
             let first = self.document.is_none();
-            let result = self.open(loaded, first);
-            // The editor shows its own message; the view keeps the last good mesh.
-            self.obj_editor.error = result.err();
-            if self.obj_editor.error.is_some() {
+            let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
+            // The editor marks its own problems; the view keeps the last good mesh.
+            if self.open(loaded, first).is_err() {
                 self.error = None;
             }
         }
@@ -322,7 +326,7 @@ impl EdgewiseApp {
     }
 
     /// Records a failure for the error panel and `state().error`.
-    fn fail(&mut self, message: String) -> String {
+    pub(crate) fn fail(&mut self, message: String) -> String {
         self.error = Some(message.clone());
         message
     }
@@ -358,6 +362,14 @@ impl EdgewiseApp {
             tabs: self.tab_states(),
             side_by_side: self.side_by_side,
             twin_selection: self.twin_selection(),
+            diagnostics: self.obj_editor.diagnostics.clone(),
+            dialog: self
+                .structure_dialog()
+                .map(|(file, structure)| DialogState {
+                    kind: "structure",
+                    file: file.to_owned(),
+                    structure: structure_name(structure),
+                }),
         }
     }
 
@@ -418,6 +430,7 @@ impl EdgewiseApp {
         ui.horizontal(|ui| {
             ui.heading("Edgewise");
             ui.separator();
+            self.files_menu_ui(ui);
             let mut chosen = None;
             ui.menu_button("Samples", |ui| {
                 for sample in samples::SAMPLES {
@@ -635,6 +648,7 @@ impl eframe::App for EdgewiseApp {
             self.theme.apply(ui.ctx());
             self.applied_theme = Some(self.theme.key());
         }
+        self.receive_files(ui.ctx());
         self.play_tick(ui.ctx());
         self.presentation_keys(ui.ctx());
         if let Some(embed) = self.embed {
@@ -688,6 +702,7 @@ impl eframe::App for EdgewiseApp {
                 self.view_ui(ui);
             }
         });
+        self.files_overlay_ui(ui.ctx());
     }
 
     #[cfg(target_arch = "wasm32")]

@@ -1,7 +1,7 @@
 //! One open mesh: its structure, where it came from, and what is selected.
 
 use edgewise_core::{
-    formats::{self, Loaded},
+    formats::{self, FormatError, Loaded},
     mesh::{EdgeCorrespondence, EdgeId, HalfEdgeId, Mesh, Structure},
 };
 
@@ -25,10 +25,16 @@ pub struct Document {
 
 impl Document {
     /// Reads a mesh file of any format. `name` decides the format by its
-    /// extension, or the content does when it has none (pasted text).
+    /// extension, or the content does when it has none (pasted text). The
+    /// message names `name:line:column` for each problem.
     pub fn load(bytes: &[u8], name: &str, structure: Structure) -> Result<Self, String> {
-        let Loaded { mesh, warnings, .. } =
-            formats::load(bytes, name, structure).map_err(|err| err.render(name))?;
+        Self::parse(bytes, name, structure).map_err(|err| err.render(name).trim_end().to_owned())
+    }
+
+    /// [`Self::load`] with the problems and their places kept, for editors
+    /// that mark them in the text.
+    pub fn parse(bytes: &[u8], name: &str, structure: Structure) -> Result<Self, FormatError> {
+        let Loaded { mesh, warnings, .. } = formats::load(bytes, name, structure)?;
         Ok(Self {
             name: name.to_owned(),
             mesh,

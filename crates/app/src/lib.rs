@@ -6,8 +6,11 @@
 pub mod algorithm;
 mod app;
 mod backend;
+pub mod code_editor;
 mod document;
+pub mod files;
 mod obj_editor;
+mod open_dialog;
 pub mod paint;
 pub mod samples;
 pub mod selection;
@@ -19,6 +22,8 @@ pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+#[cfg(target_arch = "wasm32")]
+mod web_files;
 
 pub use app::{
     EdgewiseApp, algorithm_ui::Argument, embed::Embed, parse_structure, settings_ui::Presentation,

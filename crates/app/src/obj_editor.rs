@@ -1,9 +1,13 @@
 //! The OBJ editor: type or paste OBJ text and watch the mesh and its tables
 //! follow (the "paste an OBJ and watch its records appear" use). Edits are
-//! debounced; a broken edit shows its message with the line, and the last
-//! good mesh stays on screen.
+//! debounced; a broken edit is marked at its line and column in the text,
+//! and the last good mesh stays on screen.
 
 use std::time::Duration;
+
+use edgewise_core::formats::{FormatError, Location};
+
+use crate::code_editor::{CodeEditor, Diagnostic};
 
 /// How long typing must pause before the text is rebuilt.
 const DEBOUNCE: Duration = Duration::from_millis(350);
@@ -17,8 +21,10 @@ pub struct ObjEditor {
     pub text: String,
     /// Seconds (egui time) of the last unbuilt edit.
     pending_since: Option<f64>,
-    /// The message of the last failed build of this text, if any.
-    pub error: Option<String>,
+    /// The problems of the last failed build that have a line.
+    pub diagnostics: Vec<Diagnostic>,
+    /// Problems of the last failed build without a line (the mesh as a whole).
+    pub file_problems: Vec<String>,
 }
 
 impl ObjEditor {
@@ -26,27 +32,44 @@ impl ObjEditor {
     pub fn set_text(&mut self, text: String) {
         self.text = text;
         self.pending_since = None;
-        self.error = None;
+        self.set_error(None);
+    }
+
+    /// Records the outcome of building the text: marks on its lines, or none.
+    pub fn set_error(&mut self, error: Option<&FormatError>) {
+        self.diagnostics.clear();
+        self.file_problems.clear();
+        for problem in error.map(FormatError::problems).unwrap_or_default() {
+            match problem.location {
+                Location::Line { line, column } => self.diagnostics.push(Diagnostic {
+                    line,
+                    column,
+                    message: problem.message.clone(),
+                }),
+                Location::File | Location::Byte(_) => {
+                    self.file_problems.push(problem.to_string());
+                }
+            }
+        }
+    }
+
+    pub fn has_error(&self) -> bool {
+        !self.diagnostics.is_empty() || !self.file_problems.is_empty()
     }
 
     /// Draws the editor. Returns the text to build once typing has paused.
     pub fn ui(&mut self, ui: &mut egui::Ui) -> Option<String> {
         let now = ui.input(|i| i.time);
-        if let Some(error) = &self.error {
-            ui.colored_label(ui.visuals().error_fg_color, error);
+        for problem in &self.file_problems {
+            ui.colored_label(ui.visuals().error_fg_color, problem);
+        }
+        if self.has_error() {
             ui.weak("The last good mesh stays on screen.");
         }
-        let response = egui::ScrollArea::vertical()
-            .show(ui, |ui| {
-                ui.add(
-                    egui::TextEdit::multiline(&mut self.text)
-                        .code_editor()
-                        .desired_width(f32::INFINITY)
-                        .desired_rows(20)
-                        .hint_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3"),
-                )
-            })
-            .inner;
+        let response = CodeEditor::new("obj_editor", &mut self.text)
+            .diagnostics(&self.diagnostics)
+            .hint_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3")
+            .show(ui);
         if response.changed() {
             self.pending_since = Some(now);
         }

@@ -10,6 +10,7 @@ use serde::Serialize;
 
 use crate::{
     algorithm::TraceFrame,
+    code_editor::Diagnostic,
     selection::{ElementKind, ElementRef},
 };
 
@@ -45,6 +46,10 @@ pub struct AppState {
     /// The selection in the side-by-side twin (the other structure), or null.
     #[serde(rename = "twinSelection")]
     pub twin_selection: Option<ElementRef>,
+    /// The OBJ editor's problems, each marked at its line: `{line, column, message}`.
+    pub diagnostics: Vec<Diagnostic>,
+    /// The dialog waiting for an answer, or null.
+    pub dialog: Option<DialogState>,
 }
 
 /// One tab.
@@ -118,6 +123,15 @@ pub struct PendingState {
     pub kind: Option<ElementKind>,
     /// "vertexAdjacentEdge: pick a Vertex for v".
     pub prompt: Option<String>,
+}
+
+/// An open dialog: `kind` is `'structure'` (which structure to build a PLY or
+/// OBJ file as), with the file and the choice it offers first.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct DialogState {
+    pub kind: &'static str,
+    pub file: String,
+    pub structure: &'static str,
 }
 
 /// Table sizes. In a winged-edge mesh `halfedges` is twice `edges`, the

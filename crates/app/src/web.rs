@@ -11,6 +11,7 @@ use edgewise_core::mesh::Structure;
 
 use crate::{
     Argument, EdgewiseApp,
+    files::{SaveFormat, SavedFile},
     selection::{ElementKind, ElementRef},
 };
 
@@ -193,6 +194,49 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     });
     set_fn(&api, "setStructure", &set_structure.into_js_value())?;
 
+    let r = runner.clone();
+    let export_mesh = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |format: JsValue| {
+        let result = (|| {
+            let format = format
+                .as_string()
+                .and_then(|f| SaveFormat::parse(&f))
+                .ok_or(
+                    "exportMesh(format): format must be 'wtb', 'htb', 'ply', 'ply-binary' or 'obj'",
+                )?;
+            let saved =
+                with_app(&r, |app| app.export(format)).map_err(|err| js_error_text(&err))??;
+            exported_object(&saved, format.is_binary()).map_err(|err| js_error_text(&err))
+        })();
+        match result {
+            Ok(object) => js_sys::Promise::resolve(&object),
+            Err(message) => js_sys::Promise::reject(&js_sys::Error::new(&message)),
+        }
+    });
+    set_fn(&api, "exportMesh", &export_mesh.into_js_value())?;
+
+    let r = runner.clone();
+    let choose = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |name: JsValue| {
+        let result = (|| {
+            let structure = if name.is_null() || name.is_undefined() {
+                None
+            } else {
+                Some(
+                    name.as_string()
+                        .and_then(|n| crate::parse_structure(&n))
+                        .ok_or("chooseStructure(name): name must be 'winged', 'half' or null")?,
+                )
+            };
+            with_app(&r, |app| {
+                let result = app.answer_structure_dialog(structure);
+                app.request_repaint();
+                result
+            })
+            .map_err(|err| js_error_text(&err))?
+        })();
+        settle(result)
+    });
+    set_fn(&api, "chooseStructure", &choose.into_js_value())?;
+
     install_algorithm_api(runner, &api)?;
     install_view_api(runner, &api)?;
 
@@ -365,6 +409,41 @@ fn settle(result: Result<(), String>) -> js_sys::Promise {
     })
 }
 
+/// `exportMesh`'s answer: `{name, text}`, or `{name, base64}` for binary output.
+fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> {
+    let object = js_sys::Object::new();
+    js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
+    let (key, value) = if binary {
+        ("base64", base64(&saved.bytes))
+    } else {
+        ("text", String::from_utf8_lossy(&saved.bytes).into_owned())
+    };
+    js_sys::Reflect::set(&object, &key.into(), &value.into())?;
+    Ok(object.into())
+}
+
+/// Standard base64 with padding, so binary files cross the JSON boundary.
+fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
+        let n = u32::from(b[0]) << 16 | u32::from(b[1]) << 8 | u32::from(b[2]);
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(char::from(ALPHABET[(n >> (18 - 6 * i)) as usize & 63]));
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
 /// `options[key]` as a string, if present.
 fn option_string(options: &JsValue, key: &str) -> Result<Option<String>, String> {
     if options.is_undefined() || options.is_null() {
@@ -426,7 +505,7 @@ fn show_error(message: &str) {
     }
 }
 
-fn js_error_text(value: &JsValue) -> String {
+pub(crate) fn js_error_text(value: &JsValue) -> String {
     value
         .as_string()
         .or_else(|| {

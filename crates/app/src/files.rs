@@ -1,0 +1,341 @@
+//! Opening meshes from disk and saving them.
+//!
+//! Files arrive from the Open mesh… button, from a drop on the window, or
+//! (natively) from a typed path. The format comes from the extension: table
+//! files open as the structure they store, PLY and OBJ ask which structure to
+//! build ([`crate::open_dialog`]). Save as… writes the open mesh in any
+//! format: a download in the browser, a file in the current directory
+//! natively (there is no native file dialog, to keep the desktop build free
+//! of GTK and D-Bus dependencies).
+
+use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
+
+use crate::{EdgewiseApp, open_dialog::StructureDialog};
+
+/// A file read from disk, waiting to be opened.
+pub struct PendingFile {
+    /// The file name (no directories), which gives the format.
+    pub name: String,
+    pub bytes: Vec<u8>,
+}
+
+/// The extensions Edgewise opens, for messages and the file picker.
+pub const OPEN_EXTENSIONS: &str = ".wtb, .htb, .ply or .obj";
+
+/// What the app keeps for opening and saving files.
+#[derive(Default)]
+pub struct FileState {
+    /// The structure question for a PLY or OBJ file, while it is asked.
+    pub(crate) dialog: Option<StructureDialog>,
+    /// Files read by the browser (picker or drop), opened on the next frame:
+    /// the browser reads them asynchronously.
+    #[cfg(target_arch = "wasm32")]
+    inbox: crate::web_files::Inbox,
+    /// The path typed into the native Open box.
+    #[cfg(not(target_arch = "wasm32"))]
+    path: String,
+    /// Where the last native save went, shown in the Save as… menu.
+    #[cfg(not(target_arch = "wasm32"))]
+    saved: Option<String>,
+}
+
+/// A format the Save as… menu and `exportMesh` offer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SaveFormat {
+    Wtb,
+    Htb,
+    PlyText,
+    PlyBinary,
+    Obj,
+}
+
+impl SaveFormat {
+    pub const ALL: [Self; 5] = [
+        Self::Wtb,
+        Self::Htb,
+        Self::PlyText,
+        Self::PlyBinary,
+        Self::Obj,
+    ];
+
+    /// The menu entry.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Wtb => "Winged-edge table (.wtb)",
+            Self::Htb => "Half-edge table (.htb)",
+            Self::PlyText => "PLY, text (.ply)",
+            Self::PlyBinary => "PLY, binary (.ply)",
+            Self::Obj => "Wavefront OBJ (.obj)",
+        }
+    }
+
+    /// The JavaScript API's name: `'wtb'`, `'htb'`, `'ply'`, `'ply-binary'`, `'obj'`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Wtb => "wtb",
+            Self::Htb => "htb",
+            Self::PlyText => "ply",
+            Self::PlyBinary => "ply-binary",
+            Self::Obj => "obj",
+        }
+    }
+
+    /// Parses [`Self::key`].
+    pub fn parse(key: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|f| f.key() == key)
+    }
+
+    pub fn format(self) -> Format {
+        match self {
+            Self::Wtb => Format::Wtb,
+            Self::Htb => Format::Htb,
+            Self::PlyText | Self::PlyBinary => Format::Ply,
+            Self::Obj => Format::Obj,
+        }
+    }
+
+    /// Whether the output is bytes rather than text.
+    pub fn is_binary(self) -> bool {
+        self == Self::PlyBinary
+    }
+
+    fn options(self) -> SaveOptions {
+        SaveOptions {
+            ply_encoding: if self.is_binary() {
+                PlyEncoding::BinaryLittleEndian
+            } else {
+                PlyEncoding::Ascii
+            },
+        }
+    }
+}
+
+/// The open mesh written in a format, with the name to save it under.
+pub struct SavedFile {
+    pub name: String,
+    pub bytes: Vec<u8>,
+}
+
+/// `name` without its extension if it has a mesh format's extension
+/// ("cube.htb" → "cube"; "torus-200k" stays).
+pub fn mesh_stem(name: &str) -> &str {
+    match name.rsplit_once('.') {
+        Some((stem, _)) if !stem.is_empty() && Format::from_name(name).is_some() => stem,
+        _ => name,
+    }
+}
+
+impl EdgewiseApp {
+    /// The open mesh written as `format`, named after the mesh
+    /// (`cube.htb` saved as OBJ is `cube.obj`). Table formats convert a mesh
+    /// of the other structure.
+    pub fn export(&self, format: SaveFormat) -> Result<SavedFile, String> {
+        let document = self.document.as_ref().ok_or("no mesh is open")?;
+        let bytes = formats::save(document.mesh(), format.format(), &format.options())
+            .map_err(|err| format!("cannot save as {}: {err}", format.label()))?;
+        Ok(SavedFile {
+            name: format!(
+                "{}.{}",
+                mesh_stem(&document.name),
+                format.format().extension()
+            ),
+            bytes,
+        })
+    }
+
+    /// Opens a file read from disk. A table file opens as the structure it
+    /// stores; for PLY and OBJ the structure dialog asks first. Unknown
+    /// extensions are refused with the current mesh kept.
+    pub fn open_file(&mut self, name: &str, bytes: Vec<u8>) -> Result<(), String> {
+        let Some(format) = Format::from_name(name) else {
+            return Err(self.fail(format!(
+                "{name}: Edgewise opens {OPEN_EXTENSIONS} files; the extension says which"
+            )));
+        };
+        match format.native_structure() {
+            Some(structure) => self.load_mesh(&bytes, name, Some(structure)),
+            None => {
+                self.files.dialog = Some(StructureDialog::new(name, bytes, self.structure));
+                Ok(())
+            }
+        }
+    }
+
+    /// Saves the open mesh: a download in the browser, a file in the current
+    /// directory natively.
+    fn save_as(&mut self, format: SaveFormat) -> Result<(), String> {
+        let saved = self.export(format).map_err(|err| self.fail(err))?;
+        #[cfg(target_arch = "wasm32")]
+        let result = crate::web_files::download(&saved.name, &saved.bytes);
+        #[cfg(not(target_arch = "wasm32"))]
+        let result = std::env::current_dir()
+            .map(|dir| dir.join(&saved.name))
+            .and_then(|path| std::fs::write(&path, &saved.bytes).map(|()| path))
+            .map(|path| self.files.saved = Some(format!("Saved {}", path.display())))
+            .map_err(|err| format!("cannot write {}: {err}", saved.name));
+        result.map_err(|err| self.fail(err))
+    }
+
+    /// Takes files dropped on the window this frame (the first one, if
+    /// several) and, in the browser, files that finished reading.
+    pub(crate) fn receive_files(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.first().cloned());
+        #[cfg(target_arch = "wasm32")]
+        {
+            if let Some(file) = dropped {
+                crate::web_files::read_dropped(&self.files.inbox, ctx, file);
+            }
+            let arrived: Vec<_> = self.files.inbox.borrow_mut().drain(..).collect();
+            for file in arrived {
+                // open_file reports its own failures.
+                if let Ok(file) = file.map_err(|message| self.fail(message)) {
+                    self.open_file(&file.name, file.bytes).ok();
+                }
+            }
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(file) = dropped {
+            let path = file.path();
+            let name = path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            self.open_read_file(&name, file.bytes());
+        }
+    }
+
+    /// The top bar's Open mesh… and Save as… entries.
+    pub(crate) fn files_menu_ui(&mut self, ui: &mut egui::Ui) {
+        self.open_button_ui(ui);
+        let mut chosen = None;
+        ui.add_enabled_ui(self.document.is_some(), |ui| {
+            ui.menu_button("Save as…", |ui| {
+                for format in SaveFormat::ALL {
+                    if ui.button(format.label()).clicked() {
+                        chosen = Some(format);
+                    }
+                }
+                #[cfg(not(target_arch = "wasm32"))]
+                {
+                    ui.separator();
+                    match &self.files.saved {
+                        Some(saved) => ui.weak(saved.as_str()),
+                        None => ui.weak("Files go to the current directory."),
+                    };
+                }
+            })
+            .response
+            .on_disabled_hover_text("Open a mesh first");
+        });
+        if let Some(format) = chosen {
+            self.save_as(format).ok();
+        }
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn open_button_ui(&mut self, ui: &mut egui::Ui) {
+        if ui
+            .button("Open mesh…")
+            .on_hover_text(format!(
+                "Open a {OPEN_EXTENSIONS} file, or drop one on the page"
+            ))
+            .clicked()
+            && let Err(message) = crate::web_files::pick_file(&self.files.inbox, ui.ctx())
+        {
+            self.fail(message);
+        }
+    }
+
+    /// Natively: a path box (there is no native file dialog) and the hint
+    /// that files can be dropped on the window.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn open_button_ui(&mut self, ui: &mut egui::Ui) {
+        let mut open = false;
+        ui.menu_button("Open mesh…", |ui| {
+            ui.label(format!("Path of a {OPEN_EXTENSIONS} file:"));
+            let response = ui.add(
+                egui::TextEdit::singleline(&mut self.files.path)
+                    .desired_width(320.0)
+                    .hint_text("meshes/cube.htb"),
+            );
+            open = ui.button("Open").clicked()
+                || (response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
+            ui.weak("Or drop a file on the window.");
+            if open {
+                ui.close();
+            }
+        });
+        if open {
+            let path = std::path::PathBuf::from(self.files.path.trim());
+            let name = path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            self.open_read_file(&name, std::fs::read(&path).map_err(|err| err.to_string()));
+        }
+    }
+
+    /// Opens a file that was read natively, or reports why it could not be.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn open_read_file(&mut self, name: &str, bytes: Result<Vec<u8>, String>) {
+        match bytes {
+            Ok(bytes) => {
+                // open_file reports its own failures.
+                self.open_file(name, bytes).ok();
+            }
+            Err(err) => {
+                self.fail(format!("{name}: cannot read the file: {err}"));
+            }
+        }
+    }
+
+    /// The structure dialog, and a hint while files are dragged over the window.
+    pub(crate) fn files_overlay_ui(&mut self, ctx: &egui::Context) {
+        self.structure_dialog_ui(ctx);
+        if ctx.input(|i| i.raw.hovered_files.is_empty()) {
+            return;
+        }
+        let painter = ctx.layer_painter(egui::LayerId::new(
+            egui::Order::Foreground,
+            egui::Id::unique("drop_hint"),
+        ));
+        let rect = ctx.content_rect();
+        let visuals = ctx.global_style().visuals.clone();
+        painter.rect_filled(rect, 0.0, visuals.panel_fill.gamma_multiply(0.9));
+        painter.rect_stroke(
+            rect.shrink(12.0),
+            12.0,
+            egui::Stroke::new(3.0, visuals.selection.stroke.color),
+            egui::StrokeKind::Inside,
+        );
+        painter.text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            format!("Drop a {OPEN_EXTENSIONS} file to open it"),
+            egui::FontId::proportional(28.0),
+            visuals.strong_text_color(),
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_stem_drops_only_mesh_extensions() {
+        assert_eq!(mesh_stem("cube.htb"), "cube");
+        assert_eq!(mesh_stem("my.mesh.obj"), "my.mesh");
+        assert_eq!(mesh_stem("torus-200k"), "torus-200k");
+        assert_eq!(mesh_stem("notes.txt"), "notes.txt");
+        assert_eq!(mesh_stem(".obj"), ".obj");
+    }
+
+    #[test]
+    fn save_formats_round_trip_their_keys() {
+        for format in SaveFormat::ALL {
+            assert_eq!(SaveFormat::parse(format.key()), Some(format));
+        }
+        assert_eq!(SaveFormat::parse("stl"), None);
+    }
+}

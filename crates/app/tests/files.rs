@@ -1,0 +1,237 @@
+//! Opening files (dropped on the window, with the structure dialog), saving
+//! in every format, and the OBJ editor's inline error marks, driven natively
+//! through `egui_kittest`.
+
+use std::{
+    path::{Path, PathBuf},
+    sync::Arc,
+};
+
+use edgewise_app::{EdgewiseApp, GraphicsBackend, code_editor::Diagnostic, files::SaveFormat};
+use edgewise_core::{formats, mesh::Structure};
+use egui_kittest::{Harness, kittest::Queryable as _};
+
+const QUAD: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+
+fn harness() -> Harness<'static, EdgewiseApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
+}
+
+/// A file dropped on the window, as the native integration delivers it.
+#[derive(Debug)]
+struct DroppedFile {
+    path: PathBuf,
+    bytes: Vec<u8>,
+}
+
+impl egui::DroppedFile for DroppedFile {
+    fn path(&self) -> &Path {
+        &self.path
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        Ok(self.bytes.clone())
+    }
+}
+
+fn drop_file(harness: &mut Harness<'static, EdgewiseApp>, name: &str, bytes: &[u8]) {
+    harness
+        .input_mut()
+        .dropped_files
+        .push(Arc::new(DroppedFile {
+            path: PathBuf::from("/home/student").join(name),
+            bytes: bytes.to_vec(),
+        }));
+    harness.run();
+}
+
+#[test]
+fn a_dropped_obj_asks_for_a_structure_and_opens_as_half_edge() {
+    let mut harness = harness();
+    harness.state_mut().load_sample("cube", None).expect("cube");
+    harness.run();
+    drop_file(&mut harness, "quad.obj", QUAD.as_bytes());
+
+    let state = harness.state().state();
+    let dialog = state.dialog.expect("the structure dialog is open");
+    assert_eq!(
+        (dialog.kind, dialog.file.as_str()),
+        ("structure", "quad.obj")
+    );
+    // It offers the current structure first: the cube sample is half-edge.
+    assert_eq!(dialog.structure, "half");
+    assert_eq!(state.mesh.as_deref(), Some("cube.htb"), "nothing opens yet");
+
+    harness
+        .get_by_label("Winged-edge: one record per edge, with its two faces and four wings")
+        .click();
+    harness.run();
+    harness
+        .get_by_label("Half-edge: two records per edge, one for each side")
+        .click();
+    harness.run();
+    harness.get_by_label("Open").click();
+    harness.run();
+
+    let state = harness.state().state();
+    assert!(state.dialog.is_none());
+    assert_eq!(state.mesh.as_deref(), Some("quad.obj"));
+    assert_eq!(state.structure, Some("half"));
+    assert_eq!((state.counts.faces, state.counts.halfedges), (1, 8));
+    assert!(state.error.is_none());
+}
+
+#[test]
+fn cancelling_the_dialog_keeps_the_mesh() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .expect("tetrahedron");
+    drop_file(&mut harness, "quad.obj", QUAD.as_bytes());
+    assert_eq!(
+        harness.state().state().dialog.map(|d| d.structure),
+        Some("winged")
+    );
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    let state = harness.state().state();
+    assert!(state.dialog.is_none());
+    assert_eq!(state.mesh.as_deref(), Some("tetrahedron.wtb"));
+    // Answering with nothing to answer is refused.
+    assert!(harness.state_mut().answer_structure_dialog(None).is_err());
+}
+
+#[test]
+fn table_files_open_as_what_they_store_and_bad_files_keep_the_mesh() {
+    let mut harness = harness();
+    let cube = std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../meshes/cube.htb"))
+        .expect("the cube sample");
+    drop_file(&mut harness, "cube.htb", &cube);
+    let state = harness.state().state();
+    assert!(state.dialog.is_none(), "a table file needs no question");
+    assert_eq!(state.structure, Some("half"));
+
+    drop_file(&mut harness, "notes.txt", b"hello");
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("cube.htb"));
+    let error = state.error.expect("an unknown extension is refused");
+    assert!(
+        error.contains("notes.txt") && error.contains(".obj"),
+        "{error}"
+    );
+
+    // A broken PLY chosen as winged-edge: the loader's place is in the message.
+    drop_file(
+        &mut harness,
+        "bad.ply",
+        b"ply\nformat ascii 1.0\nelement vertex x\n",
+    );
+    harness
+        .state_mut()
+        .answer_structure_dialog(Some(Structure::WingedEdge))
+        .unwrap_err();
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("cube.htb"));
+    assert!(
+        state
+            .error
+            .as_deref()
+            .is_some_and(|e| e.starts_with("bad.ply:3")),
+        "{:?}",
+        state.error
+    );
+}
+
+#[test]
+fn every_save_format_loads_back_with_the_same_counts() {
+    let mut harness = harness();
+    let app = harness.state_mut();
+    app.load_sample("cube", Some(Structure::WingedEdge))
+        .expect("cube");
+    let expected = app.state().counts;
+    for format in SaveFormat::ALL {
+        let saved = app.export(format).expect("the cube saves");
+        assert_eq!(
+            saved.name,
+            format!("cube.{}", format.format().extension()),
+            "{format:?}"
+        );
+        // Each file loads as the structure it stores (winged for PLY and OBJ).
+        let loaded = formats::load(&saved.bytes, &saved.name, Structure::WingedEdge)
+            .unwrap_or_else(|err| panic!("{format:?}: {}", err.render(&saved.name)));
+        assert_eq!(
+            (
+                loaded.mesh.vertex_count(),
+                loaded.mesh.edge_count(),
+                loaded.mesh.face_count()
+            ),
+            (expected.vertices, expected.edges, expected.faces),
+            "{format:?}"
+        );
+        if format == SaveFormat::Htb {
+            assert!(loaded.converted_from.is_some(), "htb stores half-edges");
+        }
+    }
+    let binary = app.export(SaveFormat::PlyBinary).expect("binary PLY");
+    assert!(
+        binary
+            .bytes
+            .starts_with(b"ply\nformat binary_little_endian 1.0\n")
+    );
+
+    // The menu offers every format.
+    harness.run();
+    harness.get_by_label("Save as…").click();
+    harness.run();
+    for format in SaveFormat::ALL {
+        harness.get_by_label(format.label());
+    }
+}
+
+#[test]
+fn a_broken_edit_is_marked_at_its_line_and_the_mesh_stays() {
+    let mut harness = harness();
+    harness.get_by_label("OBJ editor").click();
+    harness.run();
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.focus();
+    editor.type_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    harness.run_steps(60);
+    assert_eq!(harness.state().state().counts.faces, 1);
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.type_text("f 1 2 7\n");
+    harness.run_steps(60);
+
+    let state = harness.state().state();
+    assert_eq!(state.counts.faces, 1, "the last good mesh stays");
+    assert!(
+        state.error.is_none(),
+        "the editor shows the problem, not the panel"
+    );
+    let [
+        Diagnostic {
+            line,
+            column,
+            message,
+        },
+    ] = state.diagnostics.as_slice()
+    else {
+        panic!("one diagnostic: {:?}", state.diagnostics);
+    };
+    assert_eq!((*line, *column), (5, Some(7)), "{message}");
+    // The message is on screen, in the editor panel, without hovering.
+    let label = harness.get_by_label_contains(message.as_str());
+    assert!(label.rect().left() > 900.0, "{:?}", label.rect());
+
+    // Deleting the line clears the mark.
+    for _ in "f 1 2 7\n".chars() {
+        harness.key_press(egui::Key::Backspace);
+    }
+    harness.run_steps(60);
+    let state = harness.state().state();
+    assert!(state.diagnostics.is_empty(), "{:?}", state.diagnostics);
+}
