@@ -459,35 +459,18 @@ impl EdgewiseApp {
             }
             self.algorithm_menu_ui(ui);
             self.view_options_menu_ui(ui);
-            let theme_label = if self.theme.dark {
-                "Light theme"
-            } else {
-                "Dark theme"
-            };
-            if ui.button(theme_label).clicked() {
-                self.toggle_theme();
-            }
-            if ui.button("Settings…").clicked() {
-                self.show_settings = !self.show_settings;
-            }
-            self.present_menu_ui(ui);
-            if ui
-                .button("New tab")
-                .on_hover_text("Open another mesh beside this one, in a tab")
-                .clicked()
-            {
-                self.new_tab();
-            }
+            help_menu_ui(ui);
             ui.separator();
             if let Some(doc) = &self.document {
                 let mesh = doc.mesh();
-                ui.label(format!(
+                let summary = format!(
                     "{}: {} vertices, {} edges, {} faces",
                     doc.name,
                     mesh.vertex_count(),
                     mesh.edge_count(),
                     mesh.face_count()
-                ));
+                );
+                ui.add(egui::Label::new(egui::RichText::new(summary).weak()).truncate());
             }
         });
     }
@@ -506,6 +489,9 @@ impl EdgewiseApp {
             ui.checkbox(&mut options.show_axes, "Axes");
             ui.checkbox(&mut options.show_orientation, "Face orientation");
             ui.checkbox(&mut options.solid_faces, "Solid faces");
+            if ui.button("Frame the mesh").clicked() {
+                self.view.frame_all();
+            }
             let mut side_by_side = self.side_by_side;
             if ui
                 .checkbox(&mut side_by_side, "Winged-edge and half-edge side by side")
@@ -513,8 +499,25 @@ impl EdgewiseApp {
             {
                 self.set_side_by_side(side_by_side).ok();
             }
-            if ui.button("Frame the mesh").clicked() {
-                self.view.frame_all();
+            ui.separator();
+            let theme_label = if self.theme.dark {
+                "Light theme"
+            } else {
+                "Dark theme"
+            };
+            if ui.button(theme_label).clicked() {
+                self.toggle_theme();
+            }
+            if ui.button("Settings…").clicked() {
+                self.show_settings = true;
+            }
+            self.present_menu_ui(ui);
+            if ui
+                .button("New tab")
+                .on_hover_text("Open another mesh beside this one, in a tab")
+                .clicked()
+            {
+                self.new_tab();
             }
         });
     }
@@ -745,6 +748,44 @@ fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
         }
     }
     styles
+}
+
+/// A short guide: what to click, the keys, and what the colours mean.
+fn help_menu_ui(ui: &mut egui::Ui) {
+    ui.menu_button("Help", |ui| {
+        ui.set_max_width(420.0);
+        ui.strong("Edgewise");
+        ui.label(
+            "Click a vertex, an edge or a face, in the 3D view or in a table: it is \
+             highlighted with every element its record refers to, labelled with its role. \
+             Every reference in a table is a link.",
+        );
+        ui.separator();
+        ui.strong("Keys");
+        egui::Grid::new("help_keys").num_columns(2).show(ui, |ui| {
+            for (keys, what) in [
+                (
+                    "n  p  t  f  v",
+                    "half-edge walking: successor, predecessor, pair, face, end vertex",
+                ),
+                ("Space  →", "step the algorithm forward"),
+                ("←", "step back"),
+                ("Home  End", "the first and the last step"),
+                ("P", "play or pause"),
+                ("Esc", "leave the presentation"),
+                ("double-click", "frame the mesh"),
+            ] {
+                ui.monospace(keys);
+                ui.label(what);
+                ui.end_row();
+            }
+        });
+        ui.separator();
+        ui.strong("Camera");
+        ui.label(
+            "Drag to orbit; wheel, pinch or right-drag to zoom; middle- or shift-drag to pan.",
+        );
+    });
 }
 
 fn pick_of(element: ElementRef) -> Pick {

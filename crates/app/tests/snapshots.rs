@@ -14,8 +14,9 @@
 use std::sync::Arc;
 
 use edgewise_app::{
-    EdgewiseApp,
+    Argument, EdgewiseApp,
     selection::{ElementKind, ElementRef},
+    settings::Settings,
 };
 use edgewise_core::mesh::Structure;
 use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
@@ -251,9 +252,11 @@ fn cube_half_edge_dark_at_lecture_hall_scale() {
     let Some(mut harness) = harness(egui::vec2(1280.0, 720.0), 1.5) else {
         return;
     };
-    harness.get_by_label("Dark theme").click();
-    harness.run();
     let app = harness.state_mut();
+    app.set_settings(Settings {
+        dark: true,
+        ..Settings::default()
+    });
     app.load_sample("cube", Some(Structure::HalfEdge)).unwrap();
     app.select(Some(ElementRef {
         kind: ElementKind::Face,
@@ -271,7 +274,10 @@ fn obj_editor_with_an_error(dark: bool, name: &str) {
         return;
     };
     if dark {
-        harness.get_by_label("Dark theme").click();
+        harness.state_mut().set_settings(Settings {
+            dark: true,
+            ..Settings::default()
+        });
         harness.run();
     }
     harness.get_by_label("OBJ editor").click();
@@ -316,4 +322,57 @@ fn structure_dialog() {
         .unwrap();
     harness.run();
     harness.snapshot_options("structure-dialog", &options());
+}
+
+/// A trace at the first step whose operation is `operation`.
+fn trace_at(
+    harness: &mut Harness<'static, EdgewiseApp>,
+    sample: &str,
+    structure: Structure,
+    v: f64,
+    operation: &str,
+) {
+    let app = harness.state_mut();
+    app.load_sample(sample, Some(structure)).unwrap();
+    app.run_algorithm(
+        "vertexAdjacentEdge",
+        &[("v".to_owned(), Argument::Number(v))],
+    )
+    .unwrap();
+    for _ in 0..200 {
+        harness.state_mut().trace_step(1).unwrap();
+        let state = harness.state().state();
+        if state.trace.as_ref().unwrap().operation == operation {
+            break;
+        }
+    }
+    harness.run();
+}
+
+#[test]
+fn trace_lookup_step_light() {
+    let Some(mut harness) = harness(egui::vec2(1440.0, 900.0), 1.0) else {
+        return;
+    };
+    trace_at(
+        &mut harness,
+        "tetrahedron",
+        Structure::WingedEdge,
+        1.0,
+        "lookup",
+    );
+    harness.snapshot_options("trace-lookup-tetrahedron-winged-light", &options());
+}
+
+#[test]
+fn trace_comparison_step_dark() {
+    let Some(mut harness) = harness(egui::vec2(1440.0, 900.0), 1.0) else {
+        return;
+    };
+    harness.state_mut().set_settings(Settings {
+        dark: true,
+        ..Settings::default()
+    });
+    trace_at(&mut harness, "cube", Structure::HalfEdge, 0.0, "compare");
+    harness.snapshot_options("trace-compare-cube-half-dark", &options());
 }

@@ -31,6 +31,8 @@ fn tabs_keep_their_own_mesh_and_trace() {
     app.trace_step(4).expect("steps");
     harness.run();
 
+    harness.get_by_label("View").click();
+    harness.run();
     harness.get_by_label("New tab").click();
     harness.run();
     let state = harness.state().state();

@@ -419,6 +419,8 @@ fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
         .expect("a lookup");
     assert_eq!(lookup.colour, "#123456");
 
+    harness.get_by_label("View").click();
+    harness.run();
     harness.get_by_label("Settings…").click();
     harness.run();
     harness

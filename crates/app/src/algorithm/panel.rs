@@ -427,10 +427,13 @@ fn variables_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
 fn legend_ui(ui: &mut egui::Ui, theme: &Theme) {
     ui.horizontal_wrapped(|ui| {
         for role in TraceRole::ALL {
-            let (rect, _) = ui.allocate_exact_size(vec2(12.0, 12.0), Sense::hover());
-            ui.painter()
-                .rect_filled(rect, 2.0, theme.trace_colour(role));
-            ui.small(role.meaning());
+            // A chip and its words stay together when the row wraps.
+            ui.horizontal(|ui| {
+                let (rect, _) = ui.allocate_exact_size(vec2(12.0, 12.0), Sense::hover());
+                ui.painter()
+                    .rect_filled(rect, 2.0, theme.trace_colour(role));
+                ui.small(role.meaning());
+            });
         }
     });
 }

@@ -153,7 +153,7 @@ impl EdgewiseApp {
     /// The Present menu: choose the panels, then start.
     pub(super) fn present_menu_ui(&mut self, ui: &mut egui::Ui) {
         let mut start = None;
-        ui.menu_button("Present", |ui| {
+        ui.menu_button("Present…", |ui| {
             let choice = &mut self.presentation_choice;
             ui.label("Show, besides the 3D view:");
             ui.checkbox(&mut choice.algorithm, "Algorithm view");
