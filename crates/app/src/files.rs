@@ -30,13 +30,37 @@ pub struct FileState {
     /// Files read by the browser (picker or drop), opened on the next frame:
     /// the browser reads them asynchronously.
     #[cfg(target_arch = "wasm32")]
-    inbox: crate::web_files::Inbox,
+    pub(crate) inbox: crate::web_files::Inbox,
     /// The path typed into the native Open box.
     #[cfg(not(target_arch = "wasm32"))]
     path: String,
     /// Where the last native save went, shown in the Save as… menu.
     #[cfg(not(target_arch = "wasm32"))]
     saved: Option<String>,
+}
+
+/// Whether a file holds algorithms (`.alg`) rather than a mesh.
+pub fn is_algorithm_file(name: &str) -> bool {
+    std::path::Path::new(name)
+        .extension()
+        .is_some_and(|ext| ext.eq_ignore_ascii_case("alg"))
+}
+
+/// Writes a file: a download in the browser, a file in the current directory
+/// natively. Returns what to tell the user.
+pub fn write_file(name: &str, bytes: &[u8]) -> Result<String, String> {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::web_files::download(name, bytes).map(|()| format!("Downloaded {name}"))
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        std::env::current_dir()
+            .map(|dir| dir.join(name))
+            .and_then(|path| std::fs::write(&path, bytes).map(|()| path))
+            .map(|path| format!("Saved {}", path.display()))
+            .map_err(|err| format!("cannot write {name}: {err}"))
+    }
 }
 
 /// A format the Save as… menu and `exportMesh` offer.
@@ -147,6 +171,9 @@ impl EdgewiseApp {
     /// stores; for PLY and OBJ the structure dialog asks first. Unknown
     /// extensions are refused with the current mesh kept.
     pub fn open_file(&mut self, name: &str, bytes: Vec<u8>) -> Result<(), String> {
+        if is_algorithm_file(name) {
+            return self.open_algorithm_file(name, &bytes);
+        }
         let Some(format) = Format::from_name(name) else {
             return Err(self.fail(format!(
                 "{name}: Edgewise opens {OPEN_EXTENSIONS} files; the extension says which"
@@ -165,15 +192,16 @@ impl EdgewiseApp {
     /// directory natively.
     fn save_as(&mut self, format: SaveFormat) -> Result<(), String> {
         let saved = self.export(format).map_err(|err| self.fail(err))?;
-        #[cfg(target_arch = "wasm32")]
-        let result = crate::web_files::download(&saved.name, &saved.bytes);
-        #[cfg(not(target_arch = "wasm32"))]
-        let result = std::env::current_dir()
-            .map(|dir| dir.join(&saved.name))
-            .and_then(|path| std::fs::write(&path, &saved.bytes).map(|()| path))
-            .map(|path| self.files.saved = Some(format!("Saved {}", path.display())))
-            .map_err(|err| format!("cannot write {}: {err}", saved.name));
-        result.map_err(|err| self.fail(err))
+        match write_file(&saved.name, &saved.bytes) {
+            #[cfg(not(target_arch = "wasm32"))]
+            Ok(said) => {
+                self.files.saved = Some(said);
+                Ok(())
+            }
+            #[cfg(target_arch = "wasm32")]
+            Ok(_) => Ok(()),
+            Err(err) => Err(self.fail(err)),
+        }
     }
 
     /// Takes files dropped on the window this frame (the first one, if
@@ -240,7 +268,8 @@ impl EdgewiseApp {
                 "Open a {OPEN_EXTENSIONS} file, or drop one on the page"
             ))
             .clicked()
-            && let Err(message) = crate::web_files::pick_file(&self.files.inbox, ui.ctx())
+            && let Err(message) =
+                crate::web_files::pick_file(&self.files.inbox, ui.ctx(), crate::web_files::MESHES)
         {
             self.fail(message);
         }

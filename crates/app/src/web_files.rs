@@ -15,12 +15,15 @@ use crate::{files::PendingFile, web::js_error_text as js_text};
 /// Files read (or failed reads, as messages) waiting for the next frame.
 pub type Inbox = Rc<RefCell<Vec<Result<PendingFile, String>>>>;
 
-/// What the picker offers.
-const ACCEPT: &str = ".wtb,.htb,.ply,.obj";
+/// What the picker offers for meshes.
+pub const MESHES: &str = ".wtb,.htb,.ply,.obj";
+/// What the picker offers for algorithms.
+pub const ALGORITHMS: &str = ".alg,.txt";
 
-/// Opens the browser's file picker; the chosen file arrives in `inbox`.
-/// Must run soon after a click: browsers only open pickers for a user's action.
-pub fn pick_file(inbox: &Inbox, ctx: &egui::Context) -> Result<(), String> {
+/// Opens the browser's file picker offering `accept`; the chosen file
+/// arrives in `inbox`. Must run soon after a click: browsers only open
+/// pickers for a user's action.
+pub fn pick_file(inbox: &Inbox, ctx: &egui::Context, accept: &str) -> Result<(), String> {
     let document = web_sys::window()
         .and_then(|w| w.document())
         .ok_or("no document to open a file picker in")?;
@@ -30,7 +33,7 @@ pub fn pick_file(inbox: &Inbox, ctx: &egui::Context) -> Result<(), String> {
         .dyn_into::<web_sys::HtmlInputElement>()
         .map_err(|_| "the browser did not create a file input")?;
     input.set_type("file");
-    input.set_accept(ACCEPT);
+    input.set_accept(accept);
     let (inbox, ctx, target) = (inbox.clone(), ctx.clone(), input.clone());
     // Called once when a file is chosen; a cancelled picker leaves it unused.
     let on_change = Closure::once_into_js(move || {

@@ -376,3 +376,20 @@ fn trace_comparison_step_dark() {
     trace_at(&mut harness, "cube", Structure::HalfEdge, 0.0, "compare");
     harness.snapshot_options("trace-compare-cube-half-dark", &options());
 }
+
+#[test]
+fn algorithm_editor_with_errors_light() {
+    let Some(mut harness) = harness(egui::vec2(1440.0, 900.0), 1.0) else {
+        return;
+    };
+    let app = harness.state_mut();
+    app.load_sample("cube", Some(Structure::HalfEdge)).unwrap();
+    app.open_file(
+        "walks.alg",
+        b"// Two mistakes: a misspelt lookup and a missing `:=`.\nalgorithm walk(v : Vertex) : HalfEdge;\nvar e : Edge;\nbegin\n  e := v.incidentEgde;\n  e = e.pairEdge;\n  mark e;\nend\n"
+            .to_vec(),
+    )
+    .unwrap();
+    harness.run();
+    harness.snapshot_options("algorithm-editor-errors-light", &options());
+}

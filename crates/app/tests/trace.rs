@@ -471,3 +471,42 @@ fn presenting_shows_the_chosen_panels_and_escape_leaves() {
     harness.get_by_label("pair");
     assert!((ctx.zoom_factor() - 1.0).abs() < 1e-6);
 }
+
+#[test]
+fn an_algorithm_file_opens_in_the_editor_and_joins_the_menu() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .open_file(
+            "walks.alg",
+            b"algorithm twoSteps(e : Edge) : HalfEdge;\nbegin\n  mark e.successorEdge.successorEdge;\nend\n"
+                .to_vec(),
+        )
+        .expect("opens");
+    harness.run();
+    let list = harness.state().algorithm_list();
+    assert!(
+        list.iter()
+            .any(|a| a.name == "twoSteps" && a.structure == "half"),
+        "{list:?}"
+    );
+    harness.get_by_label_contains("In the Algorithm menu: twoSteps");
+
+    // A broken file is marked at its line; nothing joins the menu.
+    harness
+        .state_mut()
+        .open_file(
+            "broken.alg",
+            b"algorithm oops(e : Edge) : HalfEdge;\nbegin\n  mark e.sucessorEdge;\nend\n".to_vec(),
+        )
+        .expect("opens in the editor");
+    harness.run();
+    harness.get_by_label_contains("editor.alg:3:");
+    assert!(
+        !harness
+            .state()
+            .algorithm_list()
+            .iter()
+            .any(|a| a.name == "oops")
+    );
+}

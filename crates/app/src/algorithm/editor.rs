@@ -5,13 +5,15 @@
 use std::time::Duration;
 
 use edgewise_core::lang::{self, diagnostic::LineIndex};
-use egui::{Color32, Stroke, text::LayoutJob};
 
 use super::{
     AlgorithmLibrary,
-    highlight::{CodeStyle, Highlighted, Mark},
+    highlight::{CodeStyle, Highlighted},
 };
-use crate::theme::Theme;
+use crate::{
+    code_editor::{CodeEditor, Diagnostic},
+    theme::Theme,
+};
 
 /// How long typing must pause before the text is compiled.
 const DEBOUNCE: Duration = Duration::from_millis(400);
@@ -29,23 +31,23 @@ begin\n\
   mark e.pairEdge;\n\
 end\n";
 
-/// One problem in the text, placed for the editor.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Problem {
-    pub line: u32,
-    pub column: u32,
-    /// Byte range in the text, underlined.
-    pub range: std::ops::Range<usize>,
-    pub message: String,
+/// What the editor asks the app to do with files.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EditorCommand {
+    Open,
+    Save,
 }
 
 /// The editor's text, its problems and what the last compile added.
 pub struct AlgorithmEditor {
     pub text: String,
     pending_since: Option<f64>,
-    pub problems: Vec<Problem>,
+    /// Each error, marked at its line and column in the editor.
+    pub problems: Vec<Diagnostic>,
     /// "Added to the menu: a, b", after a good compile.
     pub status: Option<String>,
+    /// The name the text is saved under: the opened file's, or a default.
+    pub file_name: String,
 }
 
 impl Default for AlgorithmEditor {
@@ -55,6 +57,7 @@ impl Default for AlgorithmEditor {
             pending_since: None,
             problems: Vec::new(),
             status: None,
+            file_name: "algorithms.alg".to_owned(),
         }
     }
 }
@@ -87,10 +90,9 @@ impl AlgorithmEditor {
                         if let Some(hint) = &d.hint {
                             message.push_str(&format!(" (hint: {hint})"));
                         }
-                        Problem {
-                            line: at.line,
-                            column: at.column,
-                            range: d.span.range(),
+                        Diagnostic {
+                            line: at.line as usize,
+                            column: Some(at.column as usize),
                             message,
                         }
                     })
@@ -100,43 +102,58 @@ impl AlgorithmEditor {
         }
     }
 
-    /// Draws the editor; compiles once typing has paused.
-    pub fn ui(&mut self, ui: &mut egui::Ui, library: &mut AlgorithmLibrary, theme: &Theme) {
+    /// Draws the editor; compiles once typing has paused. Returns a file
+    /// command for the app to carry out.
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        library: &mut AlgorithmLibrary,
+        theme: &Theme,
+    ) -> Option<EditorCommand> {
         let now = ui.input(|i| i.time);
+        let mut command = None;
+        ui.horizontal(|ui| {
+            if ui
+                .button("Open file…")
+                .on_hover_text("Open a file of algorithms (.alg), or drop one on the window")
+                .clicked()
+            {
+                command = Some(EditorCommand::Open);
+            }
+            if ui
+                .button("Save…")
+                .on_hover_text(format!("Save this text as {}", self.file_name))
+                .clicked()
+            {
+                command = Some(EditorCommand::Save);
+            }
+        });
         ui.weak("Write an algorithm; each one that compiles joins the Algorithm menu.");
         if let Some(status) = &self.status {
             ui.colored_label(theme.trace_colour(super::TraceRole::Lookup), status);
         }
-        for problem in &self.problems {
+        if let Some(first) = self.problems.first() {
             ui.colored_label(
                 ui.visuals().error_fg_color,
                 format!(
-                    "{EDITOR_FILE}:{}:{}: {}",
-                    problem.line, problem.column, problem.message
+                    "{} problem{}; the first at {EDITOR_FILE}:{}:{}",
+                    self.problems.len(),
+                    if self.problems.len() == 1 { "" } else { "s" },
+                    first.line,
+                    first.column.unwrap_or(1)
                 ),
             );
         }
         let style = CodeStyle::new(14.0, theme.dark);
-        let error_colour = ui.visuals().error_fg_color;
-        let problems = self.problems.clone();
-        let mut layouter = |ui: &egui::Ui, text: &dyn egui::TextBuffer, wrap_width: f32| {
-            let text = text.as_str();
-            let mut job = layout(text, &style, &problems, error_colour);
-            job.wrap.max_width = wrap_width;
-            ui.fonts_mut(|f| f.layout_job(job))
+        let highlighter = move |_: &egui::Style, text: &str| {
+            Highlighted::new(text).layout(text, 0..text.len(), &[], &style)
         };
-        let response = egui::ScrollArea::vertical()
-            .id_salt("algorithm_editor")
-            .show(ui, |ui| {
-                ui.add(
-                    egui::TextEdit::multiline(&mut self.text)
-                        .code_editor()
-                        .desired_width(f32::INFINITY)
-                        .desired_rows(18)
-                        .layouter(&mut layouter),
-                )
-            })
-            .inner;
+        let response = CodeEditor::new("algorithm_editor", &mut self.text)
+            .diagnostics(&self.problems)
+            .highlighter(&highlighter)
+            .hint_text("algorithm name(v : Vertex) : HalfEdge;\nbegin\n  …\nend")
+            .desired_rows(18)
+            .show(ui);
         if response.changed() {
             self.pending_since = Some(now);
         }
@@ -150,21 +167,8 @@ impl AlgorithmEditor {
                 self.compile(library);
             }
         }
+        command
     }
-}
-
-/// The coloured text with each problem's range underlined in red.
-fn layout(text: &str, style: &CodeStyle, problems: &[Problem], error: Color32) -> LayoutJob {
-    let marks: Vec<Mark> = problems
-        .iter()
-        .map(|p| Mark {
-            range: p.range.clone(),
-            background: error.gamma_multiply(0.15),
-            text: None,
-            underline: Stroke::new(2.0, error),
-        })
-        .collect();
-    Highlighted::new(text).layout(text, 0..text.len(), &marks, style)
 }
 
 #[cfg(test)]

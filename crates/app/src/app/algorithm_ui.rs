@@ -7,7 +7,8 @@ use edgewise_core::lang::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
-    algorithm::{Origin, Run, session::argument_value},
+    algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
+    files,
     selection::{ElementKind, ElementRef},
     state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
@@ -306,8 +307,53 @@ impl EdgewiseApp {
                 let Self {
                     algorithms, theme, ..
                 } = self;
-                algorithms.editor.ui(ui, &mut algorithms.library, theme);
+                match algorithms.editor.ui(ui, &mut algorithms.library, theme) {
+                    Some(EditorCommand::Open) => self.pick_algorithm_file(ui.ctx()),
+                    Some(EditorCommand::Save) => {
+                        let editor = &mut self.algorithms.editor;
+                        match files::write_file(&editor.file_name, editor.text.as_bytes()) {
+                            Ok(said) => editor.status = Some(said),
+                            Err(message) => {
+                                self.fail(message);
+                            }
+                        }
+                    }
+                    None => {}
+                }
             }
+        }
+    }
+}
+
+impl EdgewiseApp {
+    /// Puts an opened `.alg` file in the algorithm editor and compiles it:
+    /// its algorithms join the menu, or its errors are marked at their lines.
+    pub(crate) fn open_algorithm_file(&mut self, name: &str, bytes: &[u8]) -> Result<(), String> {
+        let Ok(text) = std::str::from_utf8(bytes) else {
+            return Err(self.fail(format!("{name}: an algorithm file must be UTF-8 text")));
+        };
+        let editor = &mut self.algorithms.editor;
+        editor.file_name = name.to_owned();
+        editor.set_text(text.to_owned(), &mut self.algorithms.library);
+        self.show_algorithm_panel = true;
+        self.algorithm_tab = AlgorithmTab::Write;
+        Ok(())
+    }
+
+    /// The browser's file picker for algorithm files; natively, files are
+    /// dropped on the window (or opened by path through Open mesh…).
+    fn pick_algorithm_file(&mut self, ctx: &egui::Context) {
+        #[cfg(target_arch = "wasm32")]
+        if let Err(message) =
+            crate::web_files::pick_file(&self.files.inbox, ctx, crate::web_files::ALGORITHMS)
+        {
+            self.fail(message);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let _ = ctx;
+            self.algorithms.editor.status =
+                Some("Drop an .alg file on the window, or type its path in Open mesh….".to_owned());
         }
     }
 }
