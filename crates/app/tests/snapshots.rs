@@ -5,7 +5,7 @@
 //!
 //! kittest's own wgpu renderer draws without a depth buffer, which the 3D
 //! view's paint callback needs, so these tests render through
-//! [`DepthRenderer`]: the same egui_wgpu renderer with the `Depth24Plus`
+//! [`DepthRenderer`]: the same `egui_wgpu` renderer with the `Depth24Plus`
 //! attachment the app gets from eframe. Without a wgpu adapter (no GPU and
 //! no lavapipe) the tests say so and pass.
 
@@ -26,9 +26,7 @@ const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
 /// threshold absorbs small differences between Mesa versions.
 fn options() -> SnapshotOptions {
-    SnapshotOptions::new()
-        .threshold(1.5)
-        .failed_pixel_count_threshold(400)
+    SnapshotOptions::new().threshold(1.5).max_failed_pixels(400)
 }
 
 /// A software (or any) wgpu device with WebGL2's limits, as the app gets.
