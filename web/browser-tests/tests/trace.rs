@@ -139,7 +139,9 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
     let mut stopped = None;
     for v in 0..9 {
         browser
-            .eval_async(&format!("window.edgewise.run('vertexAdjacentFace', {{v: {v}}})"))
+            .eval_async(&format!(
+                "window.edgewise.run('vertexAdjacentFace', {{v: {v}}})"
+            ))
             .await?;
         browser.eval_async("window.edgewise.goto(100000)").await?;
         let state = browser.state().await?;
@@ -175,7 +177,9 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
         .eval_async("window.edgewise.loadAlgorithms('algorithm a(v : Vertex) : HalfEdge;\\nbegin\\n  mark v.incidentEgde;\\nend\\n', 'mine.alg')")
         .await?;
     assert!(
-        message.as_str().is_some_and(|m| m.starts_with("mine.alg:3:")),
+        message
+            .as_str()
+            .is_some_and(|m| m.starts_with("mine.alg:3:")),
         "{message}"
     );
     let loaded = browser
@@ -184,8 +188,9 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
     assert_eq!(loaded, Value::Null);
     let list = browser.eval("return window.edgewise.algorithms()").await?;
     assert!(
-        list.as_array()
-            .is_some_and(|l| l.iter().any(|a| a["name"] == "a" && a["origin"] == "mine.alg")),
+        list.as_array().is_some_and(|l| l
+            .iter()
+            .any(|a| a["name"] == "a" && a["origin"] == "mine.alg")),
         "{list}"
     );
     assert_eq!(
