@@ -6,6 +6,7 @@
 pub mod algorithm;
 mod app;
 mod backend;
+pub mod course_link;
 mod document;
 mod obj_editor;
 pub mod paint;
