@@ -7,6 +7,7 @@ pub mod algorithm;
 mod app;
 mod backend;
 pub mod code_editor;
+pub mod course_link;
 mod document;
 pub mod files;
 mod obj_editor;
