@@ -27,6 +27,7 @@ use crate::{
 };
 
 pub mod algorithm_ui;
+pub mod course;
 pub mod embed;
 pub mod settings_ui;
 mod tabs;
@@ -80,6 +81,10 @@ pub struct EdgewiseApp {
     twin: Option<twin::Twin>,
     /// Embedded in an iframe (`?embed=1`): no menu bar.
     embed: Option<embed::Embed>,
+    show_share: bool,
+    share_status: Option<String>,
+    /// Whether "Copy embed code" includes the tables.
+    share_embed_tables: bool,
     /// The structure new PLY and OBJ loads are built into.
     pub(crate) structure: Structure,
     obj_editor: ObjEditor,
@@ -140,6 +145,9 @@ impl EdgewiseApp {
             side_by_side: false,
             twin: None,
             embed: None,
+            show_share: false,
+            share_status: None,
+            share_embed_tables: false,
             structure: Structure::WingedEdge,
             obj_editor: ObjEditor::default(),
             show_obj_editor: false,
@@ -189,6 +197,10 @@ impl EdgewiseApp {
                 Document::from_polygons(sample.name, &generate::torus(*nu, *nv), structure)
             }
         };
+        let loaded = loaded.map(|mut document| {
+            document.sample = Some(sample.name.to_owned());
+            document
+        });
         self.open(loaded, true)
     }
 
@@ -460,6 +472,13 @@ impl EdgewiseApp {
             self.algorithm_menu_ui(ui);
             self.view_options_menu_ui(ui);
             help_menu_ui(ui);
+            if ui
+                .add_enabled(self.document.is_some(), egui::Button::new("Share…"))
+                .on_hover_text("A link to this view, or code to embed it in lecture notes")
+                .clicked()
+            {
+                self.show_share = true;
+            }
             ui.separator();
             if let Some(doc) = &self.document {
                 let mesh = doc.mesh();
@@ -669,6 +688,7 @@ impl eframe::App for EdgewiseApp {
         self.keyboard_walk(ui.ctx());
         self.trace_keys(ui.ctx());
         self.settings_window_ui(ui.ctx());
+        self.share_window_ui(ui.ctx());
         self.presentation_hint_ui(ui.ctx());
         if (self.show_algorithm_panel || self.algorithms.is_active())
             && presenting.is_none_or(|p| p.algorithm)

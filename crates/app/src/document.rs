@@ -21,6 +21,9 @@ pub struct Document {
     generation: u64,
     /// See [`Self::mesh_id`].
     mesh_id: u64,
+    /// The built-in sample this mesh is, as loaded (not converted since), so
+    /// a shared link can name it instead of carrying its text.
+    pub sample: Option<String>,
 }
 
 impl Document {
@@ -43,6 +46,7 @@ impl Document {
             highlights: Vec::new(),
             generation: 0,
             mesh_id: next_mesh_id(),
+            sample: None,
         })
     }
 
@@ -62,6 +66,7 @@ impl Document {
             highlights: Vec::new(),
             generation: 0,
             mesh_id: next_mesh_id(),
+            sample: None,
         })
     }
 
@@ -123,6 +128,7 @@ impl Document {
             .and_then(|s| map_element(s, self.structure(), &correspondence));
         self.mesh = mesh;
         self.mesh_id = next_mesh_id();
+        self.sample = None;
         self.select(mapped)
     }
 
@@ -138,6 +144,7 @@ impl Document {
             highlights: Vec::new(),
             generation: 0,
             mesh_id: next_mesh_id(),
+            sample: None,
         };
         let mapped = self
             .selection

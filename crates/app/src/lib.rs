@@ -27,7 +27,7 @@ pub mod web;
 mod web_files;
 
 pub use app::{
-    EdgewiseApp, algorithm_ui::Argument, embed::Embed, parse_structure, settings_ui::Presentation,
-    structure_name,
+    EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed, parse_structure,
+    settings_ui::Presentation, structure_name,
 };
 pub use backend::GraphicsBackend;

@@ -84,7 +84,7 @@ impl ElementRef {
 
 /// The part an element plays relative to the selected one. Each role but
 /// `Selected` is also the name of the table column that holds the reference.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Role {
     Selected,
     IncidentEdge,
@@ -105,6 +105,36 @@ pub enum Role {
 }
 
 impl Role {
+    pub const ALL: [Role; 14] = [
+        Role::Selected,
+        Role::IncidentEdge,
+        Role::StartVertex,
+        Role::EndVertex,
+        Role::LeftFace,
+        Role::RightFace,
+        Role::LeftPredecessor,
+        Role::LeftSuccessor,
+        Role::RightPredecessor,
+        Role::RightSuccessor,
+        Role::Face,
+        Role::PairEdge,
+        Role::SuccessorEdge,
+        Role::PredecessorEdge,
+    ];
+
+    /// The role's name in settings and links: 'selected', 'leftPredecessor'.
+    pub fn setting_key(self) -> String {
+        let mut words = self.words_title().split(' ');
+        let mut key = words.next().unwrap_or_default().to_lowercase();
+        key.extend(words);
+        key
+    }
+
+    /// Parses [`Self::setting_key`].
+    pub fn from_setting_key(key: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|role| role.setting_key() == key)
+    }
+
     /// The label shown in the 3D view after the element's id.
     pub fn title(self, selected_kind: ElementKind) -> String {
         match self {
@@ -344,6 +374,15 @@ mod tests {
                 assert_eq!(hl[1].role, Role::IncidentEdge);
                 assert_eq!(hl[1].element.kind, ElementKind::Edge);
             }
+        }
+    }
+
+    #[test]
+    fn roles_have_camel_case_setting_keys() {
+        assert_eq!(Role::LeftPredecessor.setting_key(), "leftPredecessor");
+        assert_eq!(Role::Selected.setting_key(), "selected");
+        for role in Role::ALL {
+            assert_eq!(Role::from_setting_key(&role.setting_key()), Some(role));
         }
     }
 

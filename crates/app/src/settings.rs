@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use egui::Color32;
 use serde::{Deserialize, Serialize};
 
-use crate::{algorithm::TraceRole, theme::Theme};
+use crate::{algorithm::TraceRole, selection::Role, theme::Theme};
 
 /// The local-storage key.
 pub const STORAGE_KEY: &str = "edgewise.settings";
@@ -23,8 +23,9 @@ pub const CODE_SIZES: std::ops::RangeInclusive<f32> = 10.0..=32.0;
 pub struct Settings {
     pub dark: bool,
     pub code_size: f32,
-    /// Trace role key ('lookup', 'marked', …) to `#rrggbb`, only for roles
-    /// the user changed.
+    /// Trace role key ('lookup', 'marked', …) or selection role key
+    /// ('selected', 'leftPredecessor', …) to `#rrggbb`, only for roles the
+    /// user changed.
     pub colours: BTreeMap<String, String>,
 }
 
@@ -61,7 +62,8 @@ impl Settings {
     pub fn sanitized(mut self) -> (Self, Option<String>) {
         let mut ignored = Vec::new();
         self.colours.retain(|role, colour| {
-            let fine = TraceRole::parse(role).is_some() && parse_hex(colour).is_some();
+            let known = TraceRole::parse(role).is_some() || Role::from_setting_key(role).is_some();
+            let fine = known && parse_hex(colour).is_some();
             if !fine {
                 ignored.push(format!("{role}:{colour}"));
             }
@@ -73,7 +75,7 @@ impl Settings {
         self.code_size = self.code_size.clamp(*CODE_SIZES.start(), *CODE_SIZES.end());
         let message = (!ignored.is_empty()).then(|| {
             format!(
-                "ignored colours: {} (a colour is a trace role and six hex digits, such as lookup:22aa44)",
+                "ignored colours: {} (a colour is a role and six hex digits, such as lookup:22aa44)",
                 ignored.join(", ")
             )
         });
@@ -89,20 +91,39 @@ impl Settings {
                 .iter()
                 .filter_map(|(role, hex)| Some((TraceRole::parse(role)?, parse_hex(hex)?)))
                 .collect(),
+            role_overrides: self
+                .colours
+                .iter()
+                .filter_map(|(role, hex)| Some((Role::from_setting_key(role)?, parse_hex(hex)?)))
+                .collect(),
         }
     }
 
-    /// Sets (or, with the journal's own colour, clears) a role's colour.
+    /// Sets (or, with the journal's own colour, clears) a trace role's colour.
     pub fn set_colour(&mut self, role: TraceRole, colour: Color32) {
-        let journal = Theme {
+        let default = Theme {
             dark: self.dark,
-            trace_overrides: Vec::new(),
+            ..Theme::default()
         }
         .journal_trace_colour(role);
-        if colour == journal {
-            self.colours.remove(role.key());
+        self.set_key_colour(role.key(), colour, default);
+    }
+
+    /// Sets (or, with the default, clears) a selection role's colour.
+    pub fn set_role_colour(&mut self, role: Role, colour: Color32) {
+        let default = Theme {
+            dark: self.dark,
+            ..Theme::default()
+        }
+        .default_role_colour(role);
+        self.set_key_colour(&role.setting_key(), colour, default);
+    }
+
+    fn set_key_colour(&mut self, key: &str, colour: Color32, default: Color32) {
+        if colour == default {
+            self.colours.remove(key);
         } else {
-            self.colours.insert(role.key().to_owned(), to_hex(colour));
+            self.colours.insert(key.to_owned(), to_hex(colour));
         }
     }
 

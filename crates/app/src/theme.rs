@@ -14,6 +14,8 @@ pub struct Theme {
     pub dark: bool,
     /// The user's own trace colours, replacing the journal's (Table 3).
     pub trace_overrides: Vec<(TraceRole, Color32)>,
+    /// The user's own selection role colours.
+    pub role_overrides: Vec<(Role, Color32)>,
 }
 
 impl Theme {
@@ -56,6 +58,14 @@ impl Theme {
     /// wings are greens, right-side wings purples, so a student can tell the
     /// two faces' traversals apart at a glance.
     pub fn role_colour(&self, role: Role) -> Color32 {
+        if let Some(&(_, colour)) = self.role_overrides.iter().find(|(r, _)| *r == role) {
+            return colour;
+        }
+        self.default_role_colour(role)
+    }
+
+    /// The app's own colour of a selection role in this theme.
+    pub fn default_role_colour(&self, role: Role) -> Color32 {
         let (light, dark) = match role {
             Role::Selected => ((0xd9, 0x48, 0x0f), (0xff, 0x87, 0x4d)),
             Role::IncidentEdge => ((0x1c, 0x6d, 0xd0), (0x5c, 0xa8, 0xff)),

@@ -10,7 +10,8 @@ use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 use edgewise_core::mesh::Structure;
 
 use crate::{
-    Argument, EdgewiseApp,
+    Argument, EdgewiseApp, FetchedMesh,
+    course_link::{CourseLink, MeshSource},
     files::{SaveFormat, SavedFile},
     selection::{ElementKind, ElementRef},
 };
@@ -74,7 +75,68 @@ async fn start_app() -> Result<(), String> {
             "Edgewise could not define window.edgewise: {}",
             js_error_text(&err)
         )
-    })
+    })?;
+    follow_page_link(&runner).await;
+    Ok(())
+}
+
+/// Applies the course link in the page's address (`?sample=…#mesh=…`),
+/// fetching a `?mesh=` file first. A broken link is reported in the app's
+/// error panel; the app still starts.
+async fn follow_page_link(runner: &eframe::WebRunner) {
+    let Some(location) = web_sys::window().map(|w| w.location()) else {
+        return;
+    };
+    let search = location.search().unwrap_or_default();
+    let hash = location.hash().unwrap_or_default();
+    if search.is_empty() && hash.is_empty() {
+        return;
+    }
+    let (link, messages) = CourseLink::parse(&search, &hash);
+    let fetched = match &link.mesh {
+        Some(MeshSource::Path(path)) => Some(FetchedMesh {
+            name: path.rsplit('/').next().unwrap_or(path).to_owned(),
+            bytes: fetch_bytes(path).await,
+        }),
+        _ => None,
+    };
+    let applied = with_app(runner, |app| {
+        app.apply_course_link(&link, messages, fetched)
+    });
+    if let Err(err) = applied {
+        log::error!("the link could not be applied: {}", js_error_text(&err));
+    }
+}
+
+/// Reads a same-site file, within the size the loaders accept.
+async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
+    let window = web_sys::window().ok_or("no window")?;
+    let response = wasm_bindgen_futures::JsFuture::from(window.fetch_with_str(path))
+        .await
+        .map_err(|err| format!("cannot fetch it: {}", js_error_text(&err)))?
+        .dyn_into::<web_sys::Response>()
+        .map_err(|_| "the fetch gave no response".to_owned())?;
+    if !response.ok() {
+        return Err(format!(
+            "the server answered {} {}",
+            response.status(),
+            response.status_text()
+        ));
+    }
+    let buffer = wasm_bindgen_futures::JsFuture::from(
+        response.array_buffer().map_err(|err| js_error_text(&err))?,
+    )
+    .await
+    .map_err(|err| js_error_text(&err))?;
+    let bytes = js_sys::Uint8Array::new(&buffer).to_vec();
+    if bytes.len() > edgewise_core::formats::MAX_FILE_BYTES {
+        return Err(format!(
+            "the file is {} bytes; Edgewise reads files of at most {} bytes",
+            bytes.len(),
+            edgewise_core::formats::MAX_FILE_BYTES
+        ));
+    }
+    Ok(bytes)
 }
 
 /// Defines `window.edgewise`. Commands return a Promise that resolves to
@@ -346,6 +408,15 @@ fn install_view_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<
         });
         set_fn(api, name, &tab.into_js_value())?;
     }
+
+    let r = runner.clone();
+    let share_url = Closure::<dyn Fn() -> Result<JsValue, JsValue>>::new(move || {
+        let base = crate::app::course::page_base();
+        with_app(&r, |app| app.share_url(&base))?
+            .map(|url| JsValue::from_str(&url))
+            .map_err(|message| JsValue::from(js_sys::Error::new(&message)))
+    });
+    set_fn(api, "shareUrl", &share_url.into_js_value())?;
 
     let r = runner.clone();
     let side_by_side = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |on: JsValue| {

@@ -100,6 +100,31 @@ impl EdgewiseApp {
                             ui.end_row();
                         }
                     });
+                egui::CollapsingHeader::new("Selection colours")
+                    .default_open(false)
+                    .show(ui, |ui| {
+                        egui::Grid::new("role_colours")
+                            .num_columns(2)
+                            .show(ui, |ui| {
+                                for role in crate::selection::Role::ALL {
+                                    let mut colour = theme.role_colour(role);
+                                    let response = ui.color_edit_button_srgba(&mut colour);
+                                    let name = role.title(crate::selection::ElementKind::Edge);
+                                    response.widget_info(|| {
+                                        egui::WidgetInfo::labeled(
+                                            egui::Role::ColorWell,
+                                            true,
+                                            format!("colour of {name}"),
+                                        )
+                                    });
+                                    if response.changed() {
+                                        settings.set_role_colour(role, colour);
+                                    }
+                                    ui.label(name);
+                                    ui.end_row();
+                                }
+                            });
+                    });
                 if ui
                     .add_enabled(
                         !settings.colours.is_empty(),

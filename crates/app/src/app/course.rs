@@ -1,0 +1,340 @@
+//! Course links applied to the app, and the app's view written as one: the
+//! Share dialog and `window.edgewise.shareUrl()`.
+//!
+//! A link is applied in the order a lecturer would set the view up: look
+//! (theme, colours, embedding), mesh, algorithm and its inputs, step,
+//! selection, camera, view options. Each part that cannot be followed adds a
+//! message; the rest still applies, and the error panel lists what was
+//! ignored.
+
+use std::sync::Arc;
+
+use edgewise_core::{
+    formats::{self, Format, SaveOptions},
+    lang::Value,
+    mesh::Structure,
+};
+
+use super::{EdgewiseApp, embed::Embed, settings_ui::Presentation};
+use crate::{
+    Argument,
+    algorithm::{Origin, TraceRole},
+    course_link::{self, CourseLink, MeshSource, Panels, ThemeChoice},
+    selection::Role,
+    settings::{self, Settings},
+};
+
+/// A mesh file fetched for a link's `?mesh=` path.
+pub struct FetchedMesh {
+    pub name: String,
+    pub bytes: Result<Vec<u8>, String>,
+}
+
+impl EdgewiseApp {
+    /// Applies a parsed link. `messages` are the parser's; `fetched` is the
+    /// file a `?mesh=` path named, read by the caller (the browser fetches
+    /// it). Returns every message, which the error panel also shows.
+    pub fn apply_course_link(
+        &mut self,
+        link: &CourseLink,
+        mut messages: Vec<String>,
+        fetched: Option<FetchedMesh>,
+    ) -> Vec<String> {
+        self.apply_link_look(link);
+        let structure = link.structure;
+        let opened = match &link.mesh {
+            None => Ok(()),
+            Some(MeshSource::Sample(name)) => self.load_sample(name, structure),
+            Some(MeshSource::Inline { text, format }) => {
+                self.load_mesh(text.as_bytes(), &format!("link.{format}"), structure)
+            }
+            Some(MeshSource::Path(path)) => match fetched {
+                Some(FetchedMesh {
+                    name,
+                    bytes: Ok(bytes),
+                }) => self.load_mesh(&bytes, &name, structure),
+                Some(FetchedMesh {
+                    bytes: Err(err), ..
+                }) => Err(format!("mesh={path}: {err}")),
+                None => Err(format!("mesh={path}: the file was not fetched")),
+            },
+        };
+        if let Err(message) = opened {
+            messages.push(message);
+        } else if link.mesh.is_none()
+            && let Some(structure) = structure
+            && let Err(message) = self.switch_structure(structure)
+        {
+            messages.push(message);
+        }
+
+        if let Some(source) = &link.algorithm_source
+            && let Err(message) = self.load_algorithms(source, "link.alg")
+        {
+            messages.push(message);
+        }
+        if let Some(name) = &link.algorithm {
+            match self.run_algorithm(name, &link.args) {
+                Ok(()) => {
+                    if let Some(step) = link.step
+                        && let Err(message) = self.trace_goto(step)
+                    {
+                        messages.push(format!("step={step}: {message}"));
+                    }
+                }
+                Err(message) => messages.push(format!("algorithm={name}: {message}")),
+            }
+        } else if link.step.is_some() {
+            messages.push("step= needs an algorithm= to step through".to_owned());
+        }
+        if let Some(selection) = link.selection {
+            if self.algorithms.is_active() {
+                messages.push("select= is ignored while an algorithm runs".to_owned());
+            } else if let Err(message) = self.select(Some(selection)) {
+                messages.push(format!("select=: {message}"));
+            }
+        }
+        if let Some(camera) = link.camera {
+            self.view.set_camera(camera.sanitized());
+        }
+        link.apply_view_options(&mut self.view_options);
+
+        self.error = (!messages.is_empty()).then(|| {
+            format!(
+                "Some of this link could not be followed; the rest is shown.\n{}",
+                messages.join("\n")
+            )
+        });
+        self.request_repaint();
+        messages
+    }
+
+    /// Theme, colours, code size, embedding and presentation from a link.
+    /// They apply to this visit only: the user's saved settings stay.
+    fn apply_link_look(&mut self, link: &CourseLink) {
+        let mut settings = self.settings.clone();
+        if let Some(theme) = link.theme {
+            settings.dark = theme == ThemeChoice::Dark;
+        }
+        for (key, [r, g, b]) in &link.colors {
+            settings.colours.insert(
+                key.clone(),
+                settings::to_hex(egui::Color32::from_rgb(*r, *g, *b)),
+            );
+        }
+        if let Some(size) = link.code_size {
+            settings.code_size = size;
+        }
+        if settings != self.settings {
+            let (settings, message) = settings.sanitized();
+            if let Some(message) = message {
+                self.fail(message);
+            }
+            self.theme = settings.theme();
+            self.algorithms.code_size = settings.code_size;
+            self.settings = settings;
+            self.paint_key = None;
+        }
+        if link.embed {
+            self.set_embed(Some(Embed {
+                tables: link.tables.unwrap_or(false),
+            }));
+        }
+        if link.present {
+            let panels = link.panels.unwrap_or(Panels {
+                algorithm: true,
+                tables: true,
+                menu: false,
+            });
+            let presentation = Presentation {
+                algorithm: panels.algorithm,
+                tables: panels.tables,
+                menu: panels.menu,
+            };
+            match self.ctx.clone() {
+                Some(ctx) => self.enter_presentation(&ctx, presentation),
+                None => self.presentation = Some(presentation),
+            }
+        }
+    }
+
+    /// The current view as a link: a sample by name or the mesh's own table
+    /// text (so every id is reproduced), the algorithm with its inputs and
+    /// step, the selection, camera and view options, and the look where it
+    /// differs from the defaults.
+    pub fn course_link(&self) -> CourseLink {
+        let mut link = CourseLink::default();
+        if let Some(document) = &self.document {
+            link.structure = Some(document.structure());
+            link.mesh = Some(match &document.sample {
+                Some(name) => MeshSource::Sample(name.clone()),
+                None => {
+                    let format = match document.structure() {
+                        Structure::WingedEdge => Format::Wtb,
+                        Structure::HalfEdge => Format::Htb,
+                    };
+                    let text = formats::save(document.mesh(), format, &SaveOptions::default())
+                        .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
+                        .unwrap_or_default();
+                    MeshSource::Inline {
+                        text,
+                        format: format.extension().to_owned(),
+                    }
+                }
+            });
+            link.selection = document.selection();
+        }
+        let run = self.algorithms.algorithm().map(|algorithm| {
+            let inputs: Vec<(String, Value)> = match &self.algorithms.run {
+                crate::algorithm::Run::Tracing(session) => algorithm
+                    .params()
+                    .zip(session.trace.initial_variables())
+                    .map(|(p, v)| (p.name.clone(), *v))
+                    .collect(),
+                crate::algorithm::Run::Picking(pending) => pending.inputs.clone(),
+                crate::algorithm::Run::Idle => Vec::new(),
+            };
+            (Arc::clone(algorithm), inputs)
+        });
+        if let Some((algorithm, inputs)) = run {
+            link.algorithm = Some(algorithm.name.clone());
+            let user_made = self.algorithms.library.entries().iter().any(|e| {
+                Arc::ptr_eq(&e.algorithm, &algorithm) && matches!(e.origin, Origin::User(_))
+            });
+            if user_made {
+                link.algorithm_source = Some(algorithm.source.to_string());
+            }
+            link.args = inputs
+                .into_iter()
+                .filter_map(|(name, value)| Some((name, argument_of(value)?)))
+                .collect();
+            link.step = self
+                .algorithms
+                .session()
+                .map(crate::algorithm::TraceSession::step);
+            link.selection = None;
+        }
+        link.camera = Some(self.view.camera());
+        link.set_view_options(&self.view_options);
+        let defaults = Settings::default();
+        if self.settings.dark != defaults.dark {
+            link.theme = Some(if self.settings.dark {
+                ThemeChoice::Dark
+            } else {
+                ThemeChoice::Light
+            });
+        }
+        for (key, hex) in &self.settings.colours {
+            let known = TraceRole::parse(key).is_some() || Role::from_setting_key(key).is_some();
+            if let (true, Some(colour)) = (known, settings::parse_hex(hex)) {
+                let [r, g, b, _] = colour.to_srgba_unmultiplied();
+                link.colors.insert(key.clone(), [r, g, b]);
+            }
+        }
+        if self.settings.code_size != defaults.code_size {
+            link.code_size = Some(self.settings.code_size);
+        }
+        link
+    }
+
+    /// The absolute URL of the current view, given the page's own address.
+    pub fn share_url(&self, base: &str) -> Result<String, String> {
+        self.course_link().to_url_checked(base)
+    }
+
+    /// The Share window: the link to copy, and an iframe snippet for notes.
+    pub(super) fn share_window_ui(&mut self, ctx: &egui::Context) {
+        if !self.show_share {
+            return;
+        }
+        let base = page_base();
+        let url = self.share_url(&base);
+        let mut open = true;
+        egui::Window::new("Share this view")
+            .open(&mut open)
+            .collapsible(false)
+            .resizable(false)
+            .show(ctx, |ui| {
+                ui.set_max_width(520.0);
+                let url = match url {
+                    Ok(url) => url,
+                    Err(message) => {
+                        ui.colored_label(ui.visuals().error_fg_color, message);
+                        return;
+                    }
+                };
+                ui.label(
+                    "This link opens Edgewise on the same mesh, algorithm step, selection and camera.",
+                );
+                let mut shown = url.clone();
+                ui.add(
+                    egui::TextEdit::multiline(&mut shown)
+                        .desired_rows(3)
+                        .desired_width(f32::INFINITY)
+                        .font(egui::TextStyle::Monospace),
+                );
+                ui.horizontal(|ui| {
+                    if ui.button("Copy link").clicked() {
+                        ui.ctx().copy_text(url.clone());
+                        self.share_status = Some("Link copied.".to_owned());
+                    }
+                    if ui.button("Copy embed code").clicked() {
+                        let mut embed = self.course_link();
+                        embed.embed = true;
+                        embed.tables = Some(self.share_embed_tables);
+                        let snippet = embed
+                            .to_url_checked(&base)
+                            .map(|url| course_link::embed_snippet(&url, 720, 480));
+                        match snippet {
+                            Ok(snippet) => {
+                                ui.ctx().copy_text(snippet);
+                                self.share_status =
+                                    Some("Embed code copied: paste it into your notes.".to_owned());
+                            }
+                            Err(message) => self.share_status = Some(message),
+                        }
+                    }
+                    ui.checkbox(&mut self.share_embed_tables, "with the tables");
+                });
+                if let Some(status) = &self.share_status {
+                    ui.weak(status.as_str());
+                }
+            });
+        if !open {
+            self.share_status = None;
+        }
+        self.show_share = open;
+    }
+}
+
+/// A link argument for a value: element ids and integers as numbers.
+fn argument_of(value: Value) -> Option<Argument> {
+    match value {
+        Value::Vertex(i) | Value::Edge(i) | Value::Face(i) => Some(Argument::Number(f64::from(i))),
+        Value::Integer(n) => Some(Argument::Number(f64::from(n))),
+        Value::Boolean(b) => Some(Argument::Boolean(b)),
+        Value::Null => None,
+    }
+}
+
+/// The page's address without query or fragment.
+#[cfg(target_arch = "wasm32")]
+pub fn page_base() -> String {
+    web_sys::window()
+        .and_then(|w| {
+            let location = w.location();
+            Some(format!(
+                "{}{}",
+                location.origin().ok()?,
+                location.pathname().ok()?
+            ))
+        })
+        .unwrap_or_default()
+}
+
+/// Natively there is no page; links name the local server `cargo xtask
+/// serve` runs.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn page_base() -> String {
+    "http://127.0.0.1:8080/".to_owned()
+}
