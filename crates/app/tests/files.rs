@@ -2,21 +2,21 @@
 //! in every format, and the OBJ editor's inline error marks, driven natively
 //! through `egui_kittest`.
 
+mod support;
+
 use std::{
     path::{Path, PathBuf},
     sync::Arc,
 };
 
-use edgewise_app::{EdgewiseApp, GraphicsBackend, code_editor::Diagnostic, files::SaveFormat};
+use edgewise_app::{EdgewiseApp, code_editor::Diagnostic, files::SaveFormat};
 use edgewise_core::{formats, mesh::Structure};
 use egui_kittest::{Harness, kittest::Queryable as _};
 
 const QUAD: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
 fn harness() -> Harness<'static, EdgewiseApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
+    support::harness_sized(1280.0, 800.0)
 }
 
 /// A file dropped on the window, as the native integration delivers it.

@@ -2,22 +2,18 @@
 //! inline mesh text, broken parts falling back with messages, and the Share
 //! link of a view reproducing that view.
 
+mod support;
+
 use edgewise_app::{
-    Argument, EdgewiseApp, GraphicsBackend,
+    Argument, EdgewiseApp,
     course_link::{self, CourseLink},
     selection::{ElementKind, ElementRef},
 };
 use edgewise_core::mesh::Structure;
 use egui_kittest::Harness;
 
-fn harness() -> Harness<'static, EdgewiseApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
-}
-
 fn open(url_query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>, Vec<String>) {
-    let mut harness = harness();
+    let mut harness = support::harness();
     let (link, messages) = CourseLink::parse(url_query, fragment);
     let messages = harness.state_mut().apply_course_link(&link, messages, None);
     harness.run();
@@ -99,7 +95,7 @@ fn an_unknown_sample_or_algorithm_is_explained() {
 
 #[test]
 fn the_share_link_reproduces_the_view() {
-    let mut first = harness();
+    let mut first = support::harness();
     let app = first.state_mut();
     // A mesh that is not a sample travels as its own table text.
     app.load_mesh(

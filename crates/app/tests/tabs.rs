@@ -1,25 +1,21 @@
 //! Several meshes in tabs, and the side-by-side winged-edge / half-edge view
 //! with its linked selection.
 
+mod support;
+
 use edgewise_app::{
-    Argument, EdgewiseApp, GraphicsBackend,
+    Argument,
     selection::{ElementKind, ElementRef},
 };
 use edgewise_core::{
     formats,
     mesh::{EdgeId, Mesh, Structure},
 };
-use egui_kittest::{Harness, kittest::Queryable as _};
-
-fn harness() -> Harness<'static, EdgewiseApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
-}
+use egui_kittest::kittest::Queryable as _;
 
 #[test]
 fn tabs_keep_their_own_mesh_and_trace() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     let app = harness.state_mut();
     app.load_sample("cube", Some(Structure::HalfEdge))
         .expect("opens");
@@ -68,7 +64,7 @@ fn tabs_keep_their_own_mesh_and_trace() {
 
 #[test]
 fn side_by_side_links_the_selection_across_structures() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("tetrahedron", None)
@@ -125,7 +121,7 @@ fn side_by_side_links_the_selection_across_structures() {
 
 #[test]
 fn an_embedded_view_shows_the_view_the_step_controls_and_optional_tables() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     let app = harness.state_mut();
     app.set_embed(Some(edgewise_app::Embed { tables: false }));
     app.load_sample("cube", Some(Structure::HalfEdge))

@@ -3,33 +3,16 @@
 //! roles at chosen steps; stepping forward and back; breakpoints; picking
 //! inputs by clicking; and a run-time error on an open mesh.
 
+mod support;
+
 use std::collections::BTreeSet;
 
-use edgewise_app::{Argument, EdgewiseApp, GraphicsBackend, selection::ElementKind};
-use edgewise_core::{
-    formats,
-    mesh::{EdgeId, HalfEdgeId, Mesh, Structure, VertexId},
-};
+use edgewise_app::{Argument, EdgewiseApp, selection::ElementKind};
+use edgewise_core::mesh::{EdgeId, HalfEdgeId, Mesh, Structure, VertexId};
 use egui_kittest::{
     Harness,
     kittest::{NodeT as _, Queryable as _},
 };
-
-fn harness() -> Harness<'static, EdgewiseApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
-}
-
-fn sample_mesh(file: &str, structure: Structure) -> Mesh {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../meshes")
-        .join(file);
-    let bytes = std::fs::read(&path).expect("the sample file exists");
-    formats::load(&bytes, file, structure)
-        .expect("the sample loads")
-        .mesh
-}
 
 /// The edges a vertexAdjacentEdge run must mark, worked out from the tables
 /// directly: winged edges that start or end at `v`; half-edges that end at
@@ -70,12 +53,12 @@ fn roles_of(state: &edgewise_app::state::AppState, role: &str) -> Vec<(ElementKi
 fn vertex_adjacent_edge_marks_every_edge_at_the_vertex() {
     for (sample, file) in [("tetrahedron", "tetrahedron.wtb"), ("cube", "cube.htb")] {
         for structure in [Structure::WingedEdge, Structure::HalfEdge] {
-            let mut harness = harness();
+            let mut harness = support::harness();
             harness
                 .state_mut()
                 .load_sample(sample, Some(structure))
                 .expect("opens");
-            let mesh = sample_mesh(file, structure);
+            let mesh = support::sample_mesh(file, structure);
             run(&mut harness, "vertexAdjacentEdge", 1.0);
             let state = harness.state().state();
             let trace = state.trace.expect("a trace");
@@ -107,12 +90,12 @@ fn vertex_adjacent_edge_marks_every_edge_at_the_vertex() {
 
 #[test]
 fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("tetrahedron", None)
         .expect("opens");
-    let mesh = sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
+    let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
     let Mesh::Winged(m) = &mesh else {
         unreachable!()
     };
@@ -158,7 +141,7 @@ fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
 
 #[test]
 fn a_comparison_step_points_at_both_sides() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("cube", Some(Structure::HalfEdge))
@@ -194,7 +177,7 @@ fn a_comparison_step_points_at_both_sides() {
 
 #[test]
 fn twenty_steps_forward_and_back_return_to_the_same_state() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("octahedron", Some(Structure::HalfEdge))
@@ -216,12 +199,12 @@ fn twenty_steps_forward_and_back_return_to_the_same_state() {
 
 #[test]
 fn a_run_time_error_on_an_open_mesh_stops_where_it_happened() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("open-square", Some(Structure::HalfEdge))
         .expect("opens");
-    let mesh = sample_mesh("open-square.wtb", Structure::HalfEdge);
+    let mesh = support::sample_mesh("open-square.wtb", Structure::HalfEdge);
     let Mesh::Half(m) = &mesh else { unreachable!() };
     // A corner vertex: walking its faces meets the boundary's null face.
     let corner = (0..m.vertices().len() as u32)
@@ -255,7 +238,7 @@ fn a_run_time_error_on_an_open_mesh_stops_where_it_happened() {
 
 #[test]
 fn inputs_are_picked_by_clicking_only_the_needed_kind() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("tetrahedron", None)
@@ -290,7 +273,7 @@ fn inputs_are_picked_by_clicking_only_the_needed_kind() {
     }),);
 
     // The start vertex of edge 0 is a vertex: it starts the run.
-    let mesh = sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
+    let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
     let Mesh::Winged(m) = &mesh else {
         unreachable!()
     };
@@ -324,7 +307,7 @@ fn inputs_are_picked_by_clicking_only_the_needed_kind() {
 
 #[test]
 fn a_breakpoint_set_on_a_line_number_stops_play() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("cube", Some(Structure::HalfEdge))
@@ -358,7 +341,7 @@ fn a_breakpoint_set_on_a_line_number_stops_play() {
 
 #[test]
 fn a_loaded_algorithm_joins_the_menu_and_replaces_its_namesake() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("cube", Some(Structure::HalfEdge))
@@ -397,7 +380,7 @@ fn a_loaded_algorithm_joins_the_menu_and_replaces_its_namesake() {
 
 #[test]
 fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("tetrahedron", None)
@@ -439,7 +422,7 @@ fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
 
 #[test]
 fn presenting_shows_the_chosen_panels_and_escape_leaves() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .load_sample("cube", Some(Structure::HalfEdge))
@@ -474,7 +457,7 @@ fn presenting_shows_the_chosen_panels_and_escape_leaves() {
 
 #[test]
 fn an_algorithm_file_opens_in_the_editor_and_joins_the_menu() {
-    let mut harness = harness();
+    let mut harness = support::harness();
     harness
         .state_mut()
         .open_file(

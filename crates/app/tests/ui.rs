@@ -1,20 +1,17 @@
 //! The app's UI logic, driven natively through `egui_kittest`: opening samples,
 //! linked selection through table cells, and switching structure.
 
+mod support;
+
 use edgewise_app::{
-    EdgewiseApp, GraphicsBackend,
+    EdgewiseApp,
     selection::{ElementKind, ElementRef},
 };
-use edgewise_core::{
-    formats,
-    mesh::{EdgeId, Mesh, Structure},
-};
+use edgewise_core::mesh::{EdgeId, Mesh, Structure};
 use egui_kittest::{Harness, kittest::Queryable as _};
 
 fn harness() -> Harness<'static, EdgewiseApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
+    support::harness_sized(1280.0, 800.0)
 }
 
 /// A harness with `sample` open as `structure` and one element selected.
@@ -32,16 +29,6 @@ fn harness_with_selection(
         .expect("the element exists");
     harness.run();
     harness
-}
-
-fn sample_mesh(file: &str, structure: Structure) -> Mesh {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../meshes")
-        .join(file);
-    let bytes = std::fs::read(&path).expect("the sample file exists");
-    formats::load(&bytes, file, structure)
-        .expect("the sample loads")
-        .mesh
 }
 
 #[test]
@@ -90,7 +77,7 @@ fn a_reference_cell_selects_what_it_refers_to() {
     );
 
     // Walk to edge 0's left predecessor by clicking its cell in the table.
-    let mesh = sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
+    let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
     let Mesh::Winged(m) = &mesh else {
         unreachable!()
     };
@@ -174,7 +161,7 @@ fn the_obj_editor_rebuilds_as_you_type_and_keeps_the_last_good_mesh() {
 fn keys_walk_a_half_edge_mesh() {
     let mut harness =
         harness_with_selection("cube", Some(Structure::HalfEdge), ElementKind::Edge, 0);
-    let mesh = sample_mesh("cube.htb", Structure::HalfEdge);
+    let mesh = support::sample_mesh("cube.htb", Structure::HalfEdge);
     let Mesh::Half(m) = &mesh else { unreachable!() };
     let h0 = m.half_edges()[0];
 
