@@ -75,7 +75,7 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
 
 /// Lints the crates that run in the browser, as compiled for wasm32.
 fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
-    let target_dir = root.join("target");
+    let target_dir = web_build::target_dir(root);
     let mut cmd = if toolchain.has_clippy() {
         toolchain.cargo("clippy", &target_dir)
     } else {

@@ -1,4 +1,5 @@
-//! Building the browser app into dist/: wasm32 compile, bindgen, static files.
+//! Building the browser app into dist/: wasm32 compile, bindgen, static files,
+//! the example pages, and the build's version in the service worker.
 
 use std::path::{Path, PathBuf};
 
@@ -30,7 +31,7 @@ const OUT_NAME: &str = "edgewise_app";
 /// Builds the app for the browser into `root/dist` and returns that path.
 pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
     let toolchain = WasmToolchain::find()?;
-    let target_dir = root.join("target");
+    let target_dir = target_dir(root);
     eprintln!("==> building {APP_PACKAGE} for wasm32 ({profile:?}, {toolchain:?} toolchain)");
 
     let mut cmd = toolchain.cargo("build", &target_dir);
@@ -64,6 +65,11 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
 
     copy_file(&root.join("index.html"), &dist.join("index.html"))?;
     copy_dir(&root.join("web/static"), &dist)?;
+    let examples = dist.join("examples");
+    std::fs::create_dir_all(&examples)?;
+    copy_dir(&root.join("web/examples"), &examples)?;
+    let build = stamp_service_worker(&dist)?;
+    eprintln!("==> build {build} stamped into sw.js");
 
     let wasm_out = dist.join(format!("{OUT_NAME}_bg.wasm"));
     let size = std::fs::metadata(&wasm_out).map(|m| m.len()).unwrap_or(0);
@@ -72,6 +78,78 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
         size as f64 / 1_000_000.0
     );
     Ok(dist)
+}
+
+/// Cargo's target dir: `CARGO_TARGET_DIR` when set (as for plain cargo
+/// commands), otherwise the workspace's target/.
+pub fn target_dir(root: &Path) -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR")
+        .filter(|dir| !dir.is_empty())
+        .map_or_else(|| root.join("target"), |dir| root.join(PathBuf::from(dir)))
+}
+
+/// The text in web/static/sw.js that becomes the build's version.
+const BUILD_PLACEHOLDER: &str = "__EDGEWISE_BUILD__";
+
+/// Writes a version made from every file in `dist` into sw.js, so a new
+/// build changes the worker and browsers fetch the new app shell; an
+/// unchanged build keeps its version and its visitors' caches.
+fn stamp_service_worker(dist: &Path) -> anyhow::Result<String> {
+    let worker = dist.join("sw.js");
+    let text = std::fs::read_to_string(&worker)
+        .with_context(|| format!("cannot read {}", worker.display()))?;
+    anyhow::ensure!(
+        text.contains(BUILD_PLACEHOLDER),
+        "{} has no {BUILD_PLACEHOLDER} to stamp the build into",
+        worker.display()
+    );
+    let mut files = Vec::new();
+    list_files(dist, &mut files)?;
+    files.retain(|f| *f != worker);
+    files.sort();
+    let mut hash = Fnv1a::default();
+    for file in &files {
+        let relative = file.strip_prefix(dist).unwrap_or(file);
+        hash.write(relative.to_string_lossy().as_bytes());
+        hash.write(&[0]);
+        hash.write(
+            &std::fs::read(file).with_context(|| format!("cannot read {}", file.display()))?,
+        );
+    }
+    let build = format!("{:016x}", hash.0);
+    std::fs::write(&worker, text.replace(BUILD_PLACEHOLDER, &build))
+        .with_context(|| format!("cannot write {}", worker.display()))?;
+    Ok(build)
+}
+
+/// 64-bit FNV-1a: stable across Rust versions, unlike std's hasher, so the
+/// same files always give the same build version.
+struct Fnv1a(u64);
+
+impl Default for Fnv1a {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv1a {
+    fn write(&mut self, bytes: &[u8]) {
+        for &byte in bytes {
+            self.0 = (self.0 ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+}
+
+fn list_files(dir: &Path, out: &mut Vec<PathBuf>) -> anyhow::Result<()> {
+    for entry in std::fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))? {
+        let entry = entry?;
+        if entry.file_type()?.is_dir() {
+            list_files(&entry.path(), out)?;
+        } else {
+            out.push(entry.path());
+        }
+    }
+    Ok(())
 }
 
 fn copy_file(from: &Path, to: &Path) -> anyhow::Result<()> {
@@ -95,4 +173,33 @@ fn copy_dir(from: &Path, to: &Path) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_build_version_depends_on_the_files_only() {
+        let dist = std::env::temp_dir().join(format!("edgewise-stamp-{}", std::process::id()));
+        std::fs::create_dir_all(dist.join("examples")).unwrap();
+        let stamp = |wasm: &str| {
+            std::fs::write(
+                dist.join("sw.js"),
+                format!("const BUILD = '{BUILD_PLACEHOLDER}';"),
+            )
+            .unwrap();
+            std::fs::write(dist.join("app.wasm"), wasm).unwrap();
+            std::fs::write(dist.join("examples/embed.html"), "<p>").unwrap();
+            let build = stamp_service_worker(&dist).unwrap();
+            let worker = std::fs::read_to_string(dist.join("sw.js")).unwrap();
+            assert_eq!(worker, format!("const BUILD = '{build}';"));
+            build
+        };
+        let first = stamp("one");
+        assert_eq!(first.len(), 16);
+        assert_eq!(stamp("one"), first, "the same files, the same version");
+        assert_ne!(stamp("two"), first, "a new wasm, a new version");
+        std::fs::remove_dir_all(&dist).ok();
+    }
 }

@@ -14,6 +14,8 @@ use anyhow::{Context as _, bail};
 use fantoccini::{Client, ClientBuilder, wd::WebDriverCompatibleCommand};
 use serde_json::{Value, json};
 
+pub mod proxy;
+
 /// How long the page may take to download, compile and start the wasm.
 const START_TIMEOUT: Duration = Duration::from_secs(120);
 
@@ -24,6 +26,8 @@ pub struct LaunchOptions {
     pub window_size: (u32, u32),
     /// Turn off WebGL and WebGPU, to test the page's message for that case.
     pub without_3d: bool,
+    /// The app's URL, when not `EDGEWISE_URL` (a [`proxy::Proxy`]'s).
+    pub base_url: Option<String>,
 }
 
 impl Default for LaunchOptions {
@@ -31,6 +35,7 @@ impl Default for LaunchOptions {
         Self {
             window_size: (1280, 800),
             without_3d: false,
+            base_url: None,
         }
     }
 }
@@ -51,7 +56,10 @@ impl Browser {
 
     /// Launches chromedriver and a headless Chromium.
     pub async fn launch_with(options: LaunchOptions) -> anyhow::Result<Self> {
-        let base_url = env("EDGEWISE_URL")?;
+        let base_url = match options.base_url {
+            Some(url) => url,
+            None => env("EDGEWISE_URL")?,
+        };
         let chromium = env("EDGEWISE_CHROMIUM")?;
         let chromedriver = env("EDGEWISE_CHROMEDRIVER")?;
 

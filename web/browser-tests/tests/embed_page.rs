@@ -1,0 +1,87 @@
+//! The example page web/examples/embed.html: lecture notes with two live
+//! views in iframes, and buttons that drive the second through its
+//! `window.edgewise`.
+
+use std::time::Duration;
+
+use edgewise_browser_tests::Browser;
+
+/// Two apps start side by side on the CPU renderer: allow for both.
+const START_TIMEOUT: Duration = Duration::from_secs(180);
+
+#[tokio::test]
+async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.goto("examples/embed.html").await?;
+
+    let heading = browser
+        .eval("return document.querySelector('h1').textContent;")
+        .await?;
+    assert_eq!(heading, "Two ways to store a mesh");
+    let frames = browser
+        .eval("return [...document.querySelectorAll('iframe')].map((f) => f.id);")
+        .await?;
+    assert_eq!(frames, serde_json::json!(["winged", "half"]));
+
+    for id in ["winged", "half"] {
+        // The views load lazily: bring each one near the viewport.
+        browser
+            .eval(&format!(
+                "document.getElementById('{id}').scrollIntoView({{block: 'center'}}); return null;"
+            ))
+            .await?;
+        let api = format!("document.getElementById('{id}').contentWindow.edgewise");
+        browser
+            .wait_for(
+                &format!(
+                    "{api} || document.getElementById('{id}').contentDocument\
+                     ?.getElementById('edgewise_error')?.dataset.visible === 'true'"
+                ),
+                START_TIMEOUT,
+            )
+            .await?;
+        let error = browser
+            .eval(&format!(
+                "const box = document.getElementById('{id}').contentDocument.getElementById('edgewise_error'); \
+                 return box.dataset.visible === 'true' ? box.textContent : null;"
+            ))
+            .await?;
+        assert_eq!(error, serde_json::Value::Null, "the {id} view failed");
+        browser
+            .wait_for(
+                &format!("{api}.state().frames >= 2"),
+                Duration::from_secs(30),
+            )
+            .await?;
+    }
+
+    // The button row finds the second view's API and reports what it did.
+    browser
+        .wait_for(
+            "!document.getElementById('half-step').disabled",
+            Duration::from_secs(10),
+        )
+        .await?;
+    let before = browser
+        .eval("return document.getElementById('half-status').textContent;")
+        .await?;
+    assert_ne!(before, "Waiting for the view to start…");
+    browser
+        .eval("document.getElementById('half-step').click(); return null;")
+        .await?;
+    browser
+        .wait_for(
+            "document.getElementById('half-status').textContent.length > 0",
+            Duration::from_secs(10),
+        )
+        .await?;
+
+    let shot = browser.screenshot("embed-page-half").await?;
+    assert!(!shot.is_blank(), "{} is blank", shot.path.display());
+    browser.eval("window.scrollTo(0, 0); return null;").await?;
+    let shot = browser.screenshot("embed-page").await?;
+    assert!(!shot.is_blank(), "{} is blank", shot.path.display());
+
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}

@@ -1,0 +1,188 @@
+//! The service worker (web/static/sw.js): it takes control of the page, the
+//! app starts with the server out of reach, and a new build is offered with
+//! a Reload banner. Each test reaches the server through its own proxy, so
+//! its worker and caches belong to an origin no other test visits.
+
+use std::time::Duration;
+
+use edgewise_browser_tests::{Browser, LaunchOptions, proxy::Proxy};
+use serde_json::Value;
+
+const WORKER_TIMEOUT: Duration = Duration::from_secs(60);
+
+async fn launch_through(proxy: &Proxy) -> anyhow::Result<Browser> {
+    Browser::launch_with(LaunchOptions {
+        base_url: Some(proxy.url().to_owned()),
+        ..LaunchOptions::default()
+    })
+    .await
+}
+
+/// Waits until the worker has installed the shell and is active.
+async fn wait_for_active_worker(browser: &Browser) -> anyhow::Result<()> {
+    let state = browser
+        .eval_async("navigator.serviceWorker.ready.then((r) => r.active.state)")
+        .await?;
+    assert_eq!(state, "activated");
+    Ok(())
+}
+
+#[tokio::test]
+async fn the_worker_controls_the_page_after_a_reload() -> anyhow::Result<()> {
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+
+    browser.open("").await?;
+    let worker = browser
+        .eval("return navigator.serviceWorker.controller?.scriptURL ?? null;")
+        .await?;
+    assert_eq!(worker, format!("{}sw.js", proxy.url()));
+
+    // The shell's cache is named after this build, stamped in by the xtask.
+    let caches = browser.eval_async("caches.keys()").await?;
+    let names: Vec<&str> = caches
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .collect();
+    let shell = names
+        .iter()
+        .find(|name| name.starts_with("edgewise-shell-"))
+        .unwrap_or_else(|| panic!("no shell cache in {names:?}"));
+    let build = shell.trim_start_matches("edgewise-shell-");
+    assert!(
+        build.len() == 16 && build.bytes().all(|b| b.is_ascii_hexdigit()),
+        "the build version was not stamped: {shell}"
+    );
+    let cached = browser
+        .eval_async(&format!(
+            "caches.open('{shell}').then((c) => c.keys()).then((ks) => ks.map((r) => new URL(r.url).pathname))"
+        ))
+        .await?;
+    for file in [
+        "/",
+        "/index.html",
+        "/edgewise_app.js",
+        "/edgewise_app_bg.wasm",
+        "/favicon.svg",
+        "/examples/embed.html",
+    ] {
+        assert!(
+            cached.as_array().into_iter().flatten().any(|p| p == file),
+            "{file} is not in the shell cache: {cached}"
+        );
+    }
+    let update_shown = browser
+        .eval("return !document.getElementById('edgewise_update').hidden;")
+        .await?;
+    assert_eq!(
+        update_shown, false,
+        "the update banner shows on a first visit"
+    );
+
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn the_app_starts_with_the_server_out_of_reach() -> anyhow::Result<()> {
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+
+    proxy.set_offline(true);
+    let probe = browser
+        .eval_async("fetch('not-cached.txt').then(() => 'reached', () => 'cut')")
+        .await?;
+    assert_eq!(probe, "cut", "the network to the server is still up");
+    // The probe's own failure is logged; what follows must log nothing.
+    browser.console_errors().await?;
+
+    // A course link's page, which differs from the cached one by its query.
+    browser.open("?embed=1&sample=cube").await?;
+    browser
+        .wait_for(
+            "window.edgewise.state().frames >= 2",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let error = browser
+        .eval_async("window.edgewise.loadSample('tetrahedron')")
+        .await?;
+    assert_eq!(error, Value::Null);
+    let shot = browser.screenshot("offline").await?;
+    assert!(!shot.is_blank(), "{} is blank", shot.path.display());
+    // The browser's own failed update check of sw.js may be logged; the
+    // page itself must log nothing.
+    let errors: Vec<String> = browser
+        .console_errors()
+        .await?
+        .into_iter()
+        .filter(|e| !e.contains("sw.js"))
+        .collect();
+    assert!(errors.is_empty(), "console errors offline: {errors:#?}");
+
+    proxy.set_offline(false);
+    browser.close().await
+}
+
+#[tokio::test]
+async fn a_new_build_is_offered_with_a_reload_banner() -> anyhow::Result<()> {
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+    browser.open("").await?;
+
+    proxy.change_worker("\n// The next build.\n");
+    browser
+        .eval_async("navigator.serviceWorker.getRegistration().then((r) => r.update())")
+        .await?;
+    browser
+        .wait_for(
+            "!document.getElementById('edgewise_update').hidden",
+            WORKER_TIMEOUT,
+        )
+        .await?;
+    let text = browser
+        .eval("return document.getElementById('edgewise_update').textContent;")
+        .await?;
+    assert!(
+        text.as_str()
+            .unwrap_or_default()
+            .contains("A new version of Edgewise is available"),
+        "{text}"
+    );
+    let shot = browser.screenshot("update-banner").await?;
+    assert!(!shot.is_blank());
+
+    // Reload: the waiting worker takes over and the page loads again.
+    browser
+        .eval(
+            "window.edgewiseBeforeUpdate = true; \
+             document.getElementById('edgewise_update_reload').click(); return null;",
+        )
+        .await?;
+    browser
+        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
+        .await?;
+    browser.wait_until_ready().await?;
+    let after = browser
+        .eval(
+            "return { banner: !document.getElementById('edgewise_update').hidden, \
+             controlled: navigator.serviceWorker.controller?.state ?? null };",
+        )
+        .await?;
+    assert_eq!(after["banner"], false, "{after}");
+    assert_eq!(after["controlled"], "activated", "{after}");
+    browser
+        .eval_async("navigator.serviceWorker.getRegistration().then((r) => r.waiting === null || Promise.reject('a worker still waits'))")
+        .await?;
+
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
