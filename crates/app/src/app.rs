@@ -374,6 +374,7 @@ impl EdgewiseApp {
             tabs: self.tab_states(),
             side_by_side: self.side_by_side,
             twin_selection: self.twin_selection(),
+            embed: self.embed.is_some(),
             diagnostics: self.obj_editor.diagnostics.clone(),
             dialog: self
                 .structure_dialog()

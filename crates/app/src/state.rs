@@ -46,6 +46,8 @@ pub struct AppState {
     /// The selection in the side-by-side twin (the other structure), or null.
     #[serde(rename = "twinSelection")]
     pub twin_selection: Option<ElementRef>,
+    /// Whether the app runs embedded (`?embed=1`: no menu bar).
+    pub embed: bool,
     /// The OBJ editor's problems, each marked at its line: `{line, column, message}`.
     pub diagnostics: Vec<Diagnostic>,
     /// The dialog waiting for an answer, or null.

@@ -55,6 +55,33 @@ async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
             .await?;
     }
 
+    // Each frame follows its link: embedded, the first at step 3 of its
+    // trace, the second with half-edge 3 selected.
+    browser
+        .wait_for(
+            "document.getElementById('winged').contentWindow.edgewise.state().trace?.step === 3 \
+             && document.getElementById('half').contentWindow.edgewise.state().selection",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let winged = browser
+        .eval("return document.getElementById('winged').contentWindow.edgewise.state();")
+        .await?;
+    assert_eq!(winged["embed"], true);
+    assert_eq!(winged["structure"], "winged");
+    assert_eq!(winged["trace"]["algorithm"], "vertexAdjacentEdge");
+    assert_eq!(winged["trace"]["step"], 3);
+    assert_eq!(winged["error"], serde_json::Value::Null);
+    let half = browser
+        .eval("return document.getElementById('half').contentWindow.edgewise.state();")
+        .await?;
+    assert_eq!(half["embed"], true);
+    assert_eq!(half["structure"], "half");
+    assert_eq!(
+        half["selection"],
+        serde_json::json!({"kind": "edge", "id": 3})
+    );
+
     // The button row finds the second view's API and reports what it did.
     browser
         .wait_for(
