@@ -93,12 +93,25 @@ async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
         .eval("return document.getElementById('half-status').textContent;")
         .await?;
     assert_ne!(before, "Waiting for the view to start…");
+    // Run, then two steps, from the page's own buttons.
     browser
-        .eval("document.getElementById('half-step').click(); return null;")
+        .eval("document.getElementById('half-run').click(); return null;")
         .await?;
     browser
         .wait_for(
-            "document.getElementById('half-status').textContent.length > 0",
+            "document.getElementById('half-status').textContent.startsWith('Step 0 of')",
+            Duration::from_secs(10),
+        )
+        .await?;
+    for _ in 0..2 {
+        browser
+            .eval("document.getElementById('half-step').click(); return null;")
+            .await?;
+    }
+    browser
+        .wait_for(
+            "document.getElementById('half').contentWindow.edgewise.state().trace.step === 2 \
+             && document.getElementById('half-status').textContent.startsWith('Step 2 of')",
             Duration::from_secs(10),
         )
         .await?;
