@@ -444,9 +444,12 @@ fn arguments(args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
     if args.is_undefined() || args.is_null() {
         return Ok(Vec::new());
     }
-    let object = args
-        .dyn_ref::<js_sys::Object>()
-        .ok_or("run(name, args): args must be an object such as {v: 0}")?;
+    // Not `dyn_ref`: an object made by the page around an iframe belongs to
+    // another realm, and fails an `instanceof Object` check.
+    if !args.is_object() {
+        return Err("run(name, args): args must be an object such as {v: 0}".to_owned());
+    }
+    let object: &js_sys::Object = args.unchecked_ref();
     let mut out = Vec::new();
     for entry in js_sys::Object::entries(object).iter() {
         let pair = js_sys::Array::from(&entry);

@@ -97,12 +97,18 @@ async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
     browser
         .eval("document.getElementById('half-run').click(); return null;")
         .await?;
-    browser
+    let ran = browser
         .wait_for(
             "document.getElementById('half-status').textContent.startsWith('Step 0 of')",
             Duration::from_secs(10),
         )
-        .await?;
+        .await;
+    if let Err(err) = ran {
+        let status = browser
+            .eval("return document.getElementById('half-status').textContent;")
+            .await?;
+        anyhow::bail!("{err}; the page says: {status}");
+    }
     for _ in 0..2 {
         browser
             .eval("document.getElementById('half-step').click(); return null;")
