@@ -11,6 +11,8 @@
 
 #![allow(clippy::unwrap_used)]
 
+mod support;
+
 use std::sync::Arc;
 
 use edgewise_app::{
@@ -22,7 +24,7 @@ use edgewise_core::mesh::Structure;
 use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
 use egui_kittest::{Harness, SnapshotOptions, TestRenderer, kittest::Queryable as _};
 
-const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+use support::gpu::FORMAT;
 
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
 /// threshold absorbs small differences between Mesa versions.
@@ -104,111 +106,7 @@ impl TestRenderer for DepthRenderer {
             pixels_per_point: ppp,
         };
         let jobs = ctx.tessellate(output.shapes.clone(), ppp);
-        let mut renderer = rs.renderer.write();
-        let mut encoder = rs
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor::default());
-        let user_commands =
-            renderer.update_buffers(&rs.device, &rs.queue, &mut encoder, &jobs, &screen);
-        let extent = wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        };
-        let texture = |label, format, usage| {
-            rs.device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: extent,
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage,
-                view_formats: &[],
-            })
-        };
-        let target = texture(
-            "snapshot",
-            FORMAT,
-            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        );
-        let depth = texture(
-            "snapshot depth",
-            wgpu::TextureFormat::Depth24Plus,
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
-        let target_view = target.create_view(&wgpu::TextureViewDescriptor::default());
-        let depth_view = depth.create_view(&wgpu::TextureViewDescriptor::default());
-        {
-            let mut pass = encoder
-                .begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("snapshot"),
-                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                        view: &target_view,
-                        resolve_target: None,
-                        depth_slice: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &depth_view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Discard,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                })
-                .forget_lifetime();
-            renderer.render(&mut pass, &jobs, &screen);
-        }
-        let bytes_per_row = (width * 4).div_ceil(256) * 256;
-        let readback = rs.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("snapshot readback"),
-            size: u64::from(bytes_per_row * height),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &target,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(bytes_per_row),
-                    rows_per_image: None,
-                },
-            },
-            extent,
-        );
-        rs.queue
-            .submit(user_commands.into_iter().chain([encoder.finish()]));
-        drop(renderer);
-        readback
-            .slice(..)
-            .map_async(wgpu::MapMode::Read, |result| result.unwrap());
-        rs.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|err| err.to_string())?;
-        let mapped = readback
-            .slice(..)
-            .get_mapped_range()
-            .map_err(|err| format!("{err:?}"))?;
-        let mut pixels = Vec::with_capacity((width * height * 4) as usize);
-        for row in 0..height {
-            let start = (row * bytes_per_row) as usize;
-            pixels.extend_from_slice(&mapped[start..start + (width * 4) as usize]);
-        }
+        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, wgpu::Color::TRANSPARENT)?;
         image::RgbaImage::from_raw(width, height, pixels)
             .ok_or_else(|| "the readback has the wrong size".to_owned())
     }

@@ -9,6 +9,8 @@
 
 #![allow(clippy::unwrap_used)]
 
+mod support;
+
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Instant;
@@ -22,7 +24,7 @@ use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
 use egui::{Color32, Pos2, Rect, Vec2};
 use glam::Vec3;
 
-const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+use support::gpu::FORMAT;
 
 fn render_state() -> Option<RenderState> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
@@ -191,107 +193,14 @@ impl Harness {
                 renderer.update_texture(&rs.device, &rs.queue, *id, delta);
             }
         }
-        let mut encoder = rs
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor::default());
-        let user_commands =
-            renderer.update_buffers(&rs.device, &rs.queue, &mut encoder, &jobs, &screen);
-        let extent = wgpu::Extent3d {
-            width: self.size[0],
-            height: self.size[1],
-            depth_or_array_layers: 1,
-        };
-        let target = rs.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("target"),
-            size: extent,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
-        let depth = rs.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("depth"),
-            size: extent,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::Depth24Plus,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
-        let target_view = target.create_view(&wgpu::TextureViewDescriptor::default());
-        let depth_view = depth.create_view(&wgpu::TextureViewDescriptor::default());
-        {
-            let mut pass = encoder
-                .begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("egui"),
-                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                        view: &target_view,
-                        resolve_target: None,
-                        depth_slice: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &depth_view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Discard,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                })
-                .forget_lifetime();
-            renderer.render(&mut pass, &jobs, &screen);
-        }
-        let bytes_per_row = (self.size[0] * 4).div_ceil(256) * 256;
-        let readback = rs.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("readback"),
-            size: u64::from(bytes_per_row * self.size[1]),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &target,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(bytes_per_row),
-                    rows_per_image: None,
-                },
-            },
-            extent,
-        );
-        rs.queue
-            .submit(user_commands.into_iter().chain([encoder.finish()]));
+        drop(renderer);
+        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, wgpu::Color::BLACK)
+            .expect("the frame renders");
+        let mut renderer = rs.renderer.write();
         for id in &output.textures_delta.free {
             renderer.free_texture(id);
         }
         output.textures_delta.clear();
-        drop(renderer);
-        readback
-            .slice(..)
-            .map_async(wgpu::MapMode::Read, |result| result.unwrap());
-        rs.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-        let mapped = readback.slice(..).get_mapped_range().unwrap();
-        let mut pixels = Vec::with_capacity((self.size[0] * self.size[1] * 4) as usize);
-        for row in 0..self.size[1] {
-            let start = (row * bytes_per_row) as usize;
-            pixels.extend_from_slice(&mapped[start..start + (self.size[0] * 4) as usize]);
-        }
         Image {
             width: self.size[0],
             height: self.size[1],

@@ -1,7 +1,10 @@
 //! What the headless UI tests share: an app without a GPU in a window of a
-//! given size, and the sample files as the loaders read them.
+//! given size, the sample files as the loaders read them, and rendering
+//! egui into pixels.
 
 #![allow(dead_code)]
+
+pub mod gpu;
 
 use edgewise_app::{EdgewiseApp, GraphicsBackend};
 use edgewise_core::{
