@@ -64,11 +64,7 @@ fn tabs_keep_their_own_mesh_and_trace() {
 
 #[test]
 fn side_by_side_links_the_selection_across_structures() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("tetrahedron", None)
-        .expect("opens");
+    let mut harness = support::harness_with("tetrahedron", None);
     harness
         .state_mut()
         .set_side_by_side(true)

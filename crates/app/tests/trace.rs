@@ -53,11 +53,7 @@ fn roles_of(state: &edgewise_app::state::AppState, role: &str) -> Vec<(ElementKi
 fn vertex_adjacent_edge_marks_every_edge_at_the_vertex() {
     for (sample, file) in [("tetrahedron", "tetrahedron.wtb"), ("cube", "cube.htb")] {
         for structure in [Structure::WingedEdge, Structure::HalfEdge] {
-            let mut harness = support::harness();
-            harness
-                .state_mut()
-                .load_sample(sample, Some(structure))
-                .expect("opens");
+            let mut harness = support::harness_with(sample, Some(structure));
             let mesh = support::sample_mesh(file, structure);
             run(&mut harness, "vertexAdjacentEdge", 1.0);
             let state = harness.state().state();
@@ -90,11 +86,7 @@ fn vertex_adjacent_edge_marks_every_edge_at_the_vertex() {
 
 #[test]
 fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("tetrahedron", None)
-        .expect("opens");
+    let mut harness = support::harness_with("tetrahedron", None);
     let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);
     let Mesh::Winged(m) = &mesh else {
         unreachable!()
@@ -141,11 +133,7 @@ fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
 
 #[test]
 fn a_comparison_step_points_at_both_sides() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
     run(&mut harness, "vertexAdjacentEdge", 0.0);
     let steps = harness.state().state().trace.expect("a trace").steps;
     let mut compared = None;
@@ -177,11 +165,7 @@ fn a_comparison_step_points_at_both_sides() {
 
 #[test]
 fn twenty_steps_forward_and_back_return_to_the_same_state() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("octahedron", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));
     run(&mut harness, "vertexAdjacentFace", 2.0);
     harness.state_mut().trace_step(5).expect("steps");
     harness.run();
@@ -199,11 +183,7 @@ fn twenty_steps_forward_and_back_return_to_the_same_state() {
 
 #[test]
 fn a_run_time_error_on_an_open_mesh_stops_where_it_happened() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("open-square", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("open-square", Some(Structure::HalfEdge));
     let mesh = support::sample_mesh("open-square.wtb", Structure::HalfEdge);
     let Mesh::Half(m) = &mesh else { unreachable!() };
     // A corner vertex: walking its faces meets the boundary's null face.
@@ -238,11 +218,7 @@ fn a_run_time_error_on_an_open_mesh_stops_where_it_happened() {
 
 #[test]
 fn inputs_are_picked_by_clicking_only_the_needed_kind() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("tetrahedron", None)
-        .expect("opens");
+    let mut harness = support::harness_with("tetrahedron", None);
     harness.get_by_label("Algorithm").click();
     harness.run();
     harness
@@ -307,11 +283,7 @@ fn inputs_are_picked_by_clicking_only_the_needed_kind() {
 
 #[test]
 fn a_breakpoint_set_on_a_line_number_stops_play() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
     run(&mut harness, "vertexAdjacentEdge", 0.0);
     // The `e.mark;` line of the half-edge library.
     let source = edgewise_core::lang::library::SOURCES[1].1;
@@ -341,11 +313,7 @@ fn a_breakpoint_set_on_a_line_number_stops_play() {
 
 #[test]
 fn a_loaded_algorithm_joins_the_menu_and_replaces_its_namesake() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
     let names = harness
         .state_mut()
         .load_algorithms(
@@ -380,11 +348,7 @@ fn a_loaded_algorithm_joins_the_menu_and_replaces_its_namesake() {
 
 #[test]
 fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("tetrahedron", None)
-        .expect("opens");
+    let mut harness = support::harness_with("tetrahedron", None);
     let mut settings = harness.state().settings().clone();
     settings.set_colour(
         edgewise_app::algorithm::TraceRole::Lookup,
@@ -422,11 +386,7 @@ fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
 
 #[test]
 fn presenting_shows_the_chosen_panels_and_escape_leaves() {
-    let mut harness = support::harness();
-    harness
-        .state_mut()
-        .load_sample("cube", Some(Structure::HalfEdge))
-        .expect("opens");
+    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
     run(&mut harness, "vertexAdjacentEdge", 0.0);
     let ctx = harness.ctx.clone();
     harness.state_mut().enter_presentation(

@@ -25,6 +25,18 @@ pub fn harness() -> Harness<'static, EdgewiseApp> {
     harness_sized(1400.0, 900.0)
 }
 
+/// The app headless with a built-in sample open as `structure` (or as the
+/// sample file's own structure).
+pub fn harness_with(sample: &str, structure: Option<Structure>) -> Harness<'static, EdgewiseApp> {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample(sample, structure)
+        .expect("the sample opens");
+    harness.run();
+    harness
+}
+
 /// A sample file of meshes/, loaded natively as `structure`.
 pub fn sample_mesh(file: &str, structure: Structure) -> Mesh {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
