@@ -13,59 +13,19 @@
 
 mod support;
 
-use std::sync::Arc;
-
 use edgewise_app::{
     Argument, EdgewiseApp,
     selection::{ElementKind, ElementRef},
     settings::Settings,
 };
 use edgewise_core::mesh::Structure;
-use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
+use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
 use egui_kittest::{Harness, SnapshotOptions, TestRenderer, kittest::Queryable as _};
-
-use support::gpu::FORMAT;
 
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
 /// threshold absorbs small differences between Mesa versions.
 fn options() -> SnapshotOptions {
     SnapshotOptions::new().threshold(1.5).max_failed_pixels(400)
-}
-
-/// A software (or any) wgpu device with WebGL2's limits, as the app gets.
-fn render_state() -> Option<RenderState> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter =
-        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-            .ok()?;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-        required_limits:
-            wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
-        ..Default::default()
-    }))
-    .ok()?;
-    let renderer = egui_wgpu::Renderer::new(
-        &device,
-        FORMAT,
-        egui_wgpu::RendererOptions {
-            msaa_samples: 1,
-            depth_stencil_format: egui_wgpu::depth_format_from_bits(24, 0),
-            dithering: false,
-            predictable_texture_filtering: true,
-        },
-    );
-    Some(RenderState {
-        adapter,
-        available_adapters: Vec::new(),
-        instance,
-        device,
-        queue,
-        target_format: FORMAT,
-        renderer: Arc::new(egui::mutex::RwLock::new(renderer)),
-    })
 }
 
 /// Renders egui output, paint callbacks included, into an image.
@@ -115,7 +75,7 @@ impl TestRenderer for DepthRenderer {
 /// The app in a window of `size` points at `pixels_per_point`, drawing its
 /// 3D view; None without a wgpu adapter.
 fn harness(size: egui::Vec2, pixels_per_point: f32) -> Option<Harness<'static, EdgewiseApp>> {
-    let Some(state) = render_state() else {
+    let Some(state) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter (install mesa-vulkan-drivers): snapshots skipped");
         return None;
     };

@@ -12,7 +12,6 @@
 mod support;
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Instant;
 
 use edgewise_app::view3d::{
@@ -20,48 +19,9 @@ use edgewise_app::view3d::{
     ViewResponse,
 };
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
-use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
+use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
 use egui::{Color32, Pos2, Rect, Vec2};
 use glam::Vec3;
-
-use support::gpu::FORMAT;
-
-fn render_state() -> Option<RenderState> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        // WGPU_BACKEND=gl runs the GLSL path WebGL2 also takes.
-        backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter =
-        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-            .ok()?;
-    eprintln!("adapter: {:?}", adapter.get_info());
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-        required_limits:
-            wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
-        ..Default::default()
-    }))
-    .ok()?;
-    let renderer = egui_wgpu::Renderer::new(
-        &device,
-        FORMAT,
-        egui_wgpu::RendererOptions {
-            msaa_samples: 1,
-            depth_stencil_format: egui_wgpu::depth_format_from_bits(24, 0),
-            dithering: false,
-            predictable_texture_filtering: false,
-        },
-    );
-    Some(RenderState {
-        adapter,
-        available_adapters: Vec::new(),
-        instance,
-        device,
-        queue,
-        target_format: FORMAT,
-        renderer: Arc::new(egui::mutex::RwLock::new(renderer)),
-    })
-}
 
 fn out_dir() -> PathBuf {
     let target = std::env::var_os("CARGO_TARGET_DIR")
@@ -299,7 +259,7 @@ fn is_near_colour(pixel: [u8; 4], colour: Color32, tolerance: i32) -> bool {
 
 #[test]
 fn winged_edge_cube_with_highlights_labels_and_pointers() {
-    let Some(rs) = render_state() else {
+    let Some(rs) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter: skipped");
         return;
     };
@@ -360,7 +320,7 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
 
 #[test]
 fn half_edge_grid_with_all_ids_dark() {
-    let Some(rs) = render_state() else {
+    let Some(rs) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter: skipped");
         return;
     };
@@ -394,7 +354,7 @@ fn half_edge_grid_with_all_ids_dark() {
 
 #[test]
 fn solid_tetrahedron_with_hover() {
-    let Some(rs) = render_state() else {
+    let Some(rs) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter: skipped");
         return;
     };
@@ -433,7 +393,7 @@ fn solid_tetrahedron_with_hover() {
 
 #[test]
 fn torus_20k_faces() {
-    let Some(rs) = render_state() else {
+    let Some(rs) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter: skipped");
         return;
     };
@@ -489,7 +449,7 @@ fn torus_20k_faces() {
 #[test]
 #[ignore = "slow on a CPU rasterizer; run with --ignored to measure"]
 fn torus_200k_faces() {
-    let Some(rs) = render_state() else {
+    let Some(rs) = support::gpu::render_state() else {
         eprintln!("no wgpu adapter: skipped");
         return;
     };

@@ -2,7 +2,9 @@
 //! wgpu adapter the machine has (lavapipe on CI), with the 24-bit depth
 //! attachment the 3D view's pipelines expect.
 
-use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
+use std::sync::Arc;
+
+use eframe::egui_wgpu::{self, RenderState, ScreenDescriptor};
 
 /// The colour format the tests render into.
 pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -128,4 +130,42 @@ pub fn render_to_pixels(
         pixels.extend_from_slice(&mapped[start..start + (width * 4) as usize]);
     }
     Ok(pixels)
+}
+
+/// A software (or any) wgpu device with WebGL2's limits, as the app gets;
+/// None without an adapter. `WGPU_BACKEND=gl` runs the GLSL path WebGL2
+/// also takes.
+pub fn render_state() -> Option<RenderState> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter =
+        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+            .ok()?;
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        required_limits:
+            wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
+        ..Default::default()
+    }))
+    .ok()?;
+    let renderer = egui_wgpu::Renderer::new(
+        &device,
+        FORMAT,
+        egui_wgpu::RendererOptions {
+            msaa_samples: 1,
+            depth_stencil_format: egui_wgpu::depth_format_from_bits(24, 0),
+            dithering: false,
+            predictable_texture_filtering: true,
+        },
+    );
+    Some(RenderState {
+        adapter,
+        available_adapters: Vec::new(),
+        instance,
+        device,
+        queue,
+        target_format: FORMAT,
+        renderer: Arc::new(egui::mutex::RwLock::new(renderer)),
+    })
 }
