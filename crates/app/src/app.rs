@@ -58,6 +58,9 @@ pub struct EdgewiseApp {
     /// (document generation, algorithm generation, theme key) `paint` and
     /// `styles` were derived from.
     paint_key: Option<(u64, u64, u64)>,
+    /// Table rows to bring into view once: where the selection or the
+    /// trace's current operation moved to.
+    table_scroll: Vec<(ElementKind, u32)>,
     /// The algorithm library, the run and its trace.
     pub(crate) algorithms: Algorithms,
     show_algorithm_panel: bool,
@@ -129,6 +132,7 @@ impl EdgewiseApp {
             styles: SceneStyles::default(),
             paint: Paint::default(),
             paint_key: None,
+            table_scroll: Vec::new(),
             algorithms: Algorithms::default(),
             show_algorithm_panel: false,
             algorithm_tab: AlgorithmTab::Run,
@@ -434,6 +438,13 @@ impl EdgewiseApp {
             None => Paint::from_selection(document.highlights(), &self.theme),
         };
         let styles = scene_styles(document.mesh(), &paint, self.styles.generation + 1);
+        self.table_scroll = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]
+            .into_iter()
+            .filter_map(|kind| {
+                let focus = paint.focus(kind)?;
+                (self.paint.focus(kind) != Some(focus)).then_some((kind, focus))
+            })
+            .collect();
         self.styles = styles;
         self.paint = paint;
         self.paint_key = Some(key);
@@ -601,13 +612,22 @@ impl EdgewiseApp {
             return;
         };
         let mut response = TablesResponse::default();
+        let scroll = std::mem::take(&mut self.table_scroll);
         let mut table = |ui: &mut egui::Ui, kind: ElementKind, title: &str| {
+            let scroll_to = scroll.iter().find(|(k, _)| *k == kind).map(|&(_, id)| id);
             ui.strong(title);
             // A narrow window scrolls a wide table sideways instead of cutting it.
             egui::ScrollArea::horizontal()
                 .id_salt(("table_scroll", kind))
                 .show(ui, |ui| {
-                    tables::table_ui(ui, document.mesh(), kind, &self.paint, &mut response);
+                    tables::table_ui(
+                        ui,
+                        document.mesh(),
+                        kind,
+                        &self.paint,
+                        scroll_to,
+                        &mut response,
+                    );
                 });
         };
         let edge_title = match document.mesh() {
@@ -673,6 +693,8 @@ impl eframe::App for EdgewiseApp {
         }
         self.receive_files(ui.ctx());
         self.play_tick(ui.ctx());
+        // Before any panel: the tables and the view draw the same moment.
+        self.refresh_styles();
         self.presentation_keys(ui.ctx());
         if let Some(embed) = self.embed {
             self.trace_keys(ui.ctx());

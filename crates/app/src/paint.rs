@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use egui::Color32;
 
 use crate::{
-    selection::{self, ElementRef, Highlight, Role},
+    selection::{self, ElementKind, ElementRef, Highlight, Role},
     theme::Theme,
 };
 
@@ -71,6 +71,15 @@ impl Paint {
             .iter()
             .find(|p| p.element == element)
             .map(|p| p.colour)
+    }
+
+    /// The element of `kind` to bring into view in its table: the first
+    /// painted one (the selected element, or the current operation's).
+    pub fn focus(&self, kind: ElementKind) -> Option<u32> {
+        self.painted
+            .iter()
+            .find(|p| p.element.kind == kind)
+            .map(|p| p.element.id)
     }
 
     /// Whether anything is painted.

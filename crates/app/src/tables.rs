@@ -34,12 +34,14 @@ enum Cell {
     Link(Option<ElementRef>, Role),
 }
 
-/// Draws one table of `kind` filling `ui`, coloured by `paint`.
+/// Draws one table of `kind` filling `ui`, coloured by `paint`, scrolling
+/// just enough to show row `scroll_to` if given.
 pub fn table_ui(
     ui: &mut egui::Ui,
     mesh: &Mesh,
     kind: ElementKind,
     paint: &Paint,
+    scroll_to: Option<u32>,
     response: &mut TablesResponse,
 ) {
     let half = matches!(mesh, Mesh::Half(_));
@@ -87,6 +89,9 @@ pub fn table_ui(
         // Fill the panel: a table that shrank to its rows would shrink the panel too.
         .auto_shrink(false)
         .cell_layout(egui::Layout::left_to_right(egui::Align::Center));
+    if let Some(row) = scroll_to {
+        table = table.scroll_to_row(row as usize, None);
+    }
     for (i, _) in headers.iter().enumerate() {
         table = table.column(if i + 1 == headers.len() {
             Column::remainder().at_least(60.0)

@@ -183,3 +183,30 @@ fn keys_walk_a_half_edge_mesh() {
     let selected = harness.state().state().selection.unwrap();
     assert_eq!(selected.kind, ElementKind::Vertex);
 }
+
+#[test]
+fn the_tables_scroll_to_what_is_selected() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("icosphere-20k", None)
+        .expect("opens");
+    harness.run();
+    assert!(
+        harness.query_all_by_label("9000").next().is_none(),
+        "row 9000 starts out of view"
+    );
+    harness
+        .state_mut()
+        .select(Some(ElementRef {
+            kind: ElementKind::Vertex,
+            id: 9000,
+        }))
+        .expect("selects");
+    // The table scrolls smoothly: let it settle.
+    harness.run_steps(30);
+    assert!(
+        harness.query_all_by_label("9000").next().is_some(),
+        "the vertex table brought row 9000 into view"
+    );
+}
