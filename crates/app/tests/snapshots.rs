@@ -82,6 +82,7 @@ fn harness(size: egui::Vec2, pixels_per_point: f32) -> Option<Harness<'static, E
     Some(
         Harness::builder()
             .with_size(size)
+            .with_max_steps(32)
             .with_pixels_per_point(pixels_per_point)
             .renderer(DepthRenderer { state })
             .build_eframe(|cc| EdgewiseApp::new(cc)),

@@ -17,6 +17,8 @@ use egui_kittest::Harness;
 pub fn harness_sized(width: f32, height: f32) -> Harness<'static, EdgewiseApp> {
     Harness::builder()
         .with_size(egui::vec2(width, height))
+        // A table scrolling to a new selection animates over a few frames.
+        .with_max_steps(32)
         .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
 }
 
