@@ -10,7 +10,7 @@ use edgewise_core::{
 
 use crate::{
     GraphicsBackend,
-    algorithm::{Algorithms, Run, frame},
+    algorithm::{Algorithms, Run},
     document::Document,
     files::FileState,
     obj_editor::{EDITOR_FILE, ObjEditor},
@@ -392,7 +392,7 @@ impl EdgewiseApp {
 
     fn trace_state(&self) -> Option<TraceState> {
         let session = self.algorithms.session()?;
-        let frame = frame::frame_at(&session.trace, session.step(), &self.theme);
+        let frame = self.algorithms.current_frame(&self.theme)?;
         Some(TraceState::new(session.trace.algorithm(), &frame))
     }
 
@@ -410,8 +410,8 @@ impl EdgewiseApp {
 
     /// The selection's paint, or the current trace step's.
     fn current_paint(&self) -> Paint {
-        if let Some(session) = self.algorithms.session() {
-            return frame::frame_at(&session.trace, session.step(), &self.theme).paint;
+        if let Some(frame) = self.algorithms.current_frame(&self.theme) {
+            return frame.into_owned().paint;
         }
         match &self.document {
             Some(document) => Paint::from_selection(document.highlights(), &self.theme),

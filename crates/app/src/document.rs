@@ -38,16 +38,25 @@ impl Document {
     /// that mark them in the text.
     pub fn parse(bytes: &[u8], name: &str, structure: Structure) -> Result<Self, FormatError> {
         let Loaded { mesh, warnings, .. } = formats::load(bytes, name, structure)?;
-        Ok(Self {
+        Ok(Self::new(
+            name,
+            mesh,
+            warnings.iter().map(ToString::to_string).collect(),
+        ))
+    }
+
+    /// A freshly opened mesh: nothing selected, a new mesh id.
+    fn new(name: &str, mesh: Mesh, warnings: Vec<String>) -> Self {
+        Self {
             name: name.to_owned(),
             mesh,
-            warnings: warnings.iter().map(ToString::to_string).collect(),
+            warnings,
             selection: None,
             highlights: Vec::new(),
             generation: 0,
             mesh_id: next_mesh_id(),
             sample: None,
-        })
+        }
     }
 
     /// Builds a mesh from polygons (a generated sample).
@@ -58,16 +67,11 @@ impl Document {
     ) -> Result<Self, String> {
         let (mesh, warnings) =
             Mesh::build(polygons, structure).map_err(|err| format!("{name}: {err}"))?;
-        Ok(Self {
-            name: name.to_owned(),
+        Ok(Self::new(
+            name,
             mesh,
-            warnings: warnings.iter().map(ToString::to_string).collect(),
-            selection: None,
-            highlights: Vec::new(),
-            generation: 0,
-            mesh_id: next_mesh_id(),
-            sample: None,
-        })
+            warnings.iter().map(ToString::to_string).collect(),
+        ))
     }
 
     pub fn mesh(&self) -> &Mesh {
@@ -136,16 +140,7 @@ impl Document {
     /// how their edges correspond (for side-by-side views).
     pub fn twin(&self) -> Result<(Document, EdgeCorrespondence), String> {
         let (mesh, correspondence) = convert(&self.mesh)?;
-        let mut twin = Document {
-            name: self.name.clone(),
-            mesh,
-            warnings: Vec::new(),
-            selection: None,
-            highlights: Vec::new(),
-            generation: 0,
-            mesh_id: next_mesh_id(),
-            sample: None,
-        };
+        let mut twin = Document::new(&self.name, mesh, Vec::new());
         let mapped = self
             .selection
             .and_then(|s| map_element(s, self.structure(), &correspondence));

@@ -308,6 +308,19 @@ impl Algorithms {
         Ok(())
     }
 
+    /// The frame of the current step: the cached one when it is current
+    /// (the app derives it before drawing), else derived now without caching.
+    pub fn current_frame(&self, theme: &Theme) -> Option<std::borrow::Cow<'_, TraceFrame>> {
+        let Run::Tracing(session) = &self.run else {
+            return None;
+        };
+        let key = (self.generation, theme.key());
+        Some(match &self.frame {
+            Some((k, frame)) if *k == key => std::borrow::Cow::Borrowed(frame),
+            _ => std::borrow::Cow::Owned(frame::frame_at(&session.trace, session.step(), theme)),
+        })
+    }
+
     /// The frame of the current step, derived once per change.
     pub fn frame(&mut self, theme: &Theme) -> Option<&TraceFrame> {
         let key = (self.generation, theme.key());

@@ -178,9 +178,8 @@ impl EdgewiseApp {
                     pending.algorithm.name
                 )
             })),
-            Run::Tracing(session) => {
-                let frame =
-                    crate::algorithm::frame::frame_at(&session.trace, session.step(), &self.theme);
+            Run::Tracing(_) => {
+                let frame = self.algorithms.current_frame(&self.theme)?;
                 Some(format!(
                     "Step {} of {}: {}",
                     frame.step, frame.steps, frame.message
