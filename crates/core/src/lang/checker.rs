@@ -4,8 +4,11 @@
 //! whose type is unknown because of an earlier error is typed `None`, which
 //! silences follow-on messages about it.
 
+use std::collections::{HashMap, HashSet};
+
 use super::ast::*;
 use super::diagnostic::{Diagnostic, Span, nearest};
+use super::parser::MAX_ERRORS;
 use super::types::{ElementKind, Field, FieldError, Structure, Type};
 
 /// A parameter or declared variable. Parameters come first, in order.
@@ -22,14 +25,21 @@ pub struct Variable {
 #[derive(Clone, Debug, Default)]
 pub struct Scope {
     pub variables: Vec<Variable>,
+    /// Register of each name, so that looking a name up does not grow with
+    /// the number of variables (a pasted file may declare thousands).
+    by_name: HashMap<String, usize>,
 }
 
 impl Scope {
     pub fn find(&self, name: &str) -> Option<(usize, &Variable)> {
-        self.variables
-            .iter()
-            .enumerate()
-            .find(|(_, v)| v.name == name)
+        let index = *self.by_name.get(name)?;
+        Some((index, self.variables.get(index)?))
+    }
+
+    fn push(&mut self, variable: Variable) {
+        self.by_name
+            .insert(variable.name.clone(), self.variables.len());
+        self.variables.push(variable);
     }
 }
 
@@ -50,11 +60,9 @@ pub fn check_file(
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Vec<Scope> {
     let mut scopes = Vec::with_capacity(file.algorithms.len());
-    for (i, algorithm) in file.algorithms.iter().enumerate() {
-        let earlier = file.algorithms.get(..i).unwrap_or(&[]);
-        if !algorithm.name.name.is_empty()
-            && earlier.iter().any(|a| a.name.name == algorithm.name.name)
-        {
+    let mut names = HashSet::new();
+    for algorithm in &file.algorithms {
+        if !algorithm.name.name.is_empty() && !names.insert(algorithm.name.name.as_str()) {
             diagnostics.push(Diagnostic::error(
                 algorithm.name.span,
                 format!(
@@ -98,7 +106,7 @@ pub fn check_algorithm(
             ));
             continue;
         }
-        scope.variables.push(Variable {
+        scope.push(Variable {
             name: var.name.name.clone(),
             ty: var.ty,
             is_param,
@@ -127,13 +135,23 @@ struct Checker<'a> {
 }
 
 impl Checker<'_> {
+    /// Past [`MAX_ERRORS`] errors further ones are dropped (and their hints
+    /// not searched for), so a hostile file cannot make checking slow.
+    fn full(&self) -> bool {
+        self.diagnostics.len() > MAX_ERRORS
+    }
+
     fn error(&mut self, span: Span, message: String) {
-        self.diagnostics.push(Diagnostic::error(span, message));
+        if !self.full() {
+            self.diagnostics.push(Diagnostic::error(span, message));
+        }
     }
 
     fn error_with_hint(&mut self, span: Span, message: String, hint: String) {
-        self.diagnostics
-            .push(Diagnostic::error(span, message).with_hint(hint));
+        if !self.full() {
+            self.diagnostics
+                .push(Diagnostic::error(span, message).with_hint(hint));
+        }
     }
 
     fn text(&self, span: Span) -> String {
@@ -269,6 +287,9 @@ impl Checker<'_> {
     fn variable(&mut self, name: &str, span: Span) -> Option<Type> {
         if let Some((_, variable)) = self.scope.find(name) {
             return variable.ty;
+        }
+        if self.full() {
+            return None;
         }
         let message = format!("unknown variable `{name}`");
         let names = self.scope.variables.iter().map(|v| v.name.as_str());

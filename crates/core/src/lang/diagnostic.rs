@@ -183,7 +183,7 @@ impl Diagnostic {
         let gutter = start.line.to_string();
         let pad = " ".repeat(gutter.len());
         let (shown, caret_from, caret_len) =
-            caret_layout(line_text, start.column, self.span, source);
+            clip_long_line(caret_layout(line_text, start.column, self.span, source));
         out.push_str(&format!("{pad} |\n{gutter} | {shown}\n"));
         out.push_str(&format!(
             "{pad} | {}{}\n",
@@ -203,15 +203,18 @@ impl Diagnostic {
 fn caret_layout(line: &str, column: u32, span: Span, source: &str) -> (String, usize, usize) {
     let mut shown = String::new();
     let mut display_col = Vec::with_capacity(line.len() + 1);
+    let mut width = 0;
     for ch in line.chars() {
-        display_col.push(shown.chars().count());
+        display_col.push(width);
         if ch == '\t' {
             shown.push_str("    ");
+            width += 4;
         } else {
             shown.push(ch);
+            width += 1;
         }
     }
-    let line_width = shown.chars().count();
+    let line_width = width;
     display_col.push(line_width);
     let first = (column as usize).saturating_sub(1);
     let span_chars = span
@@ -225,6 +228,41 @@ fn caret_layout(line: &str, column: u32, span: Span, source: &str) -> (String, u
     let from = display_col.get(first).copied().unwrap_or(line_width);
     let to = display_col.get(last).copied().unwrap_or(line_width);
     (shown, from, to.saturating_sub(from).max(1))
+}
+
+/// `text` cut to `max` characters with `…`, for quoting user text in a message.
+pub fn shorten(text: &str, max: usize) -> std::borrow::Cow<'_, str> {
+    match text.char_indices().nth(max) {
+        Some((cut, _)) => format!("{}…", &text[..cut]).into(),
+        None => text.into(),
+    }
+}
+
+/// The widest source line shown under a message, in characters.
+const MAX_SHOWN_LINE: usize = 120;
+
+/// Shows only a window of a very long line, around the caret and marked `…`
+/// where cut, so that a message about a 1 MB line stays readable.
+fn clip_long_line((shown, from, len): (String, usize, usize)) -> (String, usize, usize) {
+    let chars: Vec<char> = shown.chars().collect();
+    if chars.len() <= MAX_SHOWN_LINE {
+        return (shown, from, len);
+    }
+    let start = from
+        .saturating_sub(MAX_SHOWN_LINE / 3)
+        .min(chars.len() - MAX_SHOWN_LINE);
+    let end = start + MAX_SHOWN_LINE;
+    let mut clipped = String::new();
+    let mut caret = from.saturating_sub(start);
+    if start > 0 {
+        clipped.push('…');
+        caret += 1;
+    }
+    clipped.extend(chars.get(start..end).unwrap_or(&[]));
+    if end < chars.len() {
+        clipped.push('…');
+    }
+    (clipped, caret, len.min(end.saturating_sub(from)).max(1))
 }
 
 impl fmt::Display for Diagnostic {
@@ -264,9 +302,13 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 
 /// The candidate nearest to `word`, if it is near enough to be a likely typo.
 pub fn nearest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    let limit = (word.chars().count() / 3).max(2);
+    let length = word.chars().count();
+    let limit = (length / 3).max(2);
     candidates
         .into_iter()
+        // The distance is at least the difference in length: skipping those
+        // keeps a very long name from costing its length squared.
+        .filter(|c| c.chars().count().abs_diff(length) <= limit)
         .map(|c| (edit_distance(word, c), c))
         .filter(|&(d, _)| d <= limit)
         .min_by_key(|&(d, _)| d)

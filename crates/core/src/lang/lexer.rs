@@ -1,6 +1,14 @@
 //! The hand-written lexer: source text to tokens, with `//` comments skipped.
 
-use super::diagnostic::{Diagnostic, Span};
+use super::diagnostic::{Diagnostic, Span, shorten};
+use super::parser::MAX_ERRORS;
+
+/// Longer names are refused: they would only make every message quoting them
+/// unreadable, and no algorithm needs one.
+pub const MAX_NAME_CHARS: usize = 256;
+
+/// Ends the message of an error after which the lexer or parser stopped.
+pub const SKIPPED_REST: &str = "; the rest of the file was not read";
 use super::token::{Token, TokenKind};
 
 /// Splits `source` into tokens, ending with [`TokenKind::Eof`]. Bad characters
@@ -54,6 +62,17 @@ impl Lexer<'_> {
                         self.pos += 1;
                     }
                     let word = Span::new(start, self.pos).text(self.source);
+                    if word.len() > MAX_NAME_CHARS {
+                        self.give_up(
+                            Span::new(start, self.pos),
+                            &format!(
+                                "this name is {} characters long; names may have at most \
+                                 {MAX_NAME_CHARS}",
+                                word.len()
+                            ),
+                        );
+                        break;
+                    }
                     let kind = TokenKind::keyword(word).unwrap_or(TokenKind::Ident);
                     self.push(kind, start);
                 }
@@ -63,11 +82,11 @@ impl Lexer<'_> {
                     }
                     let span = Span::new(start, self.pos);
                     if span.text(self.source).parse::<i32>().is_err() {
-                        self.diagnostics.push(Diagnostic::error(
+                        self.report(Diagnostic::error(
                             span,
                             format!(
                                 "the number {} is too large (Integer holds up to {})",
-                                span.text(self.source),
+                                shorten(span.text(self.source), 20),
                                 i32::MAX
                             ),
                         ));
@@ -84,6 +103,23 @@ impl Lexer<'_> {
         });
     }
 
+    /// Records an error; past [`MAX_ERRORS`] it stops reading instead, so a
+    /// file of binary garbage gives a short report, not one error per byte.
+    fn report(&mut self, diagnostic: Diagnostic) {
+        if self.diagnostics.len() < MAX_ERRORS {
+            self.diagnostics.push(diagnostic);
+        } else {
+            self.give_up(diagnostic.span, &format!("more than {MAX_ERRORS} errors"));
+        }
+    }
+
+    /// Reports `why` and skips the rest of the text.
+    fn give_up(&mut self, span: Span, why: &str) {
+        self.diagnostics
+            .push(Diagnostic::error(span, format!("{why}{SKIPPED_REST}")));
+        self.pos = self.bytes.len();
+    }
+
     fn string(&mut self, start: usize) {
         self.pos += 1;
         loop {
@@ -94,7 +130,7 @@ impl Lexer<'_> {
                     return;
                 }
                 None | Some(b'\n') => {
-                    self.diagnostics.push(
+                    self.report(
                         Diagnostic::error(
                             Span::new(start, self.pos),
                             "this string has no closing `\"`",
@@ -141,7 +177,7 @@ impl Lexer<'_> {
                 self.pos += ch.len_utf8();
                 let span = Span::new(start, self.pos);
                 let diagnostic = Diagnostic::error(span, format!("unexpected character `{ch}`"));
-                self.diagnostics.push(match ch {
+                self.report(match ch {
                     '{' | '}' => diagnostic.with_hint("blocks are written `begin … end`"),
                     '/' => {
                         diagnostic.with_hint("comments start with `//`; integer division is `div`")

@@ -42,6 +42,12 @@
 //! false. `and` and `or` short-circuit. Half-edge lookups accept the aliases
 //! `face`, `vertex` (end vertex), `pair`, `twin`, `successor`, `next`,
 //! `predecessor` and `prev`.
+//!
+//! Limits, so that no text can exhaust the stack or freeze a page (see
+//! docs/limits.md): at most [`MAX_SOURCE_BYTES`] of text; nesting plus the
+//! operators and lookups of a chain at most [`parser::MAX_NESTING`] deep;
+//! names at most [`lexer::MAX_NAME_CHARS`] long; reading stops after
+//! [`parser::MAX_ERRORS`] errors.
 
 pub mod ast;
 pub mod checker;
@@ -99,8 +105,22 @@ pub fn check(source: &str) -> Vec<Diagnostic> {
     }
 }
 
+/// The largest algorithm text compiled, in bytes. The library's files are
+/// about 10 KB; the limit keeps one compile well under a second.
+pub const MAX_SOURCE_BYTES: usize = 1 << 20;
+
 /// Parses, checks and compiles every algorithm in `source`.
 pub fn compile(source: &str) -> Result<Program, Vec<Diagnostic>> {
+    if source.len() > MAX_SOURCE_BYTES {
+        return Err(vec![Diagnostic::error(
+            Span::new(0, 0),
+            format!(
+                "this text is {} bytes; algorithm files may hold at most {MAX_SOURCE_BYTES} \
+                 bytes (1 MiB)",
+                source.len()
+            ),
+        )]);
+    }
     let (file, mut diagnostics) = parser::parse(source);
     let scopes = checker::check_file(&file, source, &mut diagnostics);
     if file.algorithms.is_empty() && diagnostics.is_empty() {

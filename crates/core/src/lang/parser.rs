@@ -7,8 +7,8 @@
 //! every independent mistake in a file.
 
 use super::ast::*;
-use super::diagnostic::{Diagnostic, LineIndex, Span};
-use super::lexer::tokenize;
+use super::diagnostic::{Diagnostic, LineIndex, Span, shorten};
+use super::lexer::{SKIPPED_REST, tokenize};
 use super::token::{Token, TokenKind as T};
 use super::types::{Structure, Type};
 
@@ -16,6 +16,9 @@ use super::types::{Structure, Type};
 /// diagnostics were reported.
 pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
     let (tokens, diagnostics) = tokenize(source);
+    let lexer_gave_up = diagnostics
+        .last()
+        .is_some_and(|d| d.message.ends_with(SKIPPED_REST));
     let mut parser = Parser {
         source,
         lines: LineIndex::new(source),
@@ -23,6 +26,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
         pos: 0,
         diagnostics,
         depth: 0,
+        gave_up: lexer_gave_up,
     };
     let file = parser.file();
     (file, parser.diagnostics)
@@ -34,13 +38,23 @@ struct Parser<'s> {
     tokens: Vec<Token>,
     pos: usize,
     diagnostics: Vec<Diagnostic>,
-    /// Current nesting of statements and expressions, bounded so that no
-    /// input can exhaust the stack.
+    /// Current nesting of statements and expressions, plus the operators
+    /// and lookups of the chain being read, bounded so that no later pass over
+    /// the tree can exhaust the stack.
     depth: u32,
+    /// Set once the rest of the file is skipped; later errors are echoes.
+    gave_up: bool,
 }
 
-/// Deeper nesting than this is refused rather than recursed into.
-const MAX_NESTING: u32 = 100;
+/// Deeper nesting than this is refused rather than recursed into. Each
+/// operator or lookup in a chain (`a + b + c`, `e.pair.face`) counts as a
+/// level too, since it nests the tree one level deeper; every pass over the
+/// tree then recurses at most twice this deep.
+pub const MAX_NESTING: u32 = 100;
+
+/// After this many errors the parser stops: more would bury the first ones,
+/// and a hostile file could otherwise make the report grow without end.
+pub const MAX_ERRORS: usize = 100;
 
 /// Tokens that may begin a statement, used to decide whether a missing `;`
 /// can simply be assumed.
@@ -113,7 +127,9 @@ impl Parser<'_> {
     fn found(&self) -> String {
         let token = self.token();
         match token.kind {
-            T::Ident | T::Integer | T::String => format!("`{}`", self.text(token.span)),
+            T::Ident | T::Integer | T::String => {
+                format!("`{}`", shorten(self.text(token.span), 40))
+            }
             kind => kind.to_string(),
         }
     }
@@ -121,14 +137,31 @@ impl Parser<'_> {
     /// Records an error unless one was already reported at the same place,
     /// which keeps one mistake from producing a cascade of messages.
     fn report(&mut self, diagnostic: Diagnostic) {
-        if self
-            .diagnostics
-            .iter()
-            .any(|d| d.span.start == diagnostic.span.start)
+        if self.gave_up
+            || self
+                .diagnostics
+                .iter()
+                .any(|d| d.span.start == diagnostic.span.start)
         {
             return;
         }
+        if self.diagnostics.len() >= MAX_ERRORS {
+            self.give_up(diagnostic.span, &format!("more than {MAX_ERRORS} errors"));
+            return;
+        }
         self.diagnostics.push(diagnostic);
+    }
+
+    /// Reports why the rest of the file is skipped and skips it, which ends
+    /// every open construct at once.
+    fn give_up(&mut self, span: Span, why: &str) {
+        if self.gave_up {
+            return;
+        }
+        self.gave_up = true;
+        self.diagnostics
+            .push(Diagnostic::error(span, format!("{why}{SKIPPED_REST}")));
+        self.pos = self.tokens.len().saturating_sub(1);
     }
 
     fn error_here(&mut self, message: String) {
@@ -760,11 +793,27 @@ impl Parser<'_> {
             return true;
         }
         let span = self.token().span;
-        self.report(Diagnostic::error(
+        self.give_up(
             span,
-            format!("this is nested too deeply (more than {MAX_NESTING} levels)"),
-        ));
-        self.pos = self.tokens.len().saturating_sub(1);
+            &format!("this is nested too deeply (more than {MAX_NESTING} levels)"),
+        );
+        false
+    }
+
+    /// Counts one more operator or lookup of a chain that began at `depth`;
+    /// past the limit, reports it at `operator` and skips the rest of the file.
+    fn chain(&mut self, operator: Span) -> bool {
+        if self.depth < MAX_NESTING {
+            self.depth += 1;
+            return true;
+        }
+        self.give_up(
+            operator,
+            &format!(
+                "this expression is too long (more than {MAX_NESTING} operators, lookups and \
+                 levels of nesting); split it into steps with variables"
+            ),
+        );
         false
     }
 
@@ -786,22 +835,30 @@ impl Parser<'_> {
     }
 
     fn or_expression(&mut self) -> Expr {
-        let start = self.token().span.start;
+        let (start, depth) = (self.token().span.start, self.depth);
         let mut left = self.and_expression();
-        while self.eat(T::Or).is_some() {
+        while let Some(operator) = self.eat(T::Or) {
+            if !self.chain(operator.span) {
+                break;
+            }
             let right = self.and_expression();
             left = self.binary(start, BinaryOp::Or, left, right);
         }
+        self.depth = depth;
         left
     }
 
     fn and_expression(&mut self) -> Expr {
-        let start = self.token().span.start;
+        let (start, depth) = (self.token().span.start, self.depth);
         let mut left = self.not_expression();
-        while self.eat(T::And).is_some() {
+        while let Some(operator) = self.eat(T::And) {
+            if !self.chain(operator.span) {
+                break;
+            }
             let right = self.not_expression();
             left = self.binary(start, BinaryOp::And, left, right);
         }
+        self.depth = depth;
         left
     }
 
@@ -871,34 +928,44 @@ impl Parser<'_> {
     }
 
     fn additive(&mut self) -> Expr {
-        let start = self.token().span.start;
+        let (start, depth) = (self.token().span.start, self.depth);
         let mut left = self.multiplicative();
         loop {
             let op = match self.peek() {
                 T::Plus => BinaryOp::Add,
                 T::Minus => BinaryOp::Sub,
-                _ => return left,
+                _ => break,
             };
-            self.bump();
+            let operator = self.bump();
+            if !self.chain(operator.span) {
+                break;
+            }
             let right = self.multiplicative();
             left = self.binary(start, op, left, right);
         }
+        self.depth = depth;
+        left
     }
 
     fn multiplicative(&mut self) -> Expr {
-        let start = self.token().span.start;
+        let (start, depth) = (self.token().span.start, self.depth);
         let mut left = self.unary();
         loop {
             let op = match self.peek() {
                 T::Star => BinaryOp::Mul,
                 T::Div => BinaryOp::Div,
                 T::Mod => BinaryOp::Mod,
-                _ => return left,
+                _ => break,
             };
-            self.bump();
+            let operator = self.bump();
+            if !self.chain(operator.span) {
+                break;
+            }
             let right = self.unary();
             left = self.binary(start, op, left, right);
         }
+        self.depth = depth;
+        left
     }
 
     fn unary(&mut self) -> Expr {
@@ -931,9 +998,13 @@ impl Parser<'_> {
 
     // element := identifier | element . pointer
     fn postfix_expression(&mut self) -> Expr {
+        let depth = self.depth;
         let mut expr = self.primary();
         while self.at(T::Dot) {
-            self.bump();
+            let dot = self.bump();
+            if !self.chain(dot.span) {
+                break;
+            }
             let token = self.token();
             if token.kind == T::Ident || token.kind.is_keyword() {
                 self.bump();
@@ -952,12 +1023,14 @@ impl Parser<'_> {
             } else {
                 let message = format!("expected a lookup name after `.`, found {}", self.found());
                 self.error_here(message);
+                self.depth = depth;
                 return Expr {
                     kind: ExprKind::Error,
                     span: expr.span,
                 };
             }
         }
+        self.depth = depth;
         expr
     }
 
