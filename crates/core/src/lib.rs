@@ -5,6 +5,8 @@
 //! and the `edgewise` command share exactly the same logic.
 
 pub mod formats;
+#[doc(hidden)]
+pub mod fuzzing;
 pub mod lang;
 pub mod mesh;
 

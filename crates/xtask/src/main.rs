@@ -4,7 +4,10 @@
 //! - `test` runs everything CI checks.
 //! - `build-web [--dev]` only builds dist/.
 //! - `browser-test` builds dist/ and runs only the browser tests.
+//! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
+//!   `fuzz --make-seeds` rebuilds the seed corpus in fuzz/seeds/.
 
+mod fuzz;
 mod process;
 mod serve;
 mod test;
@@ -42,6 +45,21 @@ enum Command {
     },
     /// Build dist/ and run only the browser tests.
     BrowserTest,
+    /// Fuzz one target, or each in turn, with cargo-fuzz and libFuzzer (needs
+    /// a nightly toolchain; see docs/reliability.md), then print the
+    /// executions, seconds and crashes of each.
+    Fuzz {
+        /// The target: `obj`, `ply`, `wtb`, `htb`, `detect`, `compile`, `vm` or `course_link`
+        /// (default: all of them, in that order).
+        target: Option<String>,
+        /// How long to fuzz each target.
+        #[arg(long, default_value_t = 60)]
+        seconds: u64,
+        /// Rebuild fuzz/seeds/ from the samples, the test inputs, the
+        /// algorithm library and the course-link goldens instead of fuzzing.
+        #[arg(long, conflicts_with = "target")]
+        make_seeds: bool,
+    },
 }
 
 fn main() -> std::process::ExitCode {
@@ -75,6 +93,17 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::BrowserTest => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::browser_tests(&root, &dist)
+        }
+        Command::Fuzz {
+            ref target,
+            seconds,
+            make_seeds,
+        } => {
+            if make_seeds {
+                fuzz::make_seeds(&root)
+            } else {
+                fuzz::run(&root, target.as_deref(), seconds)
+            }
         }
     }
 }

@@ -1,0 +1,210 @@
+//! The bodies of the fuzz targets in `fuzz/`, one function per target.
+//!
+//! The fuzz targets (nightly, libFuzzer) and the replay tests
+//! (`crates/core/tests/fuzz_regressions.rs`, stable, run by `cargo xtask
+//! test`) both call these, so a crash found by the fuzzer is replayed by
+//! exactly the code that found it. Each function panics only on a bug: a
+//! reader that panics, or a mesh that loads but does not validate.
+//!
+//! Not part of the library's interface.
+
+use std::sync::OnceLock;
+
+use crate::formats::{self, Format, Loaded};
+use crate::lang::{self, Element, RunOptions, Type, Value};
+use crate::mesh::{Mesh, Structure};
+
+/// Operations each fuzzed algorithm may run: small, so iterations stay fast.
+pub const VM_STEP_LIMIT: usize = 2_000;
+
+/// File names for [`detect`], picked by the input's first byte: bare
+/// extensions, names with and without extensions, and an unknown one.
+pub const DETECT_NAMES: [&str; 8] = [
+    "",
+    "mesh",
+    "mesh.obj",
+    "MESH.PLY",
+    "dir/mesh.wtb",
+    "htb",
+    "mesh.txt",
+    "dir.d\\pasted",
+];
+
+/// `.obj` bytes, read into both structures.
+pub fn obj(data: &[u8]) {
+    load_both(data, Format::Obj);
+}
+
+/// `.ply` bytes (ASCII or either binary byte order), read into both
+/// structures.
+pub fn ply(data: &[u8]) {
+    load_both(data, Format::Ply);
+}
+
+/// `.wtb` bytes, read and converted to half-edge.
+pub fn wtb(data: &[u8]) {
+    load_both(data, Format::Wtb);
+}
+
+/// `.htb` bytes, read and converted to winged-edge.
+pub fn htb(data: &[u8]) {
+    load_both(data, Format::Htb);
+}
+
+/// Format detection then loading: the first byte picks a file name from
+/// [`DETECT_NAMES`] and the structure, the rest is the file.
+pub fn detect(data: &[u8]) {
+    let Some((&selector, bytes)) = data.split_first() else {
+        return;
+    };
+    let name = DETECT_NAMES[usize::from(selector) % DETECT_NAMES.len()];
+    let structure = if selector & 0x80 == 0 {
+        Structure::HalfEdge
+    } else {
+        Structure::WingedEdge
+    };
+    let sniffed = Format::sniff(bytes);
+    match formats::load(bytes, name, structure) {
+        Ok(loaded) => {
+            if !name.contains('.') && Format::from_name(name).is_none() {
+                assert_eq!(loaded.format, sniffed, "a name with no extension sniffs");
+            }
+            check_loaded(&loaded, structure);
+        }
+        Err(error) => drop(error.to_string()),
+    }
+}
+
+/// Algorithm text through the whole pipeline: lexer, parser, checker,
+/// compiler, then the disassembler (or the rendered diagnostics).
+pub fn compile(data: &[u8]) {
+    // The compiler takes `&str`: text that is not UTF-8 never reaches it.
+    let Ok(source) = std::str::from_utf8(data) else {
+        return;
+    };
+    match lang::compile(source) {
+        Ok(program) => {
+            let listing = lang::disassemble_all(program.algorithms.iter().map(AsRef::as_ref));
+            assert!(program.algorithms.is_empty() || !listing.is_empty());
+        }
+        Err(diagnostics) => {
+            assert!(!diagnostics.is_empty(), "a failed compile says why");
+            drop(lang::render_all(&diagnostics, source, Some("fuzz.alg")));
+        }
+    }
+}
+
+/// Algorithm text, compiled; every algorithm that compiles is run on a small
+/// sample mesh of its structure with arguments that fit its parameters.
+///
+/// The input is the source text, optionally followed by a NUL byte and the
+/// argument bytes: the first picks the mesh, then one byte (two for an
+/// Integer) per parameter; missing bytes count as zero.
+pub fn vm(data: &[u8]) {
+    let (text, argument_bytes) = match data.iter().position(|&b| b == 0) {
+        Some(nul) => (&data[..nul], &data[nul + 1..]),
+        None => (data, &[][..]),
+    };
+    // The compiler takes `&str`: text that is not UTF-8 never reaches it.
+    let Ok(source) = std::str::from_utf8(text) else {
+        return;
+    };
+    let Ok(program) = lang::compile(source) else {
+        return;
+    };
+    let mut bytes = argument_bytes.iter().copied();
+    let mesh_choice = bytes.next().unwrap_or(0);
+    let options = RunOptions {
+        step_limit: VM_STEP_LIMIT,
+    };
+    for algorithm in &program.algorithms {
+        let mesh = sample_mesh(algorithm.structure, mesh_choice);
+        let mut inputs: Vec<(&str, Value)> = Vec::new();
+        for param in algorithm.params() {
+            let byte = bytes.next().unwrap_or(0);
+            let value = match param.ty {
+                Type::Integer => {
+                    let low = bytes.next().unwrap_or(0);
+                    Value::Integer(i32::from(i16::from_le_bytes([low, byte])))
+                }
+                Type::Boolean => Value::Boolean(byte & 1 == 1),
+                ty => {
+                    let Some(kind) = ty.element_kind() else {
+                        return;
+                    };
+                    let count = lang::Topology::count(mesh, kind).max(1);
+                    let index = usize::from(byte) % count;
+                    Value::from(Element::new(kind, u32::try_from(index).unwrap_or(0)))
+                }
+            };
+            inputs.push((param.name.as_str(), value));
+        }
+        let execution = lang::execute(algorithm, mesh, &inputs, options)
+            .unwrap_or_else(|error| panic!("fitting arguments refused: {error}"));
+        let trace = lang::run(algorithm, mesh, &inputs, options)
+            .unwrap_or_else(|error| panic!("fitting arguments refused: {error}"));
+        assert_eq!(
+            &execution.outcome,
+            trace.outcome(),
+            "execute and run agree on the outcome"
+        );
+        assert_eq!(
+            execution.variables,
+            trace.final_variables(),
+            "execute and run agree on the final variables"
+        );
+        for index in 0..trace.len() {
+            assert!(trace.step(index).is_some(), "every step up to len() exists");
+        }
+        drop(trace.render());
+    }
+}
+
+/// The sample meshes [`vm`] runs algorithms on: the tetrahedron and the cube
+/// from meshes/, each in both structures.
+fn sample_mesh(structure: lang::Structure, choice: u8) -> &'static Mesh {
+    static MESHES: OnceLock<[Mesh; 4]> = OnceLock::new();
+    let meshes = MESHES.get_or_init(|| {
+        let load =
+            |bytes: &[u8], format, structure| match formats::load_as(bytes, format, structure) {
+                Ok(loaded) => loaded.mesh,
+                Err(error) => panic!("a sample mesh does not load: {error}"),
+            };
+        let tetrahedron = include_bytes!("../../../meshes/tetrahedron.wtb");
+        let cube = include_bytes!("../../../meshes/cube.htb");
+        [
+            load(tetrahedron, Format::Wtb, Structure::WingedEdge),
+            load(tetrahedron, Format::Wtb, Structure::HalfEdge),
+            load(cube, Format::Htb, Structure::WingedEdge),
+            load(cube, Format::Htb, Structure::HalfEdge),
+        ]
+    });
+    let offset = match structure {
+        lang::Structure::WingedEdge => 0,
+        lang::Structure::HalfEdge => 1,
+    };
+    &meshes[usize::from(choice & 1) * 2 + offset]
+}
+
+fn load_both(data: &[u8], format: Format) {
+    for structure in [Structure::WingedEdge, Structure::HalfEdge] {
+        match formats::load_as(data, format, structure) {
+            Ok(loaded) => check_loaded(&loaded, structure),
+            // Rendering the message exercises its location and text too.
+            Err(error) => drop(error.to_string()),
+        }
+    }
+}
+
+/// What every successful load promises: the structure asked for, and a mesh
+/// with no violated rule.
+fn check_loaded(loaded: &Loaded, structure: Structure) {
+    assert_eq!(loaded.mesh.structure(), structure);
+    let issues = loaded.mesh.validate();
+    assert!(
+        issues.is_empty(),
+        "a loaded {} mesh does not validate: {issues:?}",
+        loaded.format
+    );
+    drop(loaded.mesh.stats());
+}
