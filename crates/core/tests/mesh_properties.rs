@@ -1,14 +1,15 @@
 //! Property tests on random valid meshes (tori and subdivided cubes, randomly
 //! triangulated, relabelled, reordered, with faces removed to make
-//! boundaries) and on random garbage: the builder never panics, `validate()`
-//! finds nothing on what it builds, the conversions round-trip, the Euler
+//! boundaries; fans glued at a vertex) and on random garbage: the builder
+//! never panics, vertices joining several fans are split, `validate()` finds
+//! nothing on what it builds, the conversions round-trip, the Euler
 //! characteristic agrees with V − E + F, and every iterator visits exactly
 //! what a brute-force search finds.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use edgewise_core::mesh::{
-    BuildError, EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Polygons, VertexId, WingedEdgeMesh,
+    BuildWarning, EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Polygons, VertexId, WingedEdgeMesh,
     generate,
 };
 use glam::Vec3;
@@ -153,27 +154,118 @@ fn random_mesh(base: Base, remove_per_256: u8, bytes: &[u8]) -> Polygons {
     Polygons::from_faces(new_positions, faces)
 }
 
-/// Removing faces can pinch a vertex (two fans left touching). The builder
-/// must refuse exactly that; removing one of the faces it names and trying
-/// again always ends with a valid mesh with holes.
-fn unpinch(mut polygons: Polygons) -> (Polygons, usize) {
-    let mut refusals = 0;
-    loop {
-        match HalfEdgeMesh::build(&polygons) {
-            Ok(_) => return (polygons, refusals),
-            Err(BuildError::NonManifoldVertex { second, .. }) => {
-                refusals += 1;
-                let faces: Vec<Vec<u32>> = polygons
-                    .faces()
-                    .enumerate()
-                    .filter(|&(f, _)| f != second.face.index())
-                    .map(|(_, face)| face.to_vec())
-                    .collect();
-                polygons = Polygons::from_faces(polygons.positions().to_vec(), faces);
-            }
-            Err(other) => panic!("unexpected refusal: {other}"),
+/// What the builds must make of `polygons`, found by brute force apart from
+/// the builder: each vertex whose corners fall into separate fans (corners
+/// whose faces share an edge at the vertex are in one fan) split, the fan
+/// with the first corner keeping the vertex, copies numbered after the input's
+/// by vertex, then by each fan's first corner. Removing faces from a closed
+/// mesh leaves such vertices where two holes touch.
+fn split_by_brute_force(polygons: &Polygons) -> (Polygons, Vec<BuildWarning>) {
+    // Per vertex, its corners in order: (face, position in face, neighbours).
+    let mut corners: Vec<Vec<(usize, usize, [u32; 2])>> = vec![Vec::new(); polygons.vertex_count()];
+    for (f, face) in polygons.faces().enumerate() {
+        for (k, &v) in face.iter().enumerate() {
+            let prev = face[(k + face.len() - 1) % face.len()];
+            let next = face[(k + 1) % face.len()];
+            corners[v as usize].push((f, k, [prev, next]));
         }
     }
+    let mut faces: Vec<Vec<u32>> = polygons.faces().map(<[u32]>::to_vec).collect();
+    let mut positions = polygons.positions().to_vec();
+    let mut warnings = Vec::new();
+    for (v, around) in corners.iter().enumerate() {
+        // Fan labels, merged until no shared edge joins two labels.
+        let mut label: Vec<usize> = (0..around.len()).collect();
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for a in 0..around.len() {
+                for b in 0..around.len() {
+                    let shared = around[a].2.iter().any(|u| around[b].2.contains(u));
+                    if shared && label[b] > label[a] {
+                        label[b] = label[a];
+                        changed = true;
+                    }
+                }
+            }
+        }
+        // Each label ends as its fan's first corner, so sorted labels are
+        // the fans in order.
+        let fans: Vec<usize> = label
+            .iter()
+            .copied()
+            .collect::<BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        if fans.len() < 2 {
+            continue;
+        }
+        let copies: Vec<u32> = (1..fans.len())
+            .map(|_| {
+                positions.push(positions[v]);
+                positions.len() as u32 - 1
+            })
+            .collect();
+        for (&(f, k, _), l) in around.iter().zip(&label) {
+            let fan = fans.iter().position(|x| x == l).expect("a fan");
+            if fan > 0 {
+                faces[f][k] = copies[fan - 1];
+            }
+        }
+        warnings.push(BuildWarning::SplitVertex {
+            vertex: VertexId::new(v as u32),
+            copies: copies.into_iter().map(VertexId::new).collect(),
+        });
+    }
+    (Polygons::from_faces(positions, faces), warnings)
+}
+
+/// Fans of faces glued at shared hub vertices: `hubs[i]` lists hub `i`'s fans
+/// as (faces, closed), a closed fan going all the way round its hub. Faces
+/// have three to five corners, vertices are relabelled and faces shuffled
+/// and rotated. Returns the polygons and each hub's vertex and fan count.
+fn glued_fans(hubs: &[Vec<(usize, bool)>], bytes: &[u8]) -> (Polygons, Vec<(u32, usize)>) {
+    let mut choices = Choices { bytes, at: 0 };
+    let mut count = hubs.len() as u32;
+    let mut fresh = || {
+        count += 1;
+        count - 1
+    };
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    for (hub, fans) in (0u32..).zip(hubs) {
+        for &(size, closed) in fans {
+            let closed = closed && size >= 3;
+            let rim: Vec<u32> = (0..size + usize::from(!closed)).map(|_| fresh()).collect();
+            for i in 0..size {
+                let mut face = vec![hub, rim[i]];
+                face.extend((0..choices.below(3)).map(|_| fresh()));
+                face.push(rim[(i + 1) % rim.len()]);
+                faces.push(face);
+            }
+        }
+    }
+    let n = count as usize;
+    let mut relabel: Vec<u32> = (0..count).collect();
+    for i in (1..n).rev() {
+        relabel.swap(i, choices.below(i + 1));
+    }
+    for i in (1..faces.len()).rev() {
+        faces.swap(i, choices.below(i + 1));
+    }
+    for face in &mut faces {
+        let turn = choices.below(face.len());
+        face.rotate_left(turn);
+        for v in face.iter_mut() {
+            *v = relabel[*v as usize];
+        }
+    }
+    let positions = (0..n)
+        .map(|i| Vec3::new(i as f32, (i * i % 11) as f32, (i % 5) as f32))
+        .collect();
+    let hubs = (0..hubs.len())
+        .map(|hub| (relabel[hub], hubs[hub].len()))
+        .collect();
+    (Polygons::from_faces(positions, faces), hubs)
 }
 
 fn base_strategy() -> impl Strategy<Value = Base> {
@@ -276,29 +368,35 @@ impl BruteForce {
     }
 }
 
-/// Builds both structures and checks every property. Returns false when the
-/// builder (rightly) refused a non-manifold vertex left by face removal.
-fn check_all(polygons: &Polygons) -> bool {
-    let half = HalfEdgeMesh::build(polygons);
-    let winged = WingedEdgeMesh::build(polygons);
+/// Builds both structures and checks every property, against the polygons
+/// with non-manifold vertices split by brute force.
+fn check_all(input: &Polygons) {
+    let half = HalfEdgeMesh::build(input);
+    let winged = WingedEdgeMesh::build(input);
     let ((he, he_warnings), (we, we_warnings)) = match (half, winged) {
         (Ok(half), Ok(winged)) => (half, winged),
-        (Err(a), Err(b)) => {
-            assert_eq!(a, b);
-            assert!(
-                matches!(a, BuildError::NonManifoldVertex { .. }),
-                "unexpected refusal: {a}"
-            );
-            return false;
-        }
-        (a, b) => panic!("the builders disagree: {a:?} / {b:?}"),
+        (a, b) => panic!("unexpected refusal: {a:?} / {b:?}"),
     };
+    let (split, splits) = split_by_brute_force(input);
+    let polygons = &split;
     let brute = BruteForce::new(polygons);
     let unused: Vec<usize> = (0..polygons.vertex_count())
         .filter(|&v| brute.faces_at[v].is_empty())
         .collect();
-    assert_eq!(he_warnings.len(), unused.len());
+    assert_eq!(he_warnings.get(..splits.len()), Some(&splits[..]));
+    assert_eq!(he_warnings.len(), splits.len() + unused.len());
     assert_eq!(he_warnings, we_warnings);
+    assert_eq!(
+        he.vertex_count(),
+        input.vertex_count()
+            + splits
+                .iter()
+                .map(|w| match w {
+                    BuildWarning::SplitVertex { copies, .. } => copies.len(),
+                    BuildWarning::UnusedVertex { .. } => 0,
+                })
+                .sum::<usize>()
+    );
 
     // validate() finds nothing.
     assert_eq!(he.validate(), vec![]);
@@ -435,7 +533,6 @@ fn check_all(polygons: &Polygons) -> bool {
         assert_eq!(sorted(he.face_neighbours(id).map(FaceId::raw)), across);
         assert_eq!(sorted(we.face_neighbours(id).map(FaceId::raw)), across);
     }
-    true
 }
 
 proptest! {
@@ -444,7 +541,7 @@ proptest! {
     #[test]
     fn closed_meshes_keep_every_property(base in base_strategy(), bytes in prop::collection::vec(any::<u8>(), 1..64)) {
         let polygons = random_mesh(base, 0, &bytes);
-        prop_assert!(check_all(&polygons));
+        check_all(&polygons);
         let stats = HalfEdgeMesh::build(&polygons).expect("closed").0.stats();
         let expected_genus = match base { Base::SubdividedCube(_) => 0, _ => 1 };
         prop_assert_eq!(stats.components.len(), 1);
@@ -457,11 +554,34 @@ proptest! {
         remove in 1u8..100,
         bytes in prop::collection::vec(any::<u8>(), 1..64),
     ) {
-        let holed = random_mesh(base, remove, &bytes);
-        let (polygons, refusals) = unpinch(holed.clone());
-        prop_assert!(check_all(&polygons));
-        // Every refusal named a pinched vertex, and removing one face answered it.
-        prop_assert_eq!(polygons.face_count() + refusals, holed.face_count());
+        // Holes that touch leave vertices joining several fans; check_all
+        // expects them split.
+        check_all(&random_mesh(base, remove, &bytes));
+    }
+
+    /// Several fans glued at a vertex load: one vertex per fan, and V grows
+    /// by (fans − 1) for each such vertex.
+    #[test]
+    fn fans_glued_at_a_vertex_are_split(
+        hubs in prop::collection::vec(prop::collection::vec((1usize..6, any::<bool>()), 1..5), 1..4),
+        bytes in prop::collection::vec(any::<u8>(), 1..64),
+    ) {
+        let (polygons, hubs) = glued_fans(&hubs, &bytes);
+        check_all(&polygons);
+        let (mesh, warnings) = HalfEdgeMesh::build(&polygons).expect("builds");
+        let extra: usize = hubs.iter().map(|&(_, fans)| fans - 1).sum();
+        prop_assert_eq!(mesh.vertex_count(), polygons.vertex_count() + extra);
+        let mut split: Vec<(u32, usize)> = warnings
+            .iter()
+            .filter_map(|w| match w {
+                BuildWarning::SplitVertex { vertex, copies } => Some((vertex.raw(), copies.len() + 1)),
+                BuildWarning::UnusedVertex { .. } => None,
+            })
+            .collect();
+        split.sort_unstable();
+        let mut expected: Vec<(u32, usize)> = hubs.into_iter().filter(|&(_, fans)| fans > 1).collect();
+        expected.sort_unstable();
+        prop_assert_eq!(split, expected);
     }
 }
 
@@ -487,7 +607,7 @@ proptest! {
         let winged = WingedEdgeMesh::build(&polygons);
         match (&half, &winged) {
             (Ok(_), Ok(_)) => {
-                prop_assert!(check_all(&polygons));
+                check_all(&polygons);
             }
             (Err(a), Err(b)) => {
                 prop_assert_eq!(a, b);

@@ -1,5 +1,6 @@
 //! What the builder refuses (each refusal with its exact message), what it
-//! keeps with a warning, and what `validate()` says about broken tables.
+//! keeps or splits with a warning, and what `validate()` says about broken
+//! tables.
 
 use edgewise_core::mesh::half_edge;
 use edgewise_core::mesh::winged_edge;
@@ -120,19 +121,51 @@ fn refuses_inconsistent_orientation() {
     );
 }
 
+/// Both builders accept with the same warnings; the meshes validate, and
+/// convert into each other.
+fn accepted(polygons: &Polygons) -> (HalfEdgeMesh, Vec<BuildWarning>) {
+    let (half, warnings) = HalfEdgeMesh::build(polygons).expect("half-edge build");
+    let (winged, winged_warnings) = WingedEdgeMesh::build(polygons).expect("winged-edge build");
+    assert_eq!(warnings, winged_warnings);
+    assert_eq!(half.validate(), vec![]);
+    assert_eq!(winged.validate(), vec![]);
+    assert_eq!(half.to_winged_edge().expect("he → we"), winged);
+    let back = winged.to_half_edge().expect("we → he");
+    assert_eq!(back.to_winged_edge().expect("he → we"), winged);
+    (half, warnings)
+}
+
+fn split(vertex: u32, copies: &[u32]) -> BuildWarning {
+    BuildWarning::SplitVertex {
+        vertex: VertexId::new(vertex),
+        copies: copies.iter().copied().map(VertexId::new).collect(),
+    }
+}
+
 #[test]
-fn refuses_a_non_manifold_vertex() {
+fn splits_a_vertex_joining_two_fans() {
     // Two triangles touching at vertex 0 only (two open fans).
-    let (error, message) = refusal(&from_file(5, &[&[0, 1, 2], &[0, 3, 4]]));
-    assert!(
-        matches!(error, BuildError::NonManifoldVertex { vertex, .. } if vertex == VertexId::new(0))
-    );
+    let polygons = from_file(5, &[&[0, 1, 2], &[0, 3, 4]]);
+    let (mesh, warnings) = accepted(&polygons);
+    assert_eq!(warnings, [split(0, &[5])]);
     assert_eq!(
-        message,
-        "vertex 0 joins separate fans of faces (face 0 (line 10) and face 1 (line 11) are not connected \
-         around it); the faces around a vertex must form one fan (non-manifold vertex)"
+        warnings[0].to_string(),
+        "vertex 0 joined 2 fans of faces; split into 0 and 5"
     );
-    // Two closed tetrahedra sharing their apex (two closed fans).
+    assert_eq!(mesh.vertex_count(), 6);
+    assert_eq!(
+        mesh.position(VertexId::new(5)),
+        mesh.position(VertexId::new(0))
+    );
+    let faces: Vec<Vec<u32>> = mesh.to_polygons().faces().map(<[u32]>::to_vec).collect();
+    assert_eq!(faces, [vec![0, 1, 2], vec![5, 3, 4]]);
+    assert_eq!(mesh.stats().connected_components(), 2);
+    // The split mesh is manifold: building it again changes nothing.
+    let (again, warnings) = accepted(&mesh.to_polygons());
+    assert!(warnings.is_empty());
+    assert_eq!(again, mesh);
+
+    // Two closed tetrahedra sharing their apex (two closed fans): two spheres.
     let tetrahedron = [[0u32, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
     let mut faces: Vec<[u32; 3]> = tetrahedron.to_vec();
     faces.extend(
@@ -140,11 +173,75 @@ fn refuses_a_non_manifold_vertex() {
             .iter()
             .map(|face| face.map(|x| if x == 0 { 0 } else { x + 3 })),
     );
-    let (_, message) = refusal(&Polygons::from_triangles(vec![Vec3::ZERO; 7], &faces));
+    let (mesh, warnings) = accepted(&Polygons::from_triangles(vec![Vec3::ZERO; 7], &faces));
+    assert_eq!(warnings, [split(0, &[7])]);
+    let stats = mesh.stats();
+    assert_eq!((stats.vertices, stats.edges, stats.faces), (8, 12, 8));
+    assert!(stats.components.iter().all(|c| c.genus == Some(0)));
+}
+
+#[test]
+fn splits_a_vertex_joining_three_fans_and_numbers_copies_by_vertex() {
+    // Vertex 2 joins three fans (faces 0 and 3 share the edge 2–3, so they
+    // are one), vertex 1 two; vertex 0 is unused. Vertex 1's copy comes
+    // first (lower vertex), then vertex 2's two, in order of each fan's
+    // first corner.
+    let polygons = from_file(
+        12,
+        &[
+            &[2, 3, 4],
+            &[5, 2, 7],
+            &[1, 8, 9],
+            &[3, 2, 6],
+            &[10, 11, 2],
+            &[1, 11, 10],
+        ],
+    );
+    let (mesh, warnings) = accepted(&polygons);
+    assert_eq!(
+        warnings,
+        [
+            split(1, &[12]),
+            split(2, &[13, 14]),
+            BuildWarning::UnusedVertex {
+                vertex: VertexId::new(0)
+            }
+        ]
+    );
+    assert_eq!(
+        warnings[1].to_string(),
+        "vertex 2 joined 3 fans of faces; split into 2, 13 and 14"
+    );
+    assert_eq!(mesh.vertex_count(), 15);
+    let faces: Vec<Vec<u32>> = mesh.to_polygons().faces().map(<[u32]>::to_vec).collect();
+    assert_eq!(
+        faces,
+        [
+            vec![2, 3, 4],
+            vec![5, 13, 7],
+            vec![1, 8, 9],
+            vec![3, 2, 6],
+            vec![10, 11, 14],
+            vec![12, 11, 10]
+        ]
+    );
+}
+
+#[test]
+fn a_vertex_split_does_not_hide_edge_refusals() {
+    // Vertex 0 joins two fans, and the edge 3–4 has three faces, or the
+    // faces on edge 3–4 disagree: the edge is refused as without the pinch.
+    let (error, _) = refusal(&from_file(
+        7,
+        &[&[0, 1, 2], &[0, 3, 4], &[4, 3, 5], &[3, 4, 6]],
+    ));
+    assert!(matches!(error, BuildError::NonManifoldEdge { ref faces, .. } if faces.len() == 3));
+    let (error, message) = refusal(&from_file(6, &[&[0, 1, 2], &[0, 3, 4], &[3, 4, 5]]));
+    assert!(matches!(error, BuildError::InconsistentOrientation { .. }));
     assert_eq!(
         message,
-        "vertex 0 joins separate fans of faces (face 0 and face 4 are not connected around it); the faces \
-         around a vertex must form one fan (non-manifold vertex)"
+        "face 1 (line 11) and face 2 (line 12) both go from vertex 3 to vertex 4; faces sharing an edge must \
+         traverse it in opposite directions (inconsistent orientation: reverse one of them)"
     );
 }
 

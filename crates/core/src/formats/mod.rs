@@ -41,7 +41,7 @@ pub use error::{FormatError, Location, Problem, SaveError};
 pub use listing::listing;
 pub use ply::PlyEncoding;
 
-use crate::mesh::{BuildWarning, Mesh, Polygons, Structure};
+use crate::mesh::{Mesh, Polygons, Structure};
 
 /// The largest file any reader accepts: 256 MiB, about six million
 /// triangles as binary PLY. Larger inputs are refused before parsing, so a
@@ -172,8 +172,8 @@ pub struct Loaded {
     /// The structure the file itself stored when it was converted to give
     /// the requested one (a `.wtb` loaded as half-edge), else `None`.
     pub converted_from: Option<Structure>,
-    /// What the reader kept but noticed: unused vertices, ignored OBJ
-    /// statements, skipped PLY elements.
+    /// What the reader kept but noticed: unused and split vertices, ignored
+    /// OBJ statements, skipped PLY elements.
     pub warnings: Vec<Problem>,
 }
 
@@ -201,10 +201,9 @@ pub fn load_as(bytes: &[u8], format: Format, structure: Structure) -> Result<Loa
     let (mesh, build_warnings) =
         Mesh::build(&polygons, structure).map_err(|error| FormatError::from_build(&error))?;
     warnings.extend(build_warnings.iter().map(|warning| {
-        let BuildWarning::UnusedVertex { vertex } = warning;
         // Vertex lines are only looked up here, for the rare warning.
         let line = match format {
-            Format::Obj => obj::vertex_line(bytes, vertex.index()),
+            Format::Obj => obj::vertex_line(bytes, warning.vertex().index()),
             _ => None,
         };
         Problem::new(

@@ -10,7 +10,8 @@
 //!    uses of one edge side by side, which finds pairs, non-manifold edges and
 //!    orientation conflicts in one scan;
 //! 3. number the boundary half-edges and link them along the boundary loops;
-//! 4. walk once around every vertex to refuse non-manifold vertices.
+//! 4. walk once around every vertex to find non-manifold vertices (the builds
+//!    then split them in the polygon list and build again, see `repair`).
 //!
 //! Interior half-edge `h` is corner `h` of the flat polygon list, so its start
 //! vertex is `indices[h]`. The half-edge build writes its rows in the first

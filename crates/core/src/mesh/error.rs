@@ -72,7 +72,9 @@ pub enum BuildError {
         second: FaceRef,
     },
     /// The faces around a vertex form more than one fan (for example two cones
-    /// touching at their tips).
+    /// touching at their tips). The builds split such a vertex instead (see
+    /// [`BuildWarning::SplitVertex`]), so this reaches callers only if the
+    /// split could not be made.
     NonManifoldVertex {
         /// The vertex.
         vertex: VertexId,
@@ -180,6 +182,25 @@ pub enum BuildWarning {
         /// The vertex.
         vertex: VertexId,
     },
+    /// Separate fans of faces met at a vertex (two holes touching at a corner,
+    /// two cones sharing a tip). It was split into one vertex per fan at the
+    /// same position, so the structures stay manifold: the fan with the
+    /// vertex's first corner kept it, the others use the copies.
+    SplitVertex {
+        /// The vertex as numbered in the input.
+        vertex: VertexId,
+        /// The new vertices, numbered after the input's, one per extra fan.
+        copies: Vec<VertexId>,
+    },
+}
+
+impl BuildWarning {
+    /// The input vertex the warning is about (for finding its source line).
+    pub fn vertex(&self) -> VertexId {
+        match self {
+            Self::UnusedVertex { vertex } | Self::SplitVertex { vertex, .. } => *vertex,
+        }
+    }
 }
 
 impl fmt::Display for BuildWarning {
@@ -190,6 +211,19 @@ impl fmt::Display for BuildWarning {
                     f,
                     "{vertex} is not used by any face; it is kept as an isolated vertex"
                 )
+            }
+            Self::SplitVertex { vertex, copies } => {
+                write!(
+                    f,
+                    "{vertex} joined {} fans of faces; split into {}",
+                    copies.len() + 1,
+                    vertex.raw()
+                )?;
+                for (i, copy) in copies.iter().enumerate() {
+                    let separator = if i + 1 == copies.len() { " and " } else { ", " };
+                    write!(f, "{separator}{}", copy.raw())?;
+                }
+                Ok(())
             }
         }
     }

@@ -10,6 +10,7 @@ use super::builder::{self, General, Layout, NONE, Pairs, Triangles};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
+use super::repair;
 
 /// A row of the half-edge vertex table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,8 +89,10 @@ impl Pairs for Vec<HalfEdge> {
 
 impl HalfEdgeMesh {
     /// Builds the structure from counter-clockwise polygons, refusing
-    /// non-manifold or inconsistently oriented input. Returns the mesh and
-    /// warnings about what it kept (unused vertices).
+    /// non-manifold edges and inconsistently oriented input. A vertex where
+    /// separate fans of faces meet is split into one vertex per fan (new ids
+    /// after the input's), so the result is manifold. Returns the mesh and
+    /// warnings about what it kept or split (unused and split vertices).
     ///
     /// Vertices and faces keep their numbers. Interior half-edges are numbered
     /// face by face along each face's vertex order (face `[a, b, c]` gives
@@ -110,6 +113,11 @@ impl HalfEdgeMesh {
     /// # Ok::<(), edgewise_core::mesh::BuildError>(())
     /// ```
     pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
+        repair::build_splitting_fans(polygons, Self::build_as_given)
+    }
+
+    /// [`Self::build`] without the split: refuses non-manifold vertices.
+    fn build_as_given(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
         if builder::all_triangles(polygons) {
             Self::assemble(polygons, &Triangles, true)
         } else {

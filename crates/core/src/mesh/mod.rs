@@ -4,7 +4,8 @@
 //!
 //! - [`Polygons`] is the builder input every loader produces.
 //! - [`HalfEdgeMesh::build`] and [`WingedEdgeMesh::build`] refuse bad input
-//!   with a [`BuildError`] and report kept oddities as [`BuildWarning`]s.
+//!   with a [`BuildError`] and report kept oddities as [`BuildWarning`]s; a
+//!   vertex where separate fans of faces meet is split, one vertex per fan.
 //! - [`HalfEdgeMesh::from_raw_parts`] / [`WingedEdgeMesh::from_raw_parts`] take
 //!   tables as written; `validate()` lists each [`Issue`] by element and field.
 //! - `stats()`, the navigation iterators and the conversions work on both.
@@ -16,6 +17,7 @@ pub mod generate;
 pub mod half_edge;
 pub mod ids;
 pub mod polygons;
+mod repair;
 pub mod stats;
 pub mod structure;
 pub mod traversal;

@@ -156,6 +156,11 @@ impl Polygons {
         &self.indices
     }
 
+    /// All vertex numbers, for renumbering corners without changing faces.
+    pub(crate) fn indices_mut(&mut self) -> &mut [u32] {
+        &mut self.indices
+    }
+
     /// Face start offsets into [`Self::indices`], with a final end offset.
     pub(crate) fn offsets(&self) -> &[usize] {
         &self.offsets

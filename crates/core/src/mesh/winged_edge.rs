@@ -13,6 +13,7 @@ use super::builder::{self, General, Layout, NONE, Triangles};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
+use super::repair;
 
 /// A row of the winged-edge vertex table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -64,8 +65,10 @@ pub struct WingedEdgeMesh {
 
 impl WingedEdgeMesh {
     /// Builds the structure from counter-clockwise polygons, refusing
-    /// non-manifold or inconsistently oriented input. Returns the mesh and
-    /// warnings about what it kept (unused vertices).
+    /// non-manifold edges and inconsistently oriented input. A vertex where
+    /// separate fans of faces meet is split into one vertex per fan (new ids
+    /// after the input's), so the result is manifold. Returns the mesh and
+    /// warnings about what it kept or split (unused and split vertices).
     ///
     /// Vertices and faces keep their numbers; edges are numbered in order of
     /// first appearance walking the faces in order and point the way they
@@ -86,6 +89,11 @@ impl WingedEdgeMesh {
     /// # Ok::<(), edgewise_core::mesh::BuildError>(())
     /// ```
     pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
+        repair::build_splitting_fans(polygons, Self::build_as_given)
+    }
+
+    /// [`Self::build`] without the split: refuses non-manifold vertices.
+    fn build_as_given(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
         if builder::all_triangles(polygons) {
             Self::assemble(polygons, &Triangles, true)
         } else {
