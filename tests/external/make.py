@@ -7,7 +7,9 @@ Run by hand, not by CI; the outputs are committed beside this script:
 
 Each file is listed in expected.txt with the vertex, edge and face counts the
 writer put in it (edges counted here from the faces), which
-crates/core/tests/formats_external.rs checks after loading.
+crates/core/tests/formats_external.rs checks after loading. A file with a
+vertex where separate fans of faces meet still lists the file's counts; the
+test names such files and expects one vertex more per extra fan.
 """
 
 import os
@@ -44,6 +46,37 @@ def record(name, vertex_count, faces):
 sphere = trimesh.creation.icosphere(subdivisions=2)
 sphere.export(os.path.join(HERE, "trimesh-icosphere.ply"))
 record("trimesh-icosphere.ply", len(sphere.vertices), sphere.faces.tolist())
+
+# trimesh: the same icosphere with four faces removed, two holes of two
+# adjacent faces each that touch at exactly one vertex (no shared edge), so
+# that vertex joins two fans of faces. Taking the first such two pairs in
+# order of face numbers keeps the choice deterministic.
+def touching_holes(mesh):
+    pairs = sorted(tuple(sorted(map(int, p))) for p in mesh.face_adjacency)
+
+    def corners(pair):
+        return set(int(v) for f in pair for v in mesh.faces[f])
+
+    def edges(pair):
+        return {frozenset((int(a), int(b))) for f in pair
+                for a, b in zip(mesh.faces[f], np.roll(mesh.faces[f], -1))}
+
+    for i, first in enumerate(pairs):
+        for second in pairs[i + 1:]:
+            if set(first) & set(second):
+                continue
+            if len(corners(first) & corners(second)) == 1 and not edges(first) & edges(second):
+                return list(first) + list(second)
+    raise SystemExit("no two holes touch at one vertex")
+
+
+removed = touching_holes(sphere)
+holed = trimesh.Trimesh(
+    vertices=sphere.vertices, faces=np.delete(sphere.faces, removed, axis=0), process=False
+)
+holed.export(os.path.join(HERE, "trimesh-icosphere-touching-holes.ply"))
+record("trimesh-icosphere-touching-holes.ply", len(holed.vertices), holed.faces.tolist())
+
 box = trimesh.creation.box()
 with open(os.path.join(HERE, "trimesh-box.obj"), "w") as out:
     out.write(trimesh.exchange.obj.export_obj(box, include_normals=True))
