@@ -941,12 +941,25 @@ fn decimals4(x: f32) -> String {
 }
 
 /// A value as quoted in a message: shortened, so a pasted payload in the
-/// wrong place does not flood the message line.
+/// wrong place does not flood the message line, and with control, invisible
+/// and direction-changing characters escaped (`\u{202e}`), so a crafted link
+/// cannot hide or reorder what the message says.
 fn quote(value: &str) -> String {
-    match value.char_indices().nth(QUOTE_CHARS) {
-        Some((end, _)) => format!("{}…", &value[..end]),
-        None => value.to_owned(),
+    let mut quoted = String::new();
+    for (count, ch) in value.chars().enumerate() {
+        if count == QUOTE_CHARS {
+            quoted.push('…');
+            break;
+        }
+        let hidden = ch.is_control()
+            || matches!(ch, '\u{200b}'..='\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{feff}');
+        if hidden {
+            quoted.extend(ch.escape_unicode());
+        } else {
+            quoted.push(ch);
+        }
     }
+    quoted
 }
 
 /// Percent-encodes a query value. Commas, colons and slashes stay readable

@@ -207,14 +207,13 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, Failure> {
 
 fn read_text(path: &Path) -> Result<String, Failure> {
     let bytes = read_bytes(path)?;
-    String::from_utf8(bytes).map_err(|error| {
-        eprintln!(
-            "{}: byte {} is not UTF-8 text; an algorithm file is text",
-            shown(path),
-            error.utf8_error().valid_up_to()
-        );
-        Failure::Input
-    })
+    match lang::source_text(&bytes, Some(&shown(path))) {
+        Ok(text) => Ok(text.to_owned()),
+        Err(rendered) => {
+            eprint!("{rendered}");
+            Err(Failure::Input)
+        }
+    }
 }
 
 /// The format of a mesh file: by extension, by content for `-` or a name

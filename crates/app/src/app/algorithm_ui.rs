@@ -328,8 +328,9 @@ impl EdgewiseApp {
     /// Puts an opened `.alg` file in the algorithm editor and compiles it:
     /// its algorithms join the menu, or its errors are marked at their lines.
     pub(crate) fn open_algorithm_file(&mut self, name: &str, bytes: &[u8]) -> Result<(), String> {
-        let Ok(text) = std::str::from_utf8(bytes) else {
-            return Err(self.fail(format!("{name}: an algorithm file must be UTF-8 text")));
+        let text = match edgewise_core::lang::source_text(bytes, Some(name)) {
+            Ok(text) => text,
+            Err(rendered) => return Err(self.fail(rendered.trim_end().to_owned())),
         };
         let editor = &mut self.algorithms.editor;
         editor.file_name = name.to_owned();

@@ -6,6 +6,34 @@ use std::fmt;
 
 use crate::mesh::{BuildError, ConvertError, FaceRef};
 
+/// Text from a file as a message quotes it: control characters escaped (a NUL
+/// shows as `\0`), bytes that are not UTF-8 as `\xFF`, and cut at 40
+/// characters, so that no file can make a message unreadable or huge.
+pub(super) fn shown(text: &[u8]) -> String {
+    const MAX_CHARS: usize = 40;
+    let mut shown = String::new();
+    let mut chars = 0;
+    for chunk in text.utf8_chunks() {
+        for ch in chunk.valid().chars() {
+            if chars == MAX_CHARS {
+                shown.push('…');
+                return shown;
+            }
+            shown.extend(ch.escape_debug());
+            chars += 1;
+        }
+        for byte in chunk.invalid() {
+            if chars == MAX_CHARS {
+                shown.push('…');
+                return shown;
+            }
+            shown.push_str(&format!("\\x{byte:02X}"));
+            chars += 1;
+        }
+    }
+    shown
+}
+
 /// Where in a file a problem is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Location {

@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 
 use glam::Vec3;
 
-use super::error::{FormatError, Location, Problem};
+use super::error::{FormatError, Location, Problem, shown};
 use super::rows::is_decimal;
 use crate::mesh::Polygons;
 
@@ -118,17 +118,6 @@ fn for_each_line(
     Ok(())
 }
 
-/// A word from the file for a message: control characters escaped, and cut
-/// at 40 characters.
-fn text_of(word: &[u8]) -> String {
-    let text = String::from_utf8_lossy(word);
-    let mut shown: String = text.chars().take(40).flat_map(char::escape_debug).collect();
-    if text.chars().count() > 40 {
-        shown.push('…');
-    }
-    shown
-}
-
 pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError> {
     let mut positions: Vec<Vec3> = Vec::new();
     let mut faces: Vec<u32> = Vec::new();
@@ -163,7 +152,7 @@ pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError
                                 at(offset),
                                 format!(
                                     "expected a finite number for {what}, found \"{}\"",
-                                    text_of(word)
+                                    shown(word)
                                 ),
                             ));
                         }
@@ -187,7 +176,7 @@ pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError
                             at(offset),
                             format!(
                                 "expected a vertex number (v, v/vt, v//vn or v/vt/vn), found \"{}\"{what}",
-                                text_of(word)
+                                shown(word)
                             ),
                         )
                     };
@@ -263,7 +252,7 @@ pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError
                     format!(
                         "unknown statement \"{}\"; expected v, f, vt, vn, o, g, s, usemtl, \
                          mtllib or a # comment",
-                        text_of(keyword)
+                        shown(keyword)
                     ),
                 ));
             }

@@ -21,7 +21,7 @@ use std::fmt::Write as _;
 
 use glam::Vec3;
 
-use super::error::{FormatError, Location, Problem, SaveError};
+use super::error::{FormatError, Location, Problem, SaveError, shown};
 use super::rows::is_decimal;
 use crate::mesh::Polygons;
 
@@ -200,8 +200,9 @@ fn parse_header(bytes: &[u8]) -> Result<Header, FormatError> {
                     header_error(
                         number,
                         format!(
-                            "expected the number of {name} rows (0 to {}), found \"{count}\"",
-                            u32::MAX
+                            "expected the number of {name} rows (0 to {}), found \"{}\"",
+                            u32::MAX,
+                            shown(count.as_bytes())
                         ),
                     )
                 })?;
@@ -253,7 +254,8 @@ fn parse_header(bytes: &[u8]) -> Result<Header, FormatError> {
                             number,
                             format!(
                                 "expected \"property <type> <name>\" or \"property list <count type> \
-                                 <item type> <name>\", found \"{line}\""
+                                 <item type> <name>\", found \"{}\"",
+                                shown(line.as_bytes())
                             ),
                         ));
                     }
@@ -799,12 +801,9 @@ fn read_ascii(
                 let offset = words.get(index).map_or(line.len(), |&(o, _)| o);
                 Location::at(number, offset + 1)
             };
-            let word = |index: usize| {
-                words
-                    .get(index)
-                    .and_then(|(_, w)| std::str::from_utf8(w).ok())
-                    .unwrap_or("")
-            };
+            // Raw, for messages; as text (empty when not UTF-8), for parsing.
+            let raw = |index: usize| words.get(index).map_or(&b""[..], |&(_, w)| w);
+            let word = |index: usize| std::str::from_utf8(raw(index)).unwrap_or("");
             let mut next = 0;
             let mut xyz = [0.0f32; 3];
             for (p, property) in element.properties.iter().enumerate() {
@@ -836,8 +835,9 @@ fn read_ascii(
                                         at(next),
                                         format!(
                                             "expected a finite number for {} of vertex {row}, \
-                                             found \"{text}\"",
-                                            property.name
+                                             found \"{}\"",
+                                            property.name,
+                                            shown(raw(next))
                                         ),
                                     ));
                                 }
@@ -846,8 +846,10 @@ fn read_ascii(
                             return Err(FormatError::new(
                                 at(next),
                                 format!(
-                                    "expected a number for {} of {} {row}, found \"{text}\"",
-                                    property.name, element.name
+                                    "expected a number for {} of {} {row}, found \"{}\"",
+                                    property.name,
+                                    element.name,
+                                    shown(raw(next))
                                 ),
                             ));
                         }
@@ -864,7 +866,7 @@ fn read_ascii(
                                 format!(
                                     "expected the item count of list {}, found \"{}\"",
                                     property.name,
-                                    word(count_at)
+                                    shown(raw(count_at))
                                 ),
                             )
                         })?;
@@ -888,7 +890,7 @@ fn read_ascii(
                                         at(k),
                                         format!(
                                             "expected a vertex number (0 or more), found \"{}\"",
-                                            word(k)
+                                            shown(raw(k))
                                         ),
                                     )
                                 })?;

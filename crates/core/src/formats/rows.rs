@@ -8,7 +8,7 @@
 
 use std::fmt::Write as _;
 
-use super::error::{FormatError, Location, Problem};
+use super::error::{FormatError, Location, Problem, shown};
 use crate::mesh::{Element, Field, Issue};
 
 /// The most syntax problems reported before a table file is refused; past
@@ -111,7 +111,12 @@ impl<'a> Rows<'a> {
 
     /// The current row as it reads, shortened for messages.
     pub fn quoted(&self) -> String {
-        let words: Vec<&str> = self.tokens.iter().take(4).map(|t| t.text).collect();
+        let words: Vec<String> = self
+            .tokens
+            .iter()
+            .take(4)
+            .map(|t| shown(t.text.as_bytes()))
+            .collect();
         let mut text = words.join(" ");
         if self.tokens.len() > 4 {
             text.push_str(" …");
@@ -262,7 +267,7 @@ pub(super) fn section<'a>(
                     "expected the number of {} (0 to {}), found \"{}\"",
                     section.name,
                     u32::MAX,
-                    token.text
+                    shown(token.text.as_bytes())
                 ),
             )
         })?,
@@ -322,7 +327,8 @@ pub(super) fn section<'a>(
             problems.push(
                 rows.at(0),
                 format!(
-                    "expected the id {index} here, found \"{id}\"; rows are numbered from 0 in order"
+                    "expected the id {index} here, found \"{}\"; rows are numbered from 0 in order",
+                    shown(id.as_bytes())
                 ),
             );
             continue;
@@ -361,7 +367,7 @@ pub(super) fn coordinate(
                 Location::at(line, token.column),
                 format!(
                     "expected a finite number for {name}, found \"{}\"",
-                    token.text
+                    shown(token.text.as_bytes())
                 ),
             );
             0.0
@@ -402,7 +408,7 @@ pub(super) fn reference(
                 Location::at(line, token.column),
                 format!(
                     "expected {what} number{or_none} for {name}, found \"{}\"",
-                    token.text
+                    shown(token.text.as_bytes())
                 ),
             );
             None

@@ -210,7 +210,13 @@ fn caret_layout(line: &str, column: u32, span: Span, source: &str) -> (String, u
             shown.push_str("    ");
             width += 4;
         } else {
-            shown.push(ch);
+            // Other control characters (a NUL in a pasted file) as their
+            // visible pictures, one column wide: ␀ ␁ … ␟.
+            shown.push(if ch < ' ' {
+                char::from_u32(0x2400 + u32::from(ch)).unwrap_or('?')
+            } else {
+                ch
+            });
             width += 1;
         }
     }

@@ -112,14 +112,7 @@ pub const MAX_SOURCE_BYTES: usize = 1 << 20;
 /// Parses, checks and compiles every algorithm in `source`.
 pub fn compile(source: &str) -> Result<Program, Vec<Diagnostic>> {
     if source.len() > MAX_SOURCE_BYTES {
-        return Err(vec![Diagnostic::error(
-            Span::new(0, 0),
-            format!(
-                "this text is {} bytes; algorithm files may hold at most {MAX_SOURCE_BYTES} \
-                 bytes (1 MiB)",
-                source.len()
-            ),
-        )]);
+        return Err(vec![size_error(source.len())]);
     }
     let (file, mut diagnostics) = parser::parse(source);
     let scopes = checker::check_file(&file, source, &mut diagnostics);
@@ -152,6 +145,35 @@ pub fn compile(source: &str) -> Result<Program, Vec<Diagnostic>> {
         source: shared,
         algorithms,
     })
+}
+
+/// An algorithm file's bytes as text, or the rendered error that names where
+/// the first byte that is not UTF-8 is (`file:line:column`). Larger files
+/// than [`MAX_SOURCE_BYTES`] are refused before decoding.
+pub fn source_text<'b>(bytes: &'b [u8], file: Option<&str>) -> Result<&'b str, String> {
+    if bytes.len() > MAX_SOURCE_BYTES {
+        return Err(render_all(&[size_error(bytes.len())], "", file));
+    }
+    std::str::from_utf8(bytes).map_err(|error| {
+        let at = error.valid_up_to();
+        let valid = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+        let byte = bytes.get(at).copied().unwrap_or_default();
+        let diagnostic = Diagnostic::error(
+            Span::new(at, at),
+            format!("byte {at} (\\x{byte:02X}) is not UTF-8 text; algorithm files are UTF-8 text"),
+        );
+        render_all(&[diagnostic], valid, file)
+    })
+}
+
+fn size_error(size: usize) -> Diagnostic {
+    Diagnostic::error(
+        Span::new(0, 0),
+        format!(
+            "this text is {size} bytes; algorithm files may hold at most {MAX_SOURCE_BYTES} \
+             bytes (1 MiB)"
+        ),
+    )
 }
 
 /// Compiles `source` and renders any errors the way `edgewise check-alg`

@@ -1,0 +1,136 @@
+//! Hostile course links, applied to the app: an algorithm of 100,000 terms,
+//! one nested 100,000 deep, payloads past their limits, and every parameter
+//! malformed at once. The app names each problem, keeps what works, and the
+//! default view still answers. Each case's messages are in
+//! tests/hostile/link-NAME.expected (`EDGEWISE_BLESS=1` rewrites them).
+
+mod support;
+
+use std::path::PathBuf;
+
+use edgewise_app::{
+    EdgewiseApp,
+    course_link::{self, CourseLink, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS},
+    selection::{ElementKind, ElementRef},
+};
+use egui_kittest::Harness;
+
+fn expected_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/hostile")
+        .join(format!("link-{name}.expected"))
+}
+
+/// Applies `?query#fragment` to a fresh app, as a page load does.
+fn open(query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>, Vec<String>) {
+    let mut harness = support::harness();
+    let (link, messages) = CourseLink::parse(query, fragment);
+    let messages = harness.state_mut().apply_course_link(&link, messages, None);
+    harness.run();
+    (harness, messages)
+}
+
+/// Compares the messages with the case's golden file, messages cut at 300
+/// characters each (a rendered error quotes a window of its line).
+fn assert_messages(name: &str, messages: &[String]) {
+    let actual: String = messages
+        .iter()
+        .map(|m| {
+            let cut: String = m.chars().take(300).collect();
+            format!("{cut}\n")
+        })
+        .collect();
+    let path = expected_path(name);
+    if std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0") {
+        std::fs::write(&path, &actual).expect("writable");
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_default();
+    assert_eq!(actual, expected, "{name} (EDGEWISE_BLESS=1 rewrites it)");
+}
+
+/// The view works after the link: the sample is open and selecting works.
+fn assert_default_view_works(harness: &mut Harness<'static, EdgewiseApp>) {
+    let state = harness.state().state();
+    assert_eq!(state.mesh.as_deref(), Some("tetrahedron.wtb"));
+    let edge = ElementRef {
+        kind: ElementKind::Edge,
+        id: 2,
+    };
+    harness
+        .state_mut()
+        .select(Some(edge))
+        .expect("selecting still works");
+    harness.run();
+    assert_eq!(harness.state().state().selection, Some(edge));
+    harness
+        .state_mut()
+        .run_algorithm("vertexAdjacentEdge", &[])
+        .expect("the library still runs");
+}
+
+#[test]
+fn an_algorithm_of_100000_terms_is_named_and_the_view_still_works() {
+    let source = format!(
+        "algorithm long(n : Integer) : WingedEdge;\nbegin\n  n := n{};\nend\n",
+        " + 1".repeat(100_000)
+    );
+    let fragment = format!("#alg={}", course_link::encode_payload(&source));
+    let (mut harness, messages) = open("?sample=tetrahedron&algorithm=long&args=n:1", &fragment);
+    assert_messages("alg-100000-terms", &messages);
+    assert!(
+        messages[0].contains(":3:402: error: this expression is too long"),
+        "{messages:?}"
+    );
+    assert!(harness.state().state().trace.is_none());
+    assert_default_view_works(&mut harness);
+}
+
+#[test]
+fn an_algorithm_nested_100000_deep_is_named_and_the_view_still_works() {
+    let source = format!(
+        "algorithm deep(b : Boolean) : WingedEdge;\nbegin\n  b := {}b;\nend\n",
+        "not ".repeat(100_000)
+    );
+    let fragment = format!("#alg={}", course_link::encode_payload(&source));
+    let (mut harness, messages) = open("?sample=tetrahedron&algorithm=deep", &fragment);
+    assert_messages("alg-nested-100000-deep", &messages);
+    assert!(
+        messages[0].contains("this is nested too deeply (more than 100 levels)"),
+        "{messages:?}"
+    );
+    assert_default_view_works(&mut harness);
+}
+
+#[test]
+fn payloads_past_their_limits_are_refused_with_their_sizes() {
+    // Highly compressible text that inflates past the limit: a small link.
+    let bomb = "v 0 0 0\n".repeat(MAX_INFLATED_BYTES / 8 + 1);
+    let payload = course_link::encode_payload(&bomb);
+    assert!(payload.len() < 64 * 1024, "the bomb's link is {} characters", payload.len());
+    let (mut harness, messages) = open("?sample=tetrahedron", &format!("#mesh={payload}"));
+    assert_messages("payload-inflates-past-limit", &messages);
+    assert!(messages[0].contains("8 MiB"), "{messages:?}");
+    assert_default_view_works(&mut harness);
+
+    let long = "A".repeat(MAX_PAYLOAD_CHARS + 1);
+    let (mut harness, messages) = open("?sample=tetrahedron", &format!("#alg={long}"));
+    assert_messages("payload-too-long", &messages);
+    assert!(messages[0].contains("1 MiB"), "{messages:?}");
+    assert_default_view_works(&mut harness);
+}
+
+#[test]
+fn every_parameter_malformed_at_once() {
+    let query = "?sample=tetrahedron&sample=%00%ff&structure=round&mesh=..%2f..%2fetc%2fpasswd\
+                 &algorithm=%E2%80%AE&args=v:NaN,v:1e999,:,%00:1&step=-0&select=vertex:-1\
+                 &camera=NaN,1,2&ids=sometimes&axes=2&orientation=yes!&solid=%20&meshScale=1e308\
+                 &labelScale=-Infinity&theme=%3Cscript%3E&embed=2&tables=x&present=maybe\
+                 &panels=algorithm,algorithm,nothing&colors=lookup:zzzzzz,nobody:000000\
+                 &codeSize=1000000&%ff%fe=1&=&&&";
+    let fragment = "#mesh=%%%&format=stl&alg=!!!&unknown=1";
+    let (mut harness, messages) = open(query, fragment);
+    assert!(messages.len() >= 20, "{messages:#?}");
+    assert_messages("every-parameter-malformed", &messages);
+    assert_default_view_works(&mut harness);
+}
