@@ -101,6 +101,47 @@ fn info_lists_warnings_with_their_lines() {
     assert!(text.contains("components:           2\n"), "{text}");
 }
 
+/// Two holes touching at vertex 139: the vertex is split, with a warning,
+/// and the mesh loads.
+const TOUCHING_HOLES: &str = "tests/external/trimesh-icosphere-touching-holes.ply";
+
+#[test]
+fn info_reports_a_split_vertex() {
+    let output = run(&["info", TOUCHING_HOLES]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(text.contains("vertices:             163\n"), "{text}");
+    assert!(text.contains("boundary loops:       1\n"), "{text}");
+    assert!(
+        text.contains(&format!(
+            "warnings:             1\n  {TOUCHING_HOLES}: vertex 139 joined 2 fans of faces; \
+             split into 139 and 162\n"
+        )),
+        "{text}"
+    );
+}
+
+#[test]
+fn check_accepts_a_split_vertex_with_a_warning() {
+    for structure in ["winged", "half"] {
+        let output = run(&["check", TOUCHING_HOLES, "--structure", structure]);
+        assert_eq!(code(&output), 0, "{}", stderr(&output));
+        assert_eq!(
+            stderr(&output),
+            format!(
+                "{TOUCHING_HOLES}: warning: vertex 139 joined 2 fans of faces; split into 139 and 162\n"
+            )
+        );
+        assert!(
+            stdout(&output).starts_with(&format!(
+                "{TOUCHING_HOLES}: ok (163 vertices, 478 edges, 316 faces; "
+            )),
+            "{}",
+            stdout(&output)
+        );
+    }
+}
+
 #[test]
 fn standard_input_is_recognised_by_content() {
     let wtb = std::fs::read(root().join("meshes/open-square.wtb")).expect("sample");
