@@ -107,7 +107,11 @@ fn payloads_past_their_limits_are_refused_with_their_sizes() {
     // Highly compressible text that inflates past the limit: a small link.
     let bomb = "v 0 0 0\n".repeat(MAX_INFLATED_BYTES / 8 + 1);
     let payload = course_link::encode_payload(&bomb);
-    assert!(payload.len() < 64 * 1024, "the bomb's link is {} characters", payload.len());
+    assert!(
+        payload.len() < 64 * 1024,
+        "the bomb's link is {} characters",
+        payload.len()
+    );
     let (mut harness, messages) = open("?sample=tetrahedron", &format!("#mesh={payload}"));
     assert_messages("payload-inflates-past-limit", &messages);
     assert!(messages[0].contains("8 MiB"), "{messages:?}");

@@ -16,12 +16,15 @@ fn corpus_dir() -> PathBuf {
 }
 
 /// The tetrahedron every generated mesh case starts from.
-const TETRAHEDRON_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+const TETRAHEDRON_OBJ: &str =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
 
 const MEGABYTE: usize = 1 << 20;
 
 fn sample(name: &str) -> String {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../meshes").join(name);
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../meshes")
+        .join(name);
     std::fs::read_to_string(path).expect("the sample exists")
 }
 
@@ -53,31 +56,41 @@ fn generated() -> Vec<(&'static str, Vec<u8>)> {
         ),
         (
             "ply-1mb-comment-line.ply",
-            ply.replacen("format ascii 1.0\n", &format!("format ascii 1.0\ncomment {long_word}\n"), 1),
+            ply.replacen(
+                "format ascii 1.0\n",
+                &format!("format ascii 1.0\ncomment {long_word}\n"),
+                1,
+            ),
         ),
         (
             "ply-1mb-property-line.ply",
-            ply.replacen("property float z", &format!("property float z {long_word}"), 1),
+            ply.replacen(
+                "property float z",
+                &format!("property float z {long_word}"),
+                1,
+            ),
         ),
-        (
-            "wtb-1mb-comment-line.wtb",
-            format!("{comment_line}{wtb}"),
-        ),
+        ("wtb-1mb-comment-line.wtb", format!("{comment_line}{wtb}")),
         (
             "wtb-1mb-field.wtb",
             wtb.replacen("vertices 4", &format!("vertices {long_word}"), 1),
         ),
-        (
-            "htb-1mb-comment-line.htb",
-            format!("{comment_line}{htb}"),
-        ),
+        ("htb-1mb-comment-line.htb", format!("{comment_line}{htb}")),
         (
             "htb-1mb-row.htb",
-            htb.replacen("faces 6", &format!("faces 6{}", " 0".repeat(MEGABYTE / 2)), 1),
+            htb.replacen(
+                "faces 6",
+                &format!("faces 6{}", " 0".repeat(MEGABYTE / 2)),
+                1,
+            ),
         ),
         (
             "alg-1mb-comment-line.alg",
-            format!("// {}\n{}", "x".repeat(MEGABYTE - 100), algorithm("v : Vertex", "mark v;")),
+            format!(
+                "// {}\n{}",
+                "x".repeat(MEGABYTE - 100),
+                algorithm("v : Vertex", "mark v;")
+            ),
         ),
         (
             "alg-100000-additions.alg",
@@ -85,19 +98,31 @@ fn generated() -> Vec<(&'static str, Vec<u8>)> {
         ),
         (
             "alg-100000-ands.alg",
-            algorithm("b : Boolean", &format!("b := b{};", " and b".repeat(100_000))),
+            algorithm(
+                "b : Boolean",
+                &format!("b := b{};", " and b".repeat(100_000)),
+            ),
         ),
         (
             "alg-100000-ors.alg",
-            algorithm("b : Boolean", &format!("b := b{};", " or b".repeat(100_000))),
+            algorithm(
+                "b : Boolean",
+                &format!("b := b{};", " or b".repeat(100_000)),
+            ),
         ),
         (
             "alg-40000-lookups.alg",
-            algorithm("v : Vertex", &format!("v := v{};", ".incidentEdge.endVertex".repeat(20_000))),
+            algorithm(
+                "v : Vertex",
+                &format!("v := v{};", ".incidentEdge.endVertex".repeat(20_000)),
+            ),
         ),
         (
             "alg-100000-parentheses.alg",
-            algorithm("n : Integer", &format!("n := {}1{};", "(".repeat(100_000), ")".repeat(100_000))),
+            algorithm(
+                "n : Integer",
+                &format!("n := {}1{};", "(".repeat(100_000), ")".repeat(100_000)),
+            ),
         ),
         (
             "alg-100000-nots.alg",
@@ -105,7 +130,14 @@ fn generated() -> Vec<(&'static str, Vec<u8>)> {
         ),
         (
             "alg-50000-nested-ifs.alg",
-            algorithm("b : Boolean", &format!("{}b := true;{}", "if b then ".repeat(50_000), " end".repeat(50_000))),
+            algorithm(
+                "b : Boolean",
+                &format!(
+                    "{}b := true;{}",
+                    "if b then ".repeat(50_000),
+                    " end".repeat(50_000)
+                ),
+            ),
         ),
         (
             "alg-50000-errors.alg",
@@ -159,7 +191,8 @@ fn committed(dir: &Path) -> Vec<(String, Vec<u8>)> {
         .map(|entry| entry.expect("entry").path())
         .filter_map(|path| {
             let name = path.file_name()?.to_string_lossy().into_owned();
-            let skip = name.ends_with(".expected") || name == "README.md" || name.ends_with(".link");
+            let skip =
+                name.ends_with(".expected") || name == "README.md" || name.ends_with(".link");
             (!skip).then(|| (name, std::fs::read(&path).expect("readable")))
         })
         .collect();
@@ -172,10 +205,16 @@ fn every_hostile_input_gets_its_expected_message() {
     let dir = corpus_dir();
     let bless = std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0");
     let files = committed(&dir);
-    assert!(files.len() >= 20, "the corpus has only {} files", files.len());
-    let cases = files
-        .into_iter()
-        .chain(generated().into_iter().map(|(name, bytes)| (name.to_owned(), bytes)));
+    assert!(
+        files.len() >= 20,
+        "the corpus has only {} files",
+        files.len()
+    );
+    let cases = files.into_iter().chain(
+        generated()
+            .into_iter()
+            .map(|(name, bytes)| (name.to_owned(), bytes)),
+    );
     let mut failures = Vec::new();
     let mut count = 0;
     for (name, bytes) in cases {
@@ -189,7 +228,9 @@ fn every_hostile_input_gets_its_expected_message() {
             .expect("thread starts")
             .join()
             .unwrap_or_else(|_| format!("{name}: PANICKED\n"));
-        let stem = name.rsplit_once('.').map_or(name.as_str(), |(stem, _)| stem);
+        let stem = name
+            .rsplit_once('.')
+            .map_or(name.as_str(), |(stem, _)| stem);
         let expected_path = dir.join(format!("{stem}.expected"));
         if bless {
             std::fs::write(&expected_path, &actual).expect("writable");
@@ -197,7 +238,9 @@ fn every_hostile_input_gets_its_expected_message() {
         }
         let expected = std::fs::read_to_string(&expected_path).unwrap_or_default();
         if actual != expected {
-            failures.push(format!("{name}\n--- expected\n{expected}--- actual\n{actual}"));
+            failures.push(format!(
+                "{name}\n--- expected\n{expected}--- actual\n{actual}"
+            ));
         }
     }
     assert!(count >= 40, "only {count} cases ran");
@@ -213,6 +256,10 @@ fn every_hostile_input_gets_its_expected_message() {
 fn no_hostile_message_grows_with_its_input() {
     for (name, bytes) in generated() {
         let message = outcome(name, &bytes);
-        assert!(message.len() < 32_000, "{name}: {} bytes of message", message.len());
+        assert!(
+            message.len() < 32_000,
+            "{name}: {} bytes of message",
+            message.len()
+        );
     }
 }
