@@ -13,7 +13,7 @@ use crate::{
     algorithm::{Algorithms, Run},
     document::Document,
     files::FileState,
-    obj_editor::{EDITOR_FILE, ObjEditor},
+    obj_editor::{EDITOR_FILE, MAX_EDITOR_BYTES, ObjEditor},
     paint::Paint,
     samples::{self, SampleData},
     selection::{ElementKind, ElementRef, Role},
@@ -285,8 +285,17 @@ impl EdgewiseApp {
             && let Some(document) = &self.document
             && let Ok(bytes) = formats::save(document.mesh(), Format::Obj, &SaveOptions::default())
         {
-            self.obj_editor
-                .set_text(String::from_utf8_lossy(&bytes).into_owned());
+            if bytes.len() > MAX_EDITOR_BYTES {
+                self.obj_editor.refused = Some(format!(
+                    "{} is {} bytes as OBJ, too large to edit here: this editor holds at most \
+                     {MAX_EDITOR_BYTES} bytes",
+                    document.name,
+                    bytes.len()
+                ));
+            } else {
+                self.obj_editor
+                    .set_text(String::from_utf8_lossy(&bytes).into_owned());
+            }
         }
     }
 

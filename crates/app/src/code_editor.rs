@@ -38,6 +38,15 @@ pub struct CodeEditor<'a> {
     highlighter: Option<&'a Highlighter>,
     hint: &'a str,
     rows: usize,
+    max_bytes: usize,
+}
+
+/// What [`CodeEditor::show`] gives back.
+pub struct EditorOutput {
+    /// The text field's response: `changed()` after an edit.
+    pub response: egui::Response,
+    /// Why typed or pasted text was refused this frame, if it was.
+    pub refused: Option<String>,
 }
 
 /// The gutter's padding either side of the numbers.
@@ -52,7 +61,16 @@ impl<'a> CodeEditor<'a> {
             highlighter: None,
             hint: "",
             rows: 20,
+            max_bytes: usize::MAX,
         }
+    }
+
+    /// Refuses typed or pasted text that would make the text longer than
+    /// `max_bytes`, before the text field sees it: a huge paste would
+    /// otherwise be laid out, and rebuilt, in full.
+    pub fn max_bytes(mut self, max_bytes: usize) -> Self {
+        self.max_bytes = max_bytes;
+        self
     }
 
     pub fn diagnostics(mut self, diagnostics: &'a [Diagnostic]) -> Self {
@@ -75,13 +93,17 @@ impl<'a> CodeEditor<'a> {
         self
     }
 
-    /// Draws the editor (scrolling inside the space it is given) and returns
-    /// the text field's response: `changed()` after an edit.
-    pub fn show(self, ui: &mut egui::Ui) -> egui::Response {
-        egui::ScrollArea::vertical()
+    /// Draws the editor (scrolling inside the space it is given).
+    pub fn show(self, ui: &mut egui::Ui) -> EditorOutput {
+        let field = ui.scope_id().with(("code_editor_field", self.id_salt));
+        let refused = refuse_oversized_input(ui, field, self.text.len(), self.max_bytes);
+        let response = egui::ScrollArea::vertical()
             .id_salt(self.id_salt)
             .show(ui, |ui| self.contents_ui(ui))
-            .inner
+            .inner;
+        // The field's id is only known once it is drawn: kept for next frame.
+        ui.data_mut(|d| d.insert_temp(field, response.id));
+        EditorOutput { response, refused }
     }
 
     fn contents_ui(self, ui: &mut egui::Ui) -> egui::Response {
@@ -92,6 +114,7 @@ impl<'a> CodeEditor<'a> {
             highlighter,
             hint,
             rows,
+            max_bytes: _,
         } = self;
         let code_font = egui::TextStyle::Monospace.resolve(ui.style());
         let message_font = FontId::proportional(code_font.size);
@@ -352,6 +375,36 @@ fn field_at(line: &str, column: usize) -> Option<Range<usize>> {
         .take_while(|c| !c.is_whitespace())
         .count();
     Some(start..start + len)
+}
+
+/// Drops this frame's typed and pasted text when the field whose id was kept
+/// under `field` has the focus and the text would grow past `max_bytes`.
+fn refuse_oversized_input(
+    ui: &egui::Ui,
+    field: egui::Id,
+    len: usize,
+    max_bytes: usize,
+) -> Option<String> {
+    let id = ui.data(|d| d.get_temp::<egui::Id>(field))?;
+    if !ui.memory(|m| m.has_focus(id)) {
+        return None;
+    }
+    ui.input_mut(|input| {
+        let mut refused = None;
+        input.events.retain(|event| match event {
+            egui::Event::Paste(added) | egui::Event::Text(added)
+                if len + added.len() > max_bytes =>
+            {
+                refused = Some(format!(
+                    "{} bytes were not added: this editor holds at most {max_bytes} bytes",
+                    added.len()
+                ));
+                false
+            }
+            _ => true,
+        });
+        refused
+    })
 }
 
 /// Messages joined per line, in line order.

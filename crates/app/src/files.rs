@@ -37,6 +37,20 @@ pub struct FileState {
     /// Where the last native save went, shown in the Save as… menu.
     #[cfg(not(target_arch = "wasm32"))]
     saved: Option<String>,
+    /// A large file, opened on the frame after the one that shows it is
+    /// being opened: reading it blocks the page, so "Opening…" paints first.
+    pub(crate) opening: Option<PendingFile>,
+    /// What else is being opened (a large `loadMesh` text), for the overlay.
+    pub(crate) busy: Option<String>,
+}
+
+/// Files larger than this are announced with an overlay before they are
+/// read, since reading and drawing them can take seconds in a browser.
+pub const ANNOUNCE_BYTES: usize = 2 << 20;
+
+/// "Opening torus.obj (23.4 MB)…".
+pub fn opening_label(name: &str, bytes: usize) -> String {
+    format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6)
 }
 
 /// Whether a file holds algorithms (`.alg`) rather than a mesh.
@@ -207,6 +221,10 @@ impl EdgewiseApp {
     /// Takes files dropped on the window this frame (the first one, if
     /// several) and, in the browser, files that finished reading.
     pub(crate) fn receive_files(&mut self, ctx: &egui::Context) {
+        if let Some(file) = self.files.opening.take() {
+            // open_file reports its own failures.
+            self.open_file(&file.name, file.bytes).ok();
+        }
         let dropped = ctx.input(|i| i.raw.dropped_files.first().cloned());
         #[cfg(target_arch = "wasm32")]
         {
@@ -215,9 +233,8 @@ impl EdgewiseApp {
             }
             let arrived: Vec<_> = self.files.inbox.borrow_mut().drain(..).collect();
             for file in arrived {
-                // open_file reports its own failures.
                 if let Ok(file) = file.map_err(|message| self.fail(message)) {
-                    self.open_file(&file.name, file.bytes).ok();
+                    self.open_or_announce(ctx, file);
                 }
             }
         }
@@ -228,7 +245,7 @@ impl EdgewiseApp {
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
-            self.open_read_file(&name, file.bytes());
+            self.open_read_file(ctx, &name, file.bytes());
         }
     }
 
@@ -300,27 +317,71 @@ impl EdgewiseApp {
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
-            self.open_read_file(&name, std::fs::read(&path).map_err(|err| err.to_string()));
+            let bytes = std::fs::read(&path).map_err(|err| err.to_string());
+            self.open_read_file(ui.ctx(), &name, bytes);
         }
     }
 
     /// Opens a file that was read natively, or reports why it could not be.
     #[cfg(not(target_arch = "wasm32"))]
-    fn open_read_file(&mut self, name: &str, bytes: Result<Vec<u8>, String>) {
+    fn open_read_file(&mut self, ctx: &egui::Context, name: &str, bytes: Result<Vec<u8>, String>) {
         match bytes {
-            Ok(bytes) => {
-                // open_file reports its own failures.
-                self.open_file(name, bytes).ok();
-            }
+            Ok(bytes) => self.open_or_announce(
+                ctx,
+                PendingFile {
+                    name: name.to_owned(),
+                    bytes,
+                },
+            ),
             Err(err) => {
                 self.fail(format!("{name}: cannot read the file: {err}"));
             }
         }
     }
 
-    /// The structure dialog, and a hint while files are dragged over the window.
+    /// Shows (or, with `None`, hides) what is being opened outside the
+    /// file inbox: a large text given to `loadMesh`, a large linked file.
+    #[cfg(target_arch = "wasm32")]
+    pub(crate) fn set_busy(&mut self, label: Option<String>) {
+        self.files.busy = label;
+        self.request_repaint();
+    }
+
+    /// Opens a small file now; a large one on the next frame, after this
+    /// one has shown that it is being opened.
+    fn open_or_announce(&mut self, ctx: &egui::Context, file: PendingFile) {
+        if file.bytes.len() > ANNOUNCE_BYTES && self.files.opening.is_none() {
+            self.files.opening = Some(file);
+            ctx.request_repaint();
+        } else {
+            // open_file reports its own failures.
+            self.open_file(&file.name, file.bytes).ok();
+        }
+    }
+
+    /// The structure dialog, a hint while files are dragged over the window,
+    /// and what is being opened while a large file is read.
     pub(crate) fn files_overlay_ui(&mut self, ctx: &egui::Context) {
         self.structure_dialog_ui(ctx);
+        let opening = self
+            .files
+            .opening
+            .as_ref()
+            .map(|file| opening_label(&file.name, file.bytes.len()));
+        if let Some(label) = opening.or_else(|| self.files.busy.clone()) {
+            egui::Area::new(egui::Id::unique("opening"))
+                .order(egui::Order::Foreground)
+                .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+                .show(ctx, |ui| {
+                    egui::Frame::popup(ui.style()).show(ui, |ui| {
+                        ui.horizontal(|ui| {
+                            ui.spinner();
+                            ui.heading(label);
+                        });
+                        ui.label("The page may pause while the mesh is read and drawn.");
+                    });
+                });
+        }
         if ctx.input(|i| i.raw.hovered_files.is_empty()) {
             return;
         }

@@ -12,6 +12,10 @@ use crate::code_editor::{CodeEditor, Diagnostic};
 /// How long typing must pause before the text is rebuilt.
 const DEBOUNCE: Duration = Duration::from_millis(350);
 
+/// The most text the editor holds: it lays out and rebuilds its whole text,
+/// so larger meshes are opened as files instead.
+pub const MAX_EDITOR_BYTES: usize = 1 << 20;
+
 /// The name loads from the editor get, so messages read `editor.obj:5: …`.
 pub const EDITOR_FILE: &str = "editor.obj";
 
@@ -25,6 +29,8 @@ pub struct ObjEditor {
     pub diagnostics: Vec<Diagnostic>,
     /// Problems of the last failed build without a line (the mesh as a whole).
     pub file_problems: Vec<String>,
+    /// Why the last typed or pasted text was refused (it was too large).
+    pub refused: Option<String>,
 }
 
 impl ObjEditor {
@@ -66,12 +72,20 @@ impl ObjEditor {
         if self.has_error() {
             ui.weak("The last good mesh stays on screen.");
         }
-        let response = CodeEditor::new("obj_editor", &mut self.text)
+        if let Some(refused) = &self.refused {
+            ui.colored_label(ui.visuals().error_fg_color, refused);
+        }
+        let output = CodeEditor::new("obj_editor", &mut self.text)
             .diagnostics(&self.diagnostics)
             .hint_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3")
+            .max_bytes(MAX_EDITOR_BYTES)
             .show(ui);
-        if response.changed() {
+        if let Some(refused) = output.refused {
+            self.refused = Some(format!("{refused}; open larger meshes with Open mesh…"));
+        }
+        if output.response.changed() {
             self.pending_since = Some(now);
+            self.refused = None;
         }
         let since = self.pending_since?;
         let wait = DEBOUNCE.as_secs_f64() - (now - since);

@@ -7,12 +7,15 @@
 
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
-use edgewise_core::mesh::Structure;
+use edgewise_core::{formats::MAX_FILE_BYTES, lang::MAX_SOURCE_BYTES, mesh::Structure};
+
+/// The longest name, file name or option value the API takes.
+const MAX_NAME_CHARS: usize = 256;
 
 use crate::{
     Argument, EdgewiseApp, FetchedMesh,
     course_link::{CourseLink, MeshSource},
-    files::{SaveFormat, SavedFile},
+    files::{ANNOUNCE_BYTES, SaveFormat, SavedFile, opening_label},
     selection::{ElementKind, ElementRef},
 };
 
@@ -100,7 +103,20 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
         }),
         _ => None,
     };
+    // A large fetched file: say so, and let that paint before reading it.
+    if let Some(FetchedMesh {
+        name,
+        bytes: Ok(bytes),
+    }) = &fetched
+        && bytes.len() > ANNOUNCE_BYTES
+    {
+        let label = opening_label(name, bytes.len());
+        if with_app(runner, |app| app.set_busy(Some(label))).is_ok() {
+            after_a_paint().await;
+        }
+    }
     let applied = with_app(runner, |app| {
+        app.set_busy(None);
         app.apply_course_link(&link, messages, fetched)
     });
     if let Err(err) = applied {
@@ -108,7 +124,9 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
     }
 }
 
-/// Reads a same-site file, within the size the loaders accept.
+/// Reads a same-site file, refusing one larger than the loaders accept
+/// before its body is read: by its `Content-Length`, or, when the server
+/// sends none, as soon as the bytes read pass the limit.
 async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
     let window = web_sys::window().ok_or("no window")?;
     let response = wasm_bindgen_futures::JsFuture::from(window.fetch_with_str(path))
@@ -123,24 +141,52 @@ async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
             response.status_text()
         ));
     }
-    let buffer = wasm_bindgen_futures::JsFuture::from(
-        response.array_buffer().map_err(|err| js_error_text(&err))?,
-    )
-    .await
-    .map_err(|err| js_error_text(&err))?;
-    let bytes = js_sys::Uint8Array::new(&buffer).to_vec();
-    if bytes.len() > edgewise_core::formats::MAX_FILE_BYTES {
-        return Err(format!(
-            "the file is {} bytes; Edgewise reads files of at most {} bytes",
-            bytes.len(),
-            edgewise_core::formats::MAX_FILE_BYTES
-        ));
+    let too_large = |size: String| {
+        format!("the file is {size} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes")
+    };
+    let announced = response
+        .headers()
+        .get("content-length")
+        .ok()
+        .flatten()
+        .and_then(|length| length.trim().parse::<u64>().ok());
+    if let Some(length) = announced
+        && length > MAX_FILE_BYTES as u64
+    {
+        return Err(too_large(length.to_string()));
     }
-    Ok(bytes)
+    let Some(body) = response.body() else {
+        return Ok(Vec::new());
+    };
+    let reader = body
+        .get_reader()
+        .dyn_into::<web_sys::ReadableStreamDefaultReader>()
+        .map_err(|_| "the response cannot be read".to_owned())?;
+    let mut bytes = Vec::new();
+    loop {
+        let chunk = wasm_bindgen_futures::JsFuture::from(reader.read())
+            .await
+            .map_err(|err| format!("cannot read it: {}", js_error_text(&err)))?;
+        let done = js_sys::Reflect::get(&chunk, &"done".into()).map_or(true, |d| d.is_truthy());
+        if done {
+            return Ok(bytes);
+        }
+        let value = js_sys::Reflect::get(&chunk, &"value".into()).unwrap_or(JsValue::UNDEFINED);
+        let part = js_sys::Uint8Array::new(&value);
+        if bytes.len() + part.length() as usize > MAX_FILE_BYTES {
+            // Stops the download; its outcome no longer matters.
+            let _cancelled = reader.cancel();
+            return Err(too_large(format!("more than {MAX_FILE_BYTES}")));
+        }
+        bytes.extend(part.to_vec());
+    }
 }
 
-/// Defines `window.edgewise`. Commands return a Promise that resolves to
-/// null on success or to the error message, as the API documents.
+/// Defines `window.edgewise`. Queries (`state`, `algorithms`, `shareUrl`)
+/// return their value. Commands return a Promise that resolves when done
+/// (to `null`, or to what the command gives) and rejects with an `Error`
+/// whose message says what went wrong: a bad argument names the command, the
+/// argument and what was expected, before anything is read or changed.
 fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     let window = web_sys::window().ok_or("no window")?;
     let api = js_sys::Object::new();
@@ -160,22 +206,52 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     let r = runner.clone();
     let load_mesh = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
         move |text: JsValue, options: JsValue| {
-            let result = (|| {
-                let text = text
-                    .as_string()
-                    .ok_or("loadMesh(text, options): text must be a string")?;
-                let format = option_string(&options, "format")?;
-                let structure = structure_option(&options)?;
+            let call = "loadMesh(text, options)";
+            let checked = (|| {
+                let text = text_argument(call, "text", &text, MAX_FILE_BYTES)?;
+                check_options(call, &options, &["format", "structure"])?;
+                let format = option_string(call, &options, "format")?;
+                if let Some(format) = &format
+                    && edgewise_core::formats::Format::from_name(&format!("x.{format}")).is_none()
+                {
+                    return Err(format!(
+                        "{call}: options.format must be 'obj', 'ply', 'wtb' or 'htb', not '{}'",
+                        shown(format)
+                    ));
+                }
+                let structure = structure_option(call, &options)?;
                 // Without a format the content decides (a pasted file has no name).
                 let name = format.map_or_else(|| "pasted".to_owned(), |f| format!("pasted.{f}"));
-                with_app(&r, |app| {
-                    let result = app.load_mesh(text.as_bytes(), &name, structure);
-                    app.request_repaint();
-                    result
-                })
-                .map_err(|err| js_error_text(&err))?
+                Ok((text, name, structure))
             })();
-            settle(result)
+            let (text, name, structure) = match checked {
+                Ok(checked) => checked,
+                Err(message) => return settle(Err(message)),
+            };
+            if text.len() <= ANNOUNCE_BYTES {
+                return settle(command(&r, |app| {
+                    app.load_mesh(text.as_bytes(), &name, structure)
+                }));
+            }
+            // A large text: show that it is being opened, and open it once
+            // that has been painted, since reading it blocks the page.
+            let label = opening_label("the text", text.len());
+            if let Err(message) = command(&r, |app| {
+                app.set_busy(Some(label));
+                Ok(())
+            }) {
+                return settle(Err(message));
+            }
+            let r = r.clone();
+            wasm_bindgen_futures::future_to_promise(async move {
+                after_a_paint().await;
+                command(&r, |app| {
+                    app.set_busy(None);
+                    app.load_mesh(text.as_bytes(), &name, structure)
+                })
+                .map(|()| JsValue::NULL)
+                .map_err(|message| js_sys::Error::new(&message).into())
+            })
         },
     );
     set_fn(&api, "loadMesh", &load_mesh.into_js_value())?;
@@ -183,19 +259,13 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     let r = runner.clone();
     let load_sample = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
         move |name: JsValue, options: JsValue| {
-            let result = (|| {
-                let name = name
-                    .as_string()
-                    .ok_or("loadSample(name, options): name must be a string")?;
-                let structure = structure_option(&options)?;
-                with_app(&r, |app| {
-                    let result = app.load_sample(&name, structure);
-                    app.request_repaint();
-                    result
-                })
-                .map_err(|err| js_error_text(&err))?
-            })();
-            settle(result)
+            let call = "loadSample(name, options)";
+            settle((|| {
+                let name = text_argument(call, "name", &name, MAX_NAME_CHARS)?;
+                check_options(call, &options, &["structure"])?;
+                let structure = structure_option(call, &options)?;
+                command(&r, |app| app.load_sample(&name, structure))
+            })())
         },
     );
     set_fn(&api, "loadSample", &load_sample.into_js_value())?;
@@ -203,56 +273,38 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     let r = runner.clone();
     let select = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
         move |kind: JsValue, id: JsValue| {
-            let result = (|| {
+            let call = "select(kind, id)";
+            settle((|| {
                 let kind = kind
                     .as_string()
                     .and_then(|k| ElementKind::parse(&k))
-                    .ok_or("select(kind, id): kind must be 'vertex', 'edge' or 'face'")?;
-                let id = id
-                    .as_f64()
-                    .filter(|id| id.fract() == 0.0 && *id >= 0.0 && *id <= f64::from(u32::MAX))
-                    .ok_or("select(kind, id): id must be a whole number from 0")?
-                    as u32;
-                with_app(&r, |app| {
-                    let result = app.select(Some(ElementRef { kind, id }));
-                    app.request_repaint();
-                    result
-                })
-                .map_err(|err| js_error_text(&err))?
-            })();
-            settle(result)
+                    .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", &kind))?;
+                let id = whole_number(call, "id", &id)?;
+                let id = u32::try_from(id)
+                    .map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
+                command(&r, |app| app.select(Some(ElementRef { kind, id })))
+            })())
         },
     );
     set_fn(&api, "select", &select.into_js_value())?;
 
     let r = runner.clone();
     let clear = Closure::<dyn Fn() -> js_sys::Promise>::new(move || {
-        let result = with_app(&r, |app| {
-            let result = app.select(None);
-            app.request_repaint();
-            result
-        })
-        .map_err(|err| js_error_text(&err))
-        .and_then(|r| r);
-        settle(result)
+        settle(command(&r, |app| app.select(None)))
     });
     set_fn(&api, "clearSelection", &clear.into_js_value())?;
 
     let r = runner.clone();
     let set_structure = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |name: JsValue| {
-        let result = (|| {
+        settle((|| {
             let structure = name
                 .as_string()
                 .and_then(|n| crate::parse_structure(&n))
-                .ok_or("setStructure(name): name must be 'winged' or 'half'")?;
-            with_app(&r, |app| {
-                let result = app.switch_structure(structure);
-                app.request_repaint();
-                result
-            })
-            .map_err(|err| js_error_text(&err))?
-        })();
-        settle(result)
+                .ok_or_else(|| {
+                    expected("setStructure(name)", "name", "'winged' or 'half'", &name)
+                })?;
+            command(&r, |app| app.switch_structure(structure))
+        })())
     });
     set_fn(&api, "setStructure", &set_structure.into_js_value())?;
 
@@ -262,40 +314,43 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
             let format = format
                 .as_string()
                 .and_then(|f| SaveFormat::parse(&f))
-                .ok_or(
-                    "exportMesh(format): format must be 'wtb', 'htb', 'ply', 'ply-binary' or 'obj'",
-                )?;
+                .ok_or_else(|| {
+                    expected(
+                        "exportMesh(format)",
+                        "format",
+                        "'wtb', 'htb', 'ply', 'ply-binary' or 'obj'",
+                        &format,
+                    )
+                })?;
             let saved =
                 with_app(&r, |app| app.export(format)).map_err(|err| js_error_text(&err))??;
             exported_object(&saved, format.is_binary()).map_err(|err| js_error_text(&err))
         })();
-        match result {
-            Ok(object) => js_sys::Promise::resolve(&object),
-            Err(message) => js_sys::Promise::reject(&js_sys::Error::new(&message)),
-        }
+        settle_with(result)
     });
     set_fn(&api, "exportMesh", &export_mesh.into_js_value())?;
 
     let r = runner.clone();
     let choose = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |name: JsValue| {
-        let result = (|| {
-            let structure = if name.is_null() || name.is_undefined() {
+        settle((|| {
+            let structure = if name.is_null() {
                 None
             } else {
                 Some(
                     name.as_string()
                         .and_then(|n| crate::parse_structure(&n))
-                        .ok_or("chooseStructure(name): name must be 'winged', 'half' or null")?,
+                        .ok_or_else(|| {
+                            expected(
+                                "chooseStructure(name)",
+                                "name",
+                                "'winged', 'half' or null",
+                                &name,
+                            )
+                        })?,
                 )
             };
-            with_app(&r, |app| {
-                let result = app.answer_structure_dialog(structure);
-                app.request_repaint();
-                result
-            })
-            .map_err(|err| js_error_text(&err))?
-        })();
-        settle(result)
+            command(&r, |app| app.answer_structure_dialog(structure))
+        })())
     });
     set_fn(&api, "chooseStructure", &choose.into_js_value())?;
 
@@ -312,14 +367,16 @@ fn install_algorithm_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Re
     let r = runner.clone();
     let load = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
         move |source: JsValue, file: JsValue| {
-            let result = (|| {
-                let source = source
-                    .as_string()
-                    .ok_or("loadAlgorithms(source): source must be a string")?;
-                let file = file.as_string().unwrap_or_else(|| "page.alg".to_owned());
+            let call = "loadAlgorithms(source, file)";
+            settle((|| {
+                let source = text_argument(call, "source", &source, MAX_SOURCE_BYTES)?;
+                let file = if file.is_undefined() {
+                    "page.alg".to_owned()
+                } else {
+                    text_argument(call, "file", &file, MAX_NAME_CHARS)?
+                };
                 command(&r, |app| app.load_algorithms(&source, &file).map(|_| ()))
-            })();
-            settle(result)
+            })())
         },
     );
     set_fn(api, "loadAlgorithms", &load.into_js_value())?;
@@ -335,39 +392,34 @@ fn install_algorithm_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Re
     let r = runner.clone();
     let run = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
         move |name: JsValue, args: JsValue| {
-            let result = (|| {
-                let name = name
-                    .as_string()
-                    .ok_or("run(name, args): name must be a string")?;
-                let args = arguments(&args)?;
+            let call = "run(name, args)";
+            settle((|| {
+                let name = text_argument(call, "name", &name, MAX_NAME_CHARS)?;
+                let args = arguments(call, &args)?;
                 command(&r, |app| app.run_algorithm(&name, &args))
-            })();
-            settle(result)
+            })())
         },
     );
     set_fn(api, "run", &run.into_js_value())?;
 
     type StepFn = fn(&mut EdgewiseApp, usize) -> Result<(), String>;
-    let steppers: [(&str, StepFn, f64); 3] = [
-        ("step", EdgewiseApp::trace_step, 1.0),
-        ("back", EdgewiseApp::trace_back, 1.0),
-        ("goto", EdgewiseApp::trace_goto, f64::NAN),
+    // Name, call as messages show it, argument, function, default.
+    let steppers: [(&str, &str, &str, StepFn, Option<u64>); 3] = [
+        ("step", "step(n)", "n", EdgewiseApp::trace_step, Some(1)),
+        ("back", "back(n)", "n", EdgewiseApp::trace_back, Some(1)),
+        ("goto", "goto(k)", "k", EdgewiseApp::trace_goto, None),
     ];
-    for (name, f, default) in steppers {
+    for (name, call, argument, f, default) in steppers {
         let r = runner.clone();
         let stepper = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |n: JsValue| {
-            let result = (|| {
-                let n = if n.is_undefined() || n.is_null() {
-                    default
-                } else {
-                    n.as_f64().unwrap_or(f64::NAN)
+            settle((|| {
+                let n = match default {
+                    Some(default) if n.is_undefined() => default,
+                    _ => whole_number(call, argument, &n)?,
                 };
-                if !(n.is_finite() && n.fract() == 0.0 && n >= 0.0) {
-                    return Err(format!("{name}(n): n must be a whole number from 0"));
-                }
-                command(&r, |app| f(app, n as usize))
-            })();
-            settle(result)
+                let n = usize::try_from(n).unwrap_or(usize::MAX);
+                command(&r, |app| f(app, n))
+            })())
         });
         set_fn(api, name, &stepper.into_js_value())?;
     }
@@ -391,20 +443,18 @@ fn install_view_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<
     set_fn(api, "newTab", &new_tab.into_js_value())?;
 
     type TabFn = fn(&mut EdgewiseApp, usize) -> Result<(), String>;
-    let tab_commands: [(&str, TabFn); 2] = [
-        ("switchTab", EdgewiseApp::switch_tab),
-        ("closeTab", EdgewiseApp::close_tab),
+    let tab_commands: [(&str, &str, TabFn); 2] = [
+        ("switchTab", "switchTab(index)", EdgewiseApp::switch_tab),
+        ("closeTab", "closeTab(index)", EdgewiseApp::close_tab),
     ];
-    for (name, f) in tab_commands {
+    for (name, call, f) in tab_commands {
         let r = runner.clone();
         let tab = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |index: JsValue| {
-            let result = match index.as_f64() {
-                Some(i) if i.fract() == 0.0 && i >= 0.0 => command(&r, |app| f(app, i as usize)),
-                _ => Err(format!(
-                    "{name}(index): index must be a whole number from 0"
-                )),
-            };
-            settle(result)
+            settle((|| {
+                let index = whole_number(call, "index", &index)?;
+                let index = usize::try_from(index).unwrap_or(usize::MAX);
+                command(&r, |app| f(app, index))
+            })())
         });
         set_fn(api, name, &tab.into_js_value())?;
     }
@@ -420,10 +470,29 @@ fn install_view_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<
 
     let r = runner.clone();
     let side_by_side = Closure::<dyn Fn(JsValue) -> js_sys::Promise>::new(move |on: JsValue| {
-        let on = on.as_bool().unwrap_or(true);
-        settle(command(&r, |app| app.set_side_by_side(on)))
+        settle((|| {
+            let on = on
+                .as_bool()
+                .ok_or_else(|| expected("setSideBySide(on)", "on", "true or false", &on))?;
+            command(&r, |app| app.set_side_by_side(on))
+        })())
     });
     set_fn(api, "setSideBySide", &side_by_side.into_js_value())
+}
+
+/// Resolves after the browser has had time to paint a frame (eframe paints
+/// on the next animation frame after a repaint request).
+async fn after_a_paint() {
+    let promise = js_sys::Promise::new(&mut |resolve, _reject| {
+        let timer = web_sys::window().map(|window| {
+            window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 100)
+        });
+        // Without a timer the promise would never settle: go on at once.
+        if !matches!(timer, Some(Ok(_))) {
+            let _resolved = resolve.call0(&JsValue::NULL);
+        }
+    });
+    let _painted = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
 /// Runs a command on the app and asks for a frame to show its effect.
@@ -440,14 +509,14 @@ fn command(
 }
 
 /// `run`'s arguments object: parameter names to ids, integers or booleans.
-fn arguments(args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
+fn arguments(call: &str, args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
     if args.is_undefined() || args.is_null() {
         return Ok(Vec::new());
     }
     // Not `dyn_ref`: an object made by the page around an iframe belongs to
     // another realm, and fails an `instanceof Object` check.
-    if !args.is_object() {
-        return Err("run(name, args): args must be an object such as {v: 0}".to_owned());
+    if !args.is_object() || js_sys::Array::is_array(args) {
+        return Err(expected(call, "args", "an object such as {v: 0}", args));
     }
     let object: &js_sys::Object = args.unchecked_ref();
     let mut out = Vec::new();
@@ -455,13 +524,17 @@ fn arguments(args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
         let pair = js_sys::Array::from(&entry);
         let key = pair.get(0).as_string().unwrap_or_default();
         let value = pair.get(1);
+        let what = format!("args.{}", shown(&key));
         let argument = if let Some(b) = value.as_bool() {
             Argument::Boolean(b)
-        } else if let Some(n) = value.as_f64() {
-            Argument::Number(n)
+        } else if value.as_f64().is_some() {
+            Argument::Number(whole_number(call, &what, &value)? as f64)
         } else {
-            return Err(format!(
-                "run(name, args): args.{key} must be a number (an id) or a boolean"
+            return Err(expected(
+                call,
+                &what,
+                "a whole number (an id) or a boolean",
+                &value,
             ));
         };
         out.push((key, argument));
@@ -475,12 +548,107 @@ fn set_fn(api: &js_sys::Object, name: &str, function: &JsValue) -> Result<(), Js
     js_sys::Reflect::set(api, &name.into(), function).map(|_| ())
 }
 
-/// A Promise that resolves to null on success or to the error message.
+/// A command's Promise: resolves to null on success, rejects with an Error.
 fn settle(result: Result<(), String>) -> js_sys::Promise {
-    js_sys::Promise::resolve(&match result {
-        Ok(()) => JsValue::NULL,
-        Err(message) => JsValue::from_str(&message),
-    })
+    settle_with(result.map(|()| JsValue::NULL))
+}
+
+/// A command's Promise: resolves to the value, or rejects with an Error.
+fn settle_with(result: Result<JsValue, String>) -> js_sys::Promise {
+    match result {
+        Ok(value) => js_sys::Promise::resolve(&value),
+        Err(message) => js_sys::Promise::reject(&js_sys::Error::new(&message)),
+    }
+}
+
+/// "select(kind, id): id must be a whole number from 0, not 'abc'".
+fn expected(call: &str, argument: &str, what: &str, value: &JsValue) -> String {
+    format!(
+        "{call}: {argument} must be {what}, not {}",
+        described(value)
+    )
+}
+
+/// A JavaScript value as a message shows it: short, and typed.
+fn described(value: &JsValue) -> String {
+    if value.is_undefined() {
+        "undefined (it is missing)".to_owned()
+    } else if value.is_null() {
+        "null".to_owned()
+    } else if let Some(text) = value.as_string() {
+        format!("the string '{}'", shown(&text))
+    } else if let Some(n) = value.as_f64() {
+        format!("{n}")
+    } else if let Some(b) = value.as_bool() {
+        format!("{b}")
+    } else if js_sys::Array::is_array(value) {
+        "an array".to_owned()
+    } else if value.is_function() {
+        "a function".to_owned()
+    } else {
+        "an object".to_owned()
+    }
+}
+
+/// User text quoted in a message: at most 40 characters, escaped.
+fn shown(text: &str) -> String {
+    edgewise_core::lang::diagnostic::shorten(text, 40)
+        .chars()
+        .flat_map(char::escape_debug)
+        .collect()
+}
+
+/// A whole number from 0 that a JavaScript number holds exactly.
+fn whole_number(call: &str, argument: &str, value: &JsValue) -> Result<u64, String> {
+    const MAX_EXACT: f64 = 9_007_199_254_740_991.0; // Number.MAX_SAFE_INTEGER
+    value
+        .as_f64()
+        .filter(|n| n.fract() == 0.0 && (0.0..=MAX_EXACT).contains(n))
+        .map(|n| n as u64)
+        .ok_or_else(|| expected(call, argument, "a whole number from 0", value))
+}
+
+/// A string argument, refused before it is copied out of JavaScript when it
+/// holds more than `limit` UTF-16 units (a lower bound on its UTF-8 bytes).
+fn text_argument(
+    call: &str,
+    argument: &str,
+    value: &JsValue,
+    limit: usize,
+) -> Result<String, String> {
+    let Some(text) = value.dyn_ref::<js_sys::JsString>() else {
+        return Err(expected(call, argument, "a string", value));
+    };
+    let units = text.length() as usize;
+    if units > limit {
+        return Err(format!(
+            "{call}: {argument} is {units} characters long; it may hold at most {limit}"
+        ));
+    }
+    Ok(String::from(text))
+}
+
+/// Refuses an options object that is not an object or has unknown keys, so a
+/// misspelled option is named instead of silently ignored.
+fn check_options(call: &str, options: &JsValue, known: &[&str]) -> Result<(), String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(());
+    }
+    if !options.is_object() || js_sys::Array::is_array(options) {
+        return Err(expected(call, "options", "an object", options));
+    }
+    let keys = js_sys::Object::keys(options.unchecked_ref::<js_sys::Object>());
+    for key in keys.iter() {
+        let key = key.as_string().unwrap_or_default();
+        if !known.contains(&key.as_str()) {
+            return Err(format!(
+                "{call}: there is no option '{}'; the options are {}",
+                shown(&key),
+                known.join(" and ")
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// `exportMesh`'s answer: `{name, text}`, or `{name, base64}` for binary output.
@@ -519,25 +687,26 @@ fn base64(bytes: &[u8]) -> String {
 }
 
 /// `options[key]` as a string, if present.
-fn option_string(options: &JsValue, key: &str) -> Result<Option<String>, String> {
+fn option_string(call: &str, options: &JsValue, key: &str) -> Result<Option<String>, String> {
     if options.is_undefined() || options.is_null() {
         return Ok(None);
     }
     let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
-    if value.is_undefined() || value.is_null() {
+    if value.is_undefined() {
         return Ok(None);
     }
-    value
-        .as_string()
-        .map(Some)
-        .ok_or_else(|| format!("option '{key}' must be a string"))
+    text_argument(call, &format!("options.{key}"), &value, MAX_NAME_CHARS).map(Some)
 }
 
-fn structure_option(options: &JsValue) -> Result<Option<Structure>, String> {
-    option_string(options, "structure")?
+fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
+    option_string(call, options, "structure")?
         .map(|name| {
-            crate::parse_structure(&name)
-                .ok_or_else(|| format!("structure must be 'winged' or 'half', not '{name}'"))
+            crate::parse_structure(&name).ok_or_else(|| {
+                format!(
+                    "{call}: options.structure must be 'winged' or 'half', not '{}'",
+                    shown(&name)
+                )
+            })
         })
         .transpose()
 }

@@ -54,10 +54,7 @@ fn read_file(inbox: Inbox, ctx: egui::Context, file: web_sys::File) {
     wasm_bindgen_futures::spawn_local(async move {
         let name = file.name();
         let result = if file.size() > MAX_FILE_BYTES as f64 {
-            Err(format!(
-                "{name}: the file is {} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes",
-                file.size()
-            ))
+            Err(too_large(&name, file.size()))
         } else {
             JsFuture::from(file.array_buffer())
                 .await
@@ -72,7 +69,15 @@ fn read_file(inbox: Inbox, ctx: egui::Context, file: web_sys::File) {
     });
 }
 
-/// Reads a file dropped on the page (eframe hands it over unread) into `inbox`.
+/// The message for a file refused by its size, before any of it is read.
+fn too_large(name: &str, size: f64) -> String {
+    format!(
+        "{name}: the file is {size} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes"
+    )
+}
+
+/// Reads a file dropped on the page (eframe hands it over unread) into
+/// `inbox`, refusing huge files by their size before reading them.
 pub fn read_dropped(inbox: &Inbox, ctx: &egui::Context, file: egui::DroppedFileHandle) {
     let (inbox, ctx) = (inbox.clone(), ctx.clone());
     wasm_bindgen_futures::spawn_local(async move {
@@ -80,14 +85,18 @@ pub fn read_dropped(inbox: &Inbox, ctx: &egui::Context, file: egui::DroppedFileH
             .path()
             .file_name()
             .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-        let result = file
-            .bytes_async()
-            .await
-            .map(|bytes| PendingFile {
-                name: name.clone(),
-                bytes,
-            })
-            .map_err(|err| format!("{name}: cannot read the file: {err}"));
+        let size = file.web_file().map_or(0.0, |file| file.size());
+        let result = if size > MAX_FILE_BYTES as f64 {
+            Err(too_large(&name, size))
+        } else {
+            file.bytes_async()
+                .await
+                .map(|bytes| PendingFile {
+                    name: name.clone(),
+                    bytes,
+                })
+                .map_err(|err| format!("{name}: cannot read the file: {err}"))
+        };
         inbox.borrow_mut().push(result);
         ctx.request_repaint();
     });

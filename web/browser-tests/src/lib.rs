@@ -201,6 +201,21 @@ impl Browser {
         }
     }
 
+    /// Awaits a JS API command that must be refused: its Promise must reject
+    /// (the API's convention), and the rejection's message is returned.
+    pub async fn refusal(&self, expression: &str) -> anyhow::Result<Value> {
+        match self.eval_async(expression).await {
+            Ok(value) => bail!("`{expression}` resolved to {value}; it must be refused"),
+            Err(error) => {
+                let text = format!("{error:#}");
+                let prefix = format!("`{expression}` threw: ");
+                let message = text.strip_prefix(&prefix).unwrap_or(&text);
+                let message: String = serde_json::from_str(message).unwrap_or(message.to_owned());
+                Ok(Value::String(message))
+            }
+        }
+    }
+
     /// Sends a Chrome DevTools Protocol command through chromedriver.
     pub async fn cdp(&self, command: &str, params: Value) -> anyhow::Result<Value> {
         self.client

@@ -73,7 +73,7 @@ async fn a_dropped_obj_asks_for_a_structure_and_exports_round_trip() -> anyhow::
 
     // A second answer has nothing to answer.
     let message = browser
-        .eval_async("window.edgewise.chooseStructure('winged')")
+        .refusal("window.edgewise.chooseStructure('winged')")
         .await?;
     assert!(message.is_string(), "{message}");
 

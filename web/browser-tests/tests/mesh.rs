@@ -106,7 +106,7 @@ async fn every_sample_loads_in_both_structures_and_selects() -> anyhow::Result<(
     }
     // Selecting past the end is refused with the count.
     let message = browser
-        .eval_async("window.edgewise.select('face', 100000)")
+        .refusal("window.edgewise.select('face', 100000)")
         .await?;
     assert!(
         message
@@ -132,7 +132,7 @@ async fn a_broken_obj_is_refused_and_the_previous_mesh_stays() -> anyhow::Result
 
     let broken = "v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\nf 1 2 9\\n";
     let message = browser
-        .eval_async(&format!(
+        .refusal(&format!(
             "window.edgewise.loadMesh('{broken}', {{ format: 'obj' }})"
         ))
         .await?;

@@ -165,7 +165,7 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
 
     // Commands and sources that are wrong say why.
     let message = browser
-        .eval_async("window.edgewise.run('noSuchAlgorithm')")
+        .refusal("window.edgewise.run('noSuchAlgorithm')")
         .await?;
     assert!(
         message
@@ -174,7 +174,7 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
         "{message}"
     );
     let message = browser
-        .eval_async("window.edgewise.loadAlgorithms('algorithm a(v : Vertex) : HalfEdge;\\nbegin\\n  mark v.incidentEgde;\\nend\\n', 'mine.alg')")
+        .refusal("window.edgewise.loadAlgorithms('algorithm a(v : Vertex) : HalfEdge;\\nbegin\\n  mark v.incidentEgde;\\nend\\n', 'mine.alg')")
         .await?;
     assert!(
         message

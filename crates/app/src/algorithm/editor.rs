@@ -48,6 +48,8 @@ pub struct AlgorithmEditor {
     pub status: Option<String>,
     /// The name the text is saved under: the opened file's, or a default.
     pub file_name: String,
+    /// Why the last typed or pasted text was refused (it was too large).
+    pub refused: Option<String>,
 }
 
 impl Default for AlgorithmEditor {
@@ -58,6 +60,7 @@ impl Default for AlgorithmEditor {
             problems: Vec::new(),
             status: None,
             file_name: "algorithms.alg".to_owned(),
+            refused: None,
         }
     }
 }
@@ -148,14 +151,22 @@ impl AlgorithmEditor {
         let highlighter = move |_: &egui::Style, text: &str| {
             Highlighted::new(text).layout(text, 0..text.len(), &[], &style)
         };
-        let response = CodeEditor::new("algorithm_editor", &mut self.text)
+        if let Some(refused) = &self.refused {
+            ui.colored_label(ui.visuals().error_fg_color, refused);
+        }
+        let output = CodeEditor::new("algorithm_editor", &mut self.text)
             .diagnostics(&self.problems)
             .highlighter(&highlighter)
             .hint_text("algorithm name(v : Vertex) : HalfEdge;\nbegin\n  …\nend")
             .desired_rows(18)
+            .max_bytes(lang::MAX_SOURCE_BYTES)
             .show(ui);
-        if response.changed() {
+        if output.refused.is_some() {
+            self.refused = output.refused;
+        }
+        if output.response.changed() {
             self.pending_since = Some(now);
+            self.refused = None;
         }
         if let Some(since) = self.pending_since {
             let wait = DEBOUNCE.as_secs_f64() - (now - since);

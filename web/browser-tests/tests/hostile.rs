@@ -1,0 +1,255 @@
+//! Hostile input in the browser: course links carrying an algorithm of
+//! 100,000 terms or one nested 100,000 deep leave the page alive, name the
+//! problem, and the default view still works; JS API calls with wrong
+//! arguments are refused with messages that say what was expected; a failed
+//! load keeps the previous mesh and algorithm menu.
+
+use std::time::Duration;
+
+use edgewise_browser_tests::Browser;
+use serde_json::Value;
+
+const APPLY_TIMEOUT: Duration = Duration::from_secs(30);
+
+/// A fragment `alg=<payload>` for the algorithm text a JS expression makes,
+/// built as docs/embedding.md tells page authors to: deflate-raw, base64url.
+async fn algorithm_fragment(browser: &Browser, source_js: &str) -> anyhow::Result<String> {
+    let fragment = browser
+        .eval_async(&format!(
+            "(async () => {{
+                const source = {source_js};
+                const stream = new Blob([source]).stream().pipeThrough(new CompressionStream('deflate-raw'));
+                const bytes = new Uint8Array(await new Response(stream).arrayBuffer());
+                let binary = '';
+                for (const b of bytes) binary += String.fromCharCode(b);
+                const b64 = btoa(binary).replace(/\\+/g, '-').replace(/\\//g, '_').replace(/=+$/, '');
+                return 'alg=' + b64;
+            }})()"
+        ))
+        .await?;
+    Ok(fragment.as_str().unwrap_or_default().to_owned())
+}
+
+/// Opens a link whose algorithm cannot compile; checks the page stays alive,
+/// the message names `expected`, and the tetrahedron still answers.
+async fn open_hostile_link(
+    browser: &Browser,
+    fragment: &str,
+    expected: &str,
+    shot: &str,
+) -> anyhow::Result<()> {
+    browser
+        .open(&format!(
+            "?sample=tetrahedron&structure=winged&algorithm=hostile#{fragment}"
+        ))
+        .await?;
+    browser
+        .wait_for("window.edgewise.state().error !== null", APPLY_TIMEOUT)
+        .await?;
+    let state = browser.state().await?;
+    let error = state["error"].as_str().unwrap_or_default();
+    assert!(error.contains(expected), "{error}");
+    assert_eq!(state["mesh"], "tetrahedron.wtb");
+    // The page is alive: no error box, and commands still work.
+    let page_error = browser
+        .eval("return document.getElementById('edgewise_error').dataset.visible === 'true'")
+        .await?;
+    assert_eq!(page_error, Value::Bool(false));
+    assert_eq!(
+        browser
+            .eval_async("window.edgewise.select('edge', 3)")
+            .await?,
+        Value::Null
+    );
+    assert_eq!(browser.state().await?["selection"]["id"], 3);
+    assert_eq!(
+        browser
+            .eval_async("window.edgewise.run('vertexAdjacentEdge', {v: 1})")
+            .await?,
+        Value::Null
+    );
+    browser.eval_async("window.edgewise.goto(3)").await?;
+    assert_eq!(browser.state().await?["trace"]["step"], 3);
+    let shot = browser.screenshot(shot).await?;
+    assert!(!shot.is_blank(), "{}", shot.path.display());
+    browser.assert_no_console_errors().await?;
+    Ok(())
+}
+
+#[tokio::test]
+async fn a_link_with_a_100000_term_algorithm_names_it_and_the_view_works() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    let fragment = algorithm_fragment(
+        &browser,
+        "'algorithm hostile(n : Integer) : WingedEdge;\\nbegin\\n  n := n' + ' + 1'.repeat(100000) + ';\\nend\\n'",
+    )
+    .await?;
+    open_hostile_link(
+        &browser,
+        &fragment,
+        "link.alg:3:402: error: this expression is too long",
+        "hostile-link-100000-terms",
+    )
+    .await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn a_link_with_a_deeply_nested_algorithm_names_it_and_the_view_works() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    let fragment = algorithm_fragment(
+        &browser,
+        "'algorithm hostile(b : Boolean) : WingedEdge;\\nbegin\\n  b := ' + '('.repeat(100000) + 'b' + ')'.repeat(100000) + ';\\nend\\n'",
+    )
+    .await?;
+    open_hostile_link(
+        &browser,
+        &fragment,
+        "this is nested too deeply (more than 100 levels)",
+        "hostile-link-nested",
+    )
+    .await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    assert_eq!(
+        browser
+            .eval_async("window.edgewise.loadSample('cube', {structure: 'half'})")
+            .await?,
+        Value::Null
+    );
+    let cases = [
+        (
+            "window.edgewise.setSideBySide('no')",
+            "setSideBySide(on): on must be true or false, not the string 'no'",
+        ),
+        (
+            "window.edgewise.select('edge', NaN)",
+            "select(kind, id): id must be a whole number from 0, not NaN",
+        ),
+        (
+            "window.edgewise.select('edge', -1)",
+            "select(kind, id): id must be a whole number from 0, not -1",
+        ),
+        (
+            "window.edgewise.select('edge', 1.5)",
+            "select(kind, id): id must be a whole number from 0, not 1.5",
+        ),
+        (
+            "window.edgewise.select('corner', 1)",
+            "select(kind, id): kind must be 'vertex', 'edge' or 'face', not the string 'corner'",
+        ),
+        (
+            "window.edgewise.select('edge', 99999)",
+            "there is no edge 99999 (this mesh has 24, numbered from 0)",
+        ),
+        (
+            "window.edgewise.loadMesh(42)",
+            "loadMesh(text, options): text must be a string, not 42",
+        ),
+        (
+            "window.edgewise.loadMesh('v 0 0 0', {formt: 'obj'})",
+            "loadMesh(text, options): there is no option 'formt'; the options are format and structure",
+        ),
+        (
+            "window.edgewise.loadMesh('v 0 0 0', {format: 'stl'})",
+            "loadMesh(text, options): options.format must be 'obj', 'ply', 'wtb' or 'htb', not 'stl'",
+        ),
+        (
+            "window.edgewise.loadSample('cube', {structure: 'round'})",
+            "loadSample(name, options): options.structure must be 'winged' or 'half', not 'round'",
+        ),
+        (
+            "window.edgewise.loadSample('no-such-mesh')",
+            "there is no sample called 'no-such-mesh'",
+        ),
+        (
+            "window.edgewise.run('vertexStar', {v: 'one'})",
+            "run(name, args): args.v must be a whole number (an id) or a boolean, not the string 'one'",
+        ),
+        (
+            "window.edgewise.run('vertexStar', [0])",
+            "run(name, args): args must be an object such as {v: 0}, not an array",
+        ),
+        (
+            "window.edgewise.run('vertexStar', {w: 0})",
+            "vertexStar has no parameter `w`",
+        ),
+        (
+            "window.edgewise.step(-1)",
+            "step(n): n must be a whole number from 0, not -1",
+        ),
+        (
+            "window.edgewise.goto()",
+            "goto(k): k must be a whole number from 0, not undefined (it is missing)",
+        ),
+        ("window.edgewise.switchTab(7)", "there is no tab 7"),
+        (
+            "window.edgewise.setStructure(true)",
+            "setStructure(name): name must be 'winged' or 'half', not true",
+        ),
+        (
+            "window.edgewise.loadAlgorithms('x'.repeat(2 * 1024 * 1024))",
+            "loadAlgorithms(source, file): source is 2097152 characters long; it may hold at most 1048576",
+        ),
+    ];
+    for (call, expected) in cases {
+        let message = browser.refusal(call).await?;
+        let message = message.as_str().unwrap_or_default();
+        assert!(message.contains(expected), "{call}: {message}");
+    }
+    // Nothing changed: the cube is still open, alone, as half-edge.
+    let state = browser.state().await?;
+    assert_eq!(state["mesh"], "cube.htb");
+    assert_eq!(state["structure"], "half");
+    assert_eq!(state["sideBySide"], false);
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn a_failed_load_keeps_the_mesh_and_the_algorithm_menu() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    browser
+        .eval_async("window.edgewise.loadSample('tetrahedron')")
+        .await?;
+    let mine = "algorithm mine(v : Vertex) : WingedEdge;\\nbegin\\n  mark v.incidentEdge;\\nend\\n";
+    assert_eq!(
+        browser
+            .eval_async(&format!(
+                "window.edgewise.loadAlgorithms('{mine}', 'mine.alg')"
+            ))
+            .await?,
+        Value::Null
+    );
+    let before = browser.eval("return window.edgewise.algorithms()").await?;
+    let refusals = [
+        "window.edgewise.loadMesh('v 0 0 0\\nv 1 0 0\\nf 1 2 3\\n', {format: 'obj'})",
+        "window.edgewise.loadMesh('ply\\nformat ascii 1.0\\nelement vertex 4000000000\\nend_header\\n', {format: 'ply'})",
+        "window.edgewise.loadMesh('v 0 0 0\\u0000', {format: 'obj'})",
+        "window.edgewise.loadAlgorithms('algorithm mine(v : Vertex) : WingedEdge;\\nbegin\\n  mark v' + '.incidentEdge.endVertex'.repeat(20000) + ';\\nend\\n', 'mine.alg')",
+    ];
+    for call in refusals {
+        browser.refusal(call).await?;
+        let state = browser.state().await?;
+        assert_eq!(state["mesh"], "tetrahedron.wtb", "{call}");
+        assert_eq!(state["counts"]["faces"], 4, "{call}");
+        let after = browser.eval("return window.edgewise.algorithms()").await?;
+        assert_eq!(after, before, "{call}");
+    }
+    assert_eq!(
+        browser
+            .eval_async("window.edgewise.run('mine', {v: 0})")
+            .await?,
+        Value::Null
+    );
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
