@@ -10,6 +10,8 @@ pub mod code_editor;
 pub mod course_link;
 mod document;
 pub mod files;
+#[doc(hidden)]
+pub mod fuzzing;
 mod obj_editor;
 mod open_dialog;
 pub mod paint;
