@@ -37,12 +37,21 @@ pub struct FileState {
     /// Where the last native save went, shown in the Save as… menu.
     #[cfg(not(target_arch = "wasm32"))]
     saved: Option<String>,
-    /// A large file, opened on the frame after the one that shows it is
-    /// being opened: reading it blocks the page, so "Opening…" paints first.
-    pub(crate) opening: Option<PendingFile>,
+    /// A large file, opened once a frame has shown that it is being opened:
+    /// reading it blocks the page, so "Opening…" paints first.
+    pub(crate) opening: Option<Opening>,
     /// What else is being opened (a large `loadMesh` text), for the overlay.
     pub(crate) busy: Option<String>,
 }
+
+/// A large file waiting to be opened, and how many frames have shown so.
+pub(crate) struct Opening {
+    file: PendingFile,
+    frames_shown: u8,
+}
+
+/// An egui area is measured, unseen, on its first frame; the second shows it.
+const FRAMES_TO_SHOW: u8 = 2;
 
 /// Files larger than this are announced with an overlay before they are
 /// read, since reading and drawing them can take seconds in a browser.
@@ -221,7 +230,13 @@ impl EdgewiseApp {
     /// Takes files dropped on the window this frame (the first one, if
     /// several) and, in the browser, files that finished reading.
     pub(crate) fn receive_files(&mut self, ctx: &egui::Context) {
-        if let Some(file) = self.files.opening.take() {
+        if self
+            .files
+            .opening
+            .as_ref()
+            .is_some_and(|opening| opening.frames_shown >= FRAMES_TO_SHOW)
+            && let Some(Opening { file, .. }) = self.files.opening.take()
+        {
             // open_file reports its own failures.
             self.open_file(&file.name, file.bytes).ok();
         }
@@ -351,7 +366,10 @@ impl EdgewiseApp {
     /// one has shown that it is being opened.
     fn open_or_announce(&mut self, ctx: &egui::Context, file: PendingFile) {
         if file.bytes.len() > ANNOUNCE_BYTES && self.files.opening.is_none() {
-            self.files.opening = Some(file);
+            self.files.opening = Some(Opening {
+                file,
+                frames_shown: 0,
+            });
             ctx.request_repaint();
         } else {
             // open_file reports its own failures.
@@ -363,11 +381,11 @@ impl EdgewiseApp {
     /// and what is being opened while a large file is read.
     pub(crate) fn files_overlay_ui(&mut self, ctx: &egui::Context) {
         self.structure_dialog_ui(ctx);
-        let opening = self
-            .files
-            .opening
-            .as_ref()
-            .map(|file| opening_label(&file.name, file.bytes.len()));
+        let opening = self.files.opening.as_mut().map(|opening| {
+            opening.frames_shown = opening.frames_shown.saturating_add(1);
+            ctx.request_repaint();
+            opening_label(&opening.file.name, opening.file.bytes.len())
+        });
         if let Some(label) = opening.or_else(|| self.files.busy.clone()) {
             egui::Area::new(egui::Id::unique("opening"))
                 .order(egui::Order::Foreground)

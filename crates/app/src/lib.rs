@@ -12,7 +12,7 @@ mod document;
 pub mod files;
 #[doc(hidden)]
 pub mod fuzzing;
-mod obj_editor;
+pub mod obj_editor;
 mod open_dialog;
 pub mod paint;
 pub mod samples;

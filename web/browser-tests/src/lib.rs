@@ -201,6 +201,28 @@ impl Browser {
         }
     }
 
+    /// Compresses the text that the JS expression `text_js` makes into a
+    /// course-link payload in the page, as docs/embedding.md shows page
+    /// authors: deflate-raw with `CompressionStream`, then base64url.
+    pub async fn payload(&self, text_js: &str) -> anyhow::Result<String> {
+        let payload = self
+            .eval_async(&format!(
+                "(async () => {{
+                    const text = {text_js};
+                    const stream = new Blob([text]).stream().pipeThrough(new CompressionStream('deflate-raw'));
+                    const bytes = new Uint8Array(await new Response(stream).arrayBuffer());
+                    let binary = '';
+                    for (const b of bytes) binary += String.fromCharCode(b);
+                    return btoa(binary).replace(/\\+/g, '-').replace(/\\//g, '_').replace(/=+$/, '');
+                }})()"
+            ))
+            .await?;
+        payload
+            .as_str()
+            .map(str::to_owned)
+            .context("the page made no payload")
+    }
+
     /// Awaits a JS API command that must be refused: its Promise must reject
     /// (the API's convention), and the rejection's message is returned.
     pub async fn refusal(&self, expression: &str) -> anyhow::Result<Value> {

@@ -11,23 +11,9 @@ use serde_json::Value;
 
 const APPLY_TIMEOUT: Duration = Duration::from_secs(30);
 
-/// A fragment `alg=<payload>` for the algorithm text a JS expression makes,
-/// built as docs/embedding.md tells page authors to: deflate-raw, base64url.
+/// A fragment `alg=<payload>` for the algorithm text a JS expression makes.
 async fn algorithm_fragment(browser: &Browser, source_js: &str) -> anyhow::Result<String> {
-    let fragment = browser
-        .eval_async(&format!(
-            "(async () => {{
-                const source = {source_js};
-                const stream = new Blob([source]).stream().pipeThrough(new CompressionStream('deflate-raw'));
-                const bytes = new Uint8Array(await new Response(stream).arrayBuffer());
-                let binary = '';
-                for (const b of bytes) binary += String.fromCharCode(b);
-                const b64 = btoa(binary).replace(/\\+/g, '-').replace(/\\//g, '_').replace(/=+$/, '');
-                return 'alg=' + b64;
-            }})()"
-        ))
-        .await?;
-    Ok(fragment.as_str().unwrap_or_default().to_owned())
+    Ok(format!("alg={}", browser.payload(source_js).await?))
 }
 
 /// Opens a link whose algorithm cannot compile; checks the page stays alive,

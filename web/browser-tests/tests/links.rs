@@ -39,20 +39,10 @@ async fn inline_obj_compressed_in_the_page_opens() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
     browser.open("").await?;
     // Build the fragment as a page author would: deflate-raw, then base64url.
-    let fragment = browser
-        .eval_async(
-            "(async () => {
-                const obj = 'v 0 0 0\\nv 1 0 0\\nv 1 1 0\\nv 0 1 0\\nv 0.5 0.5 1\\nf 1 2 5\\nf 2 3 5\\nf 3 4 5\\nf 4 1 5\\n';
-                const stream = new Blob([obj]).stream().pipeThrough(new CompressionStream('deflate-raw'));
-                const bytes = new Uint8Array(await new Response(stream).arrayBuffer());
-                let binary = '';
-                for (const b of bytes) binary += String.fromCharCode(b);
-                const b64 = btoa(binary).replace(/\\+/g, '-').replace(/\\//g, '_').replace(/=+$/, '');
-                return 'mesh=' + b64 + '&format=obj';
-            })()",
-        )
+    let payload = browser
+        .payload("'v 0 0 0\\nv 1 0 0\\nv 1 1 0\\nv 0 1 0\\nv 0.5 0.5 1\\nf 1 2 5\\nf 2 3 5\\nf 3 4 5\\nf 4 1 5\\n'")
         .await?;
-    let fragment = fragment.as_str().expect("a fragment");
+    let fragment = format!("mesh={payload}&format=obj");
     browser
         .open(&format!("?structure=half&select=face:2#{fragment}"))
         .await?;
