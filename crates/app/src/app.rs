@@ -601,10 +601,19 @@ impl EdgewiseApp {
             .fill(ui.visuals().error_fg_color.gamma_multiply(0.12))
             .inner_margin(8.0)
             .show(ui, |ui| {
-                ui.horizontal_wrapped(|ui| {
-                    ui.colored_label(ui.visuals().error_fg_color, error.as_str());
-                    dismiss = ui.button("Dismiss").clicked();
-                });
+                let colour = ui.visuals().error_fg_color;
+                for line in error.lines() {
+                    let text = egui::RichText::new(line).color(colour);
+                    // A compiler message's source line and caret line up
+                    // only in a monospace font, and only unwrapped.
+                    let label = if is_source_diagram_line(line) {
+                        egui::Label::new(text.monospace()).truncate()
+                    } else {
+                        egui::Label::new(text).wrap()
+                    };
+                    ui.add(label);
+                }
+                dismiss = ui.button("Dismiss").clicked();
             });
         if dismiss {
             self.error = None;
@@ -687,6 +696,18 @@ impl EdgewiseApp {
             self.element_clicked(None);
         }
     }
+}
+
+/// Whether a line of an error belongs to a rendered source excerpt: `  |`,
+/// `12 | text`, or `  = hint: …`, as `lang::render_all` writes them.
+fn is_source_diagram_line(line: &str) -> bool {
+    let trimmed = line.trim_start();
+    trimmed.starts_with('|')
+        || trimmed.starts_with("= hint:")
+        || line.split_once(" |").is_some_and(|(gutter, _)| {
+            let gutter = gutter.trim();
+            !gutter.is_empty() && gutter.chars().all(|c| c.is_ascii_digit())
+        })
 }
 
 impl eframe::App for EdgewiseApp {

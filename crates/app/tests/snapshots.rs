@@ -252,3 +252,27 @@ fn algorithm_editor_with_errors_light() {
     harness.run();
     harness.snapshot_options("algorithm-editor-errors-light", &options());
 }
+
+/// A course link whose algorithm is 100,000 terms long: the error panel
+/// quotes the line around the place, with the caret under it in a monospace
+/// font, and the view below still works.
+#[test]
+fn hostile_link_error_light() {
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    let source = format!(
+        "algorithm long(n : Integer) : WingedEdge;\nbegin\n  n := n{};\nend\n",
+        " + 1".repeat(100_000)
+    );
+    let fragment = format!(
+        "#alg={}",
+        edgewise_app::course_link::encode_payload(&source)
+    );
+    let (link, messages) =
+        edgewise_app::course_link::CourseLink::parse("?sample=tetrahedron", &fragment);
+    let messages = harness.state_mut().apply_course_link(&link, messages, None);
+    assert_eq!(messages.len(), 1, "{messages:?}");
+    harness.run();
+    harness.snapshot_options("hostile-link-error-light", &options());
+}
