@@ -4,10 +4,7 @@
 
 mod support;
 
-use std::{
-    path::{Path, PathBuf},
-    sync::Arc,
-};
+use std::path::Path;
 
 use edgewise_app::{EdgewiseApp, code_editor::Diagnostic, files::SaveFormat};
 use edgewise_core::{formats, mesh::Structure};
@@ -19,31 +16,8 @@ fn harness() -> Harness<'static, EdgewiseApp> {
     support::harness_sized(1280.0, 800.0)
 }
 
-/// A file dropped on the window, as the native integration delivers it.
-#[derive(Debug)]
-struct DroppedFile {
-    path: PathBuf,
-    bytes: Vec<u8>,
-}
-
-impl egui::DroppedFile for DroppedFile {
-    fn path(&self) -> &Path {
-        &self.path
-    }
-
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        Ok(self.bytes.clone())
-    }
-}
-
 fn drop_file(harness: &mut Harness<'static, EdgewiseApp>, name: &str, bytes: &[u8]) {
-    harness
-        .input_mut()
-        .dropped_files
-        .push(Arc::new(DroppedFile {
-            path: PathBuf::from("/home/student").join(name),
-            bytes: bytes.to_vec(),
-        }));
+    support::drop_file(harness, name, bytes.to_vec());
     harness.run();
 }
 

@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use edgewise_app::{
     EdgewiseApp,
-    course_link::{self, CourseLink, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS},
+    course_link::{self, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS},
     selection::{ElementKind, ElementRef},
 };
 use egui_kittest::Harness;
@@ -19,15 +19,6 @@ fn expected_path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../../tests/hostile")
         .join(format!("link-{name}.expected"))
-}
-
-/// Applies `?query#fragment` to a fresh app, as a page load does.
-fn open(query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>, Vec<String>) {
-    let mut harness = support::harness();
-    let (link, messages) = CourseLink::parse(query, fragment);
-    let messages = harness.state_mut().apply_course_link(&link, messages, None);
-    harness.run();
-    (harness, messages)
 }
 
 /// Compares the messages with the case's golden file, messages cut at 300
@@ -76,7 +67,8 @@ fn an_algorithm_of_100000_terms_is_named_and_the_view_still_works() {
         " + 1".repeat(100_000)
     );
     let fragment = format!("#alg={}", course_link::encode_payload(&source));
-    let (mut harness, messages) = open("?sample=tetrahedron&algorithm=long&args=n:1", &fragment);
+    let (mut harness, messages) =
+        support::open_link("?sample=tetrahedron&algorithm=long&args=n:1", &fragment);
     assert_messages("alg-100000-terms", &messages);
     assert!(
         messages[0].contains(":3:402: error: this expression is too long"),
@@ -93,7 +85,8 @@ fn an_algorithm_nested_100000_deep_is_named_and_the_view_still_works() {
         "not ".repeat(100_000)
     );
     let fragment = format!("#alg={}", course_link::encode_payload(&source));
-    let (mut harness, messages) = open("?sample=tetrahedron&algorithm=deep", &fragment);
+    let (mut harness, messages) =
+        support::open_link("?sample=tetrahedron&algorithm=deep", &fragment);
     assert_messages("alg-nested-100000-deep", &messages);
     assert!(
         messages[0].contains("this is nested too deeply (more than 100 levels)"),
@@ -112,13 +105,15 @@ fn payloads_past_their_limits_are_refused_with_their_sizes() {
         "the bomb's link is {} characters",
         payload.len()
     );
-    let (mut harness, messages) = open("?sample=tetrahedron", &format!("#mesh={payload}"));
+    let (mut harness, messages) =
+        support::open_link("?sample=tetrahedron", &format!("#mesh={payload}"));
     assert_messages("payload-inflates-past-limit", &messages);
     assert!(messages[0].contains("8 MiB"), "{messages:?}");
     assert_default_view_works(&mut harness);
 
     let long = "A".repeat(MAX_PAYLOAD_CHARS + 1);
-    let (mut harness, messages) = open("?sample=tetrahedron", &format!("#alg={long}"));
+    let (mut harness, messages) =
+        support::open_link("?sample=tetrahedron", &format!("#alg={long}"));
     assert_messages("payload-too-long", &messages);
     assert!(messages[0].contains("1 MiB"), "{messages:?}");
     assert_default_view_works(&mut harness);
@@ -133,7 +128,7 @@ fn every_parameter_malformed_at_once() {
                  &panels=algorithm,algorithm,nothing&colors=lookup:zzzzzz,nobody:000000\
                  &codeSize=1000000&%ff%fe=1&=&&&";
     let fragment = "#mesh=%%%&format=stl&alg=!!!&unknown=1";
-    let (mut harness, messages) = open(query, fragment);
+    let (mut harness, messages) = support::open_link(query, fragment);
     assert!(messages.len() >= 20, "{messages:#?}");
     assert_messages("every-parameter-malformed", &messages);
     assert_default_view_works(&mut harness);

@@ -4,41 +4,10 @@
 
 mod support;
 
-use std::path::{Path, PathBuf};
-use std::sync::Arc;
-
 use edgewise_app::{EdgewiseApp, files::ANNOUNCE_BYTES, obj_editor::MAX_EDITOR_BYTES};
 use edgewise_core::formats::{self, Format, SaveOptions};
 use edgewise_core::mesh::{Mesh, Structure, generate};
 use egui_kittest::{Harness, kittest::Queryable as _};
-
-#[derive(Debug)]
-struct DroppedFile {
-    path: PathBuf,
-    bytes: Vec<u8>,
-}
-
-impl egui::DroppedFile for DroppedFile {
-    fn path(&self) -> &Path {
-        &self.path
-    }
-
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        Ok(self.bytes.clone())
-    }
-}
-
-/// Drops a file on the window, as the native integration delivers it; the
-/// next frame receives it.
-fn drop_file(harness: &mut Harness<'static, EdgewiseApp>, name: &str, bytes: Vec<u8>) {
-    harness
-        .input_mut()
-        .dropped_files
-        .push(Arc::new(DroppedFile {
-            path: PathBuf::from("/home/student").join(name),
-            bytes,
-        }));
-}
 
 #[test]
 fn a_large_dropped_file_shows_it_is_opening_before_it_is_read() {
@@ -46,7 +15,7 @@ fn a_large_dropped_file_shows_it_is_opening_before_it_is_read() {
     let (torus, _) = Mesh::build(&generate::torus(200, 100), Structure::HalfEdge).expect("builds");
     let bytes = formats::save(&torus, Format::Htb, &SaveOptions::default()).expect("saves");
     assert!(bytes.len() > ANNOUNCE_BYTES, "{} bytes", bytes.len());
-    drop_file(&mut harness, "torus.htb", bytes);
+    support::drop_file(&mut harness, "torus.htb", bytes);
     // The frames after the drop show what is being opened (an egui area is
     // measured unseen on its first frame), and have not read it yet.
     harness.step();
@@ -103,7 +72,7 @@ fn the_obj_editor_refuses_a_paste_past_its_size_and_keeps_its_text() {
 #[test]
 fn the_algorithm_editor_refuses_a_paste_past_its_size() {
     let mut harness = support::harness();
-    drop_file(&mut harness, "mine.alg", b"// mine\n".to_vec());
+    support::drop_file(&mut harness, "mine.alg", b"// mine\n".to_vec());
     harness.run();
     focused_editor(&mut harness);
     let paste = "x".repeat(edgewise_core::lang::MAX_SOURCE_BYTES + 1);

@@ -5,24 +5,14 @@
 mod support;
 
 use edgewise_app::{
-    Argument, EdgewiseApp,
-    course_link::{self, CourseLink},
+    Argument, course_link,
     selection::{ElementKind, ElementRef},
 };
 use edgewise_core::mesh::Structure;
-use egui_kittest::Harness;
-
-fn open(url_query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>, Vec<String>) {
-    let mut harness = support::harness();
-    let (link, messages) = CourseLink::parse(url_query, fragment);
-    let messages = harness.state_mut().apply_course_link(&link, messages, None);
-    harness.run();
-    (harness, messages)
-}
 
 #[test]
 fn a_sample_an_algorithm_and_a_step() {
-    let (harness, messages) = open(
+    let (harness, messages) = support::open_link(
         "?sample=tetrahedron&structure=half&algorithm=vertexAdjacentEdge&args=v:1&step=5&ids=always",
         "",
     );
@@ -41,7 +31,7 @@ fn a_sample_an_algorithm_and_a_step() {
 fn inline_obj_text_in_the_fragment() {
     let obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
     let fragment = format!("#mesh={}&format=obj", course_link::encode_payload(obj));
-    let (harness, messages) = open("?structure=half&select=edge:2", &fragment);
+    let (harness, messages) = support::open_link("?structure=half&select=edge:2", &fragment);
     assert!(messages.is_empty(), "{messages:?}");
     let state = harness.state().state();
     assert_eq!(state.structure, Some("half"));
@@ -57,7 +47,7 @@ fn inline_obj_text_in_the_fragment() {
 
 #[test]
 fn broken_parts_give_messages_and_the_rest_still_applies() {
-    let (harness, messages) = open(
+    let (harness, messages) = support::open_link(
         "?sample=cube&structure=sideways&step=abc&select=edge:999&bogus=1",
         "#mesh=%%%not-base64",
     );
@@ -83,7 +73,7 @@ fn broken_parts_give_messages_and_the_rest_still_applies() {
 
 #[test]
 fn an_unknown_sample_or_algorithm_is_explained() {
-    let (harness, messages) = open("?sample=teapot&algorithm=spin", "");
+    let (harness, messages) = support::open_link("?sample=teapot&algorithm=spin", "");
     let all = messages.join("\n");
     assert!(
         all.contains("sample=teapot: no sample has that name"),
@@ -122,7 +112,7 @@ fn the_share_link_reproduces_the_view() {
         .split_once('?')
         .map(|(_, rest)| rest.split_once('#').unwrap_or((rest, "")))
         .expect("a query");
-    let (second, messages) = open(query, fragment);
+    let (second, messages) = support::open_link(query, fragment);
     assert!(messages.is_empty(), "{messages:?}");
     let (a, b) = (first.state().state(), second.state().state());
     assert_eq!(a.trace, b.trace);

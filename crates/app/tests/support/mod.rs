@@ -6,7 +6,12 @@
 
 pub mod gpu;
 
-use edgewise_app::{EdgewiseApp, GraphicsBackend};
+use std::{
+    path::{Path, PathBuf},
+    sync::Arc,
+};
+
+use edgewise_app::{EdgewiseApp, GraphicsBackend, course_link::CourseLink};
 use edgewise_core::{
     formats,
     mesh::{Mesh, Structure},
@@ -41,11 +46,49 @@ pub fn harness_with(sample: &str, structure: Option<Structure>) -> Harness<'stat
 
 /// A sample file of meshes/, loaded natively as `structure`.
 pub fn sample_mesh(file: &str, structure: Structure) -> Mesh {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../meshes")
         .join(file);
     let bytes = std::fs::read(&path).expect("the sample file exists");
     formats::load(&bytes, file, structure)
         .expect("the sample loads")
         .mesh
+}
+
+/// A file dropped on the window, as the native integration delivers it.
+#[derive(Debug)]
+struct DroppedFile {
+    path: PathBuf,
+    bytes: Vec<u8>,
+}
+
+impl egui::DroppedFile for DroppedFile {
+    fn path(&self) -> &Path {
+        &self.path
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        Ok(self.bytes.clone())
+    }
+}
+
+/// Drops a file called `name` on the window; the next frame receives it.
+pub fn drop_file(harness: &mut Harness<'static, EdgewiseApp>, name: &str, bytes: Vec<u8>) {
+    harness
+        .input_mut()
+        .dropped_files
+        .push(Arc::new(DroppedFile {
+            path: PathBuf::from("/home/student").join(name),
+            bytes,
+        }));
+}
+
+/// A fresh app after following the course link `?query#fragment`, as a
+/// page load does, with the link's messages.
+pub fn open_link(query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>, Vec<String>) {
+    let mut harness = harness();
+    let (link, messages) = CourseLink::parse(query, fragment);
+    let messages = harness.state_mut().apply_course_link(&link, messages, None);
+    harness.run();
+    (harness, messages)
 }
