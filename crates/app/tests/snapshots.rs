@@ -7,7 +7,8 @@
 //! view's paint callback needs, so these tests render through
 //! [`DepthRenderer`]: the same `egui_wgpu` renderer with the `Depth24Plus`
 //! attachment the app gets from eframe. Without a wgpu adapter (no GPU and
-//! no lavapipe) the tests say so and pass.
+//! no lavapipe) a plain `cargo test` says so and skips them; `cargo xtask
+//! test` sets `EDGEWISE_REQUIRE_GPU`, which makes that a failure.
 
 #![allow(clippy::unwrap_used)]
 

@@ -54,13 +54,16 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
         )?;
         process::run(
             "native tests",
-            cargo().args([
-                "test",
-                "--locked",
-                "--workspace",
-                "--exclude",
-                BROWSER_TESTS,
-            ]),
+            cargo()
+                .args([
+                    "test",
+                    "--locked",
+                    "--workspace",
+                    "--exclude",
+                    BROWSER_TESTS,
+                ])
+                // The rendering tests fail, rather than skip, without an adapter.
+                .env("EDGEWISE_REQUIRE_GPU", "1"),
         )
     })?;
     let dist = timings.step("wasm build", || {

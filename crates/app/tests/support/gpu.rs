@@ -132,10 +132,24 @@ pub fn render_to_pixels(
     Ok(pixels)
 }
 
+/// Set by `cargo xtask test`: a GPU test without an adapter then fails
+/// instead of passing without having drawn anything.
+const REQUIRE_GPU: &str = "EDGEWISE_REQUIRE_GPU";
+
 /// A software (or any) wgpu device with WebGL2's limits, as the app gets;
-/// None without an adapter. `WGPU_BACKEND=gl` runs the GLSL path WebGL2
-/// also takes.
+/// None without an adapter, unless [`REQUIRE_GPU`] is set, which makes that
+/// a failure. `WGPU_BACKEND=gl` runs the GLSL path WebGL2 also takes.
 pub fn render_state() -> Option<RenderState> {
+    let state = adapter_render_state();
+    assert!(
+        state.is_some() || std::env::var_os(REQUIRE_GPU).is_none_or(|v| v == "0"),
+        "no wgpu adapter, and {REQUIRE_GPU} is set: install mesa-vulkan-drivers (lavapipe) \
+         so the rendering tests can draw"
+    );
+    state
+}
+
+fn adapter_render_state() -> Option<RenderState> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
         ..wgpu::InstanceDescriptor::new_without_display_handle()
