@@ -427,10 +427,22 @@ fn torus_20k_faces() {
     let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
     let shown = started.elapsed();
     image.save("torus_20k.png");
+    // Among 20k faces, the styled vertex is drawn where the CPU projects it,
+    // and clicking there picks it.
     let transforms = view.transforms(harness.screen());
-    if let Some((at, _)) = transforms.project(geometry.positions[0]) {
-        image.zoomed(at, 200, 2).save("torus_20k_labels_zoom.png");
-    }
+    let (at, _) = transforms
+        .project(geometry.positions[0])
+        .expect("vertex 0 is in view");
+    image.zoomed(at, 200, 2).save("torus_20k_labels_zoom.png");
+    assert!(
+        image.any_near(at, 3, |p| is_near_colour(p, PURPLE, 70)),
+        "no purple near {at:?}: {:?}",
+        image.pixel(at.x as u32, at.y as u32)
+    );
+    assert_eq!(
+        view.pick_at(harness.screen(), at, &options),
+        Some(Pick::Vertex(0))
+    );
     // Close up on the outer equator: the coarse arrow and sphere templates.
     view.set_camera(Camera {
         target: [2.6, 0.0, 0.0],
@@ -440,6 +452,9 @@ fn torus_20k_faces() {
     });
     let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
     close.save("torus_20k_close.png");
+    // Close up, the mesh fills the view: its middle is not the background.
+    let middle = close.pixel(450, 320);
+    assert_ne!(middle, image.pixel(0, 0), "nothing drawn in the close-up");
     eprintln!(
         "torus 20k faces: mesh {built:?}, set_geometry {prepared:?}, two frames on {:?} {shown:?}",
         rs.adapter.get_info().name

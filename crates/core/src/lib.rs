@@ -12,18 +12,3 @@ pub mod mesh;
 
 /// The version of Edgewise, shared by the app, the CLI and the JavaScript API.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn version_is_semver() {
-        let parts: Vec<&str> = super::VERSION.split('.').collect();
-        assert_eq!(
-            parts.len(),
-            3,
-            "version {} is not major.minor.patch",
-            super::VERSION
-        );
-        assert!(parts.iter().all(|p| p.parse::<u32>().is_ok()));
-    }
-}
