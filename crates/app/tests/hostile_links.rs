@@ -4,6 +4,8 @@
 //! default view still answers. Each case's messages are in
 //! tests/hostile/link-NAME.expected (`EDGEWISE_BLESS=1` rewrites them).
 
+#[path = "../../core/tests/golden/mod.rs"]
+mod golden;
 mod support;
 
 use std::path::PathBuf;
@@ -31,13 +33,7 @@ fn assert_messages(name: &str, messages: &[String]) {
             format!("{cut}\n")
         })
         .collect();
-    let path = expected_path(name);
-    if std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0") {
-        std::fs::write(&path, &actual).expect("writable");
-        return;
-    }
-    let expected = std::fs::read_to_string(&path).unwrap_or_default();
-    assert_eq!(actual, expected, "{name} (EDGEWISE_BLESS=1 rewrites it)");
+    golden::assert_matches(&expected_path(name), actual);
 }
 
 /// The view works after the link: the sample is open and selecting works.

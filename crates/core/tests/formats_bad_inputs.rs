@@ -7,6 +7,8 @@
 //! a reader panic (truncations and corruptions of every sample, and random
 //! bytes).
 
+mod golden;
+
 use std::path::{Path, PathBuf};
 
 use edgewise_core::formats::{self, Format, Location, MAX_FILE_BYTES};
@@ -44,7 +46,6 @@ fn inputs(dir: &Path) -> Vec<PathBuf> {
 #[test]
 fn every_bad_input_is_refused_with_its_expected_message() {
     let dir = corpus_dir();
-    let bless = std::env::var_os("EDGEWISE_BLESS").is_some();
     let files = inputs(&dir);
     assert!(
         files.len() >= 40,
@@ -66,19 +67,12 @@ fn every_bad_input_is_refused_with_its_expected_message() {
         let stem = name
             .rsplit_once('.')
             .map_or(name.as_str(), |(stem, _)| stem);
-        let expected_path = dir.join(format!("{stem}.expected"));
-        if bless {
-            std::fs::write(&expected_path, &rendered).expect("writable");
-            continue;
-        }
-        let expected = std::fs::read_to_string(&expected_path).unwrap_or_default();
-        if rendered != expected {
-            failures.push(format!(
-                "{name}\n  expected: {expected}  got:      {rendered}"
-            ));
-        }
+        failures.extend(golden::compare(
+            &dir.join(format!("{stem}.expected")),
+            &rendered,
+        ));
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    golden::assert_none(&failures);
 }
 
 #[test]

@@ -2,6 +2,8 @@
 //! encoding, and their tables as `edgewise tables` prints them, compared byte
 //! for byte with tests/golden/formats/. `EDGEWISE_BLESS=1` rewrites them.
 
+mod golden;
+
 use std::path::PathBuf;
 
 use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
@@ -11,21 +13,9 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
 
-/// Compares `actual` with the golden file `name`, or rewrites it when
-/// blessing; returns a description of the difference.
+/// Compares `actual` with the golden file `name` (see [`golden::compare`]).
 fn compare(name: &str, actual: &[u8]) -> Option<String> {
-    let path = root().join("tests/golden/formats").join(name);
-    if std::env::var_os("EDGEWISE_BLESS").is_some() {
-        std::fs::write(&path, actual).expect("writable");
-        return None;
-    }
-    let expected = std::fs::read(&path).unwrap_or_default();
-    (expected != actual).then(|| {
-        format!(
-            "{name} differs from the golden file (run with EDGEWISE_BLESS=1 to accept):\n{}",
-            String::from_utf8_lossy(actual)
-        )
-    })
+    golden::compare(&root().join("tests/golden/formats").join(name), actual)
 }
 
 #[test]
@@ -66,7 +56,7 @@ fn writers_match_their_golden_files() {
             ));
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    golden::assert_none(&failures);
 }
 
 /// docs/formats.md quotes the tetrahedron in both table formats, some

@@ -3,6 +3,8 @@
 //! warnings in `NAME.expected` (`file:line: message`, one a line).
 //! `EDGEWISE_BLESS=1` rewrites the expected files, to be reviewed like code.
 
+mod golden;
+
 use std::path::{Path, PathBuf};
 
 use edgewise_core::formats::{self, Format, SaveOptions};
@@ -42,7 +44,6 @@ fn copies(message: &str) -> usize {
 #[test]
 fn every_file_loads_with_its_expected_warnings() {
     let dir = corpus_dir();
-    let bless = std::env::var_os("EDGEWISE_BLESS").is_some();
     let names = inputs(&dir);
     assert!(
         names.len() >= 2,
@@ -81,19 +82,12 @@ fn every_file_loads_with_its_expected_warnings() {
         let stem = name
             .rsplit_once('.')
             .map_or(name.as_str(), |(stem, _)| stem);
-        let expected_path = dir.join(format!("{stem}.expected"));
-        if bless {
-            std::fs::write(&expected_path, rendered).expect("writable");
-            continue;
-        }
-        let expected = std::fs::read_to_string(&expected_path).unwrap_or_default();
-        if *rendered != expected {
-            failures.push(format!(
-                "{name}\n  expected: {expected}  got:      {rendered}"
-            ));
-        }
+        failures.extend(golden::compare(
+            &dir.join(format!("{stem}.expected")),
+            rendered,
+        ));
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    golden::assert_none(&failures);
 }
 
 #[test]

@@ -5,6 +5,8 @@
 //! `edgewise check-alg` report it, is in `NAME.expected`; `EDGEWISE_BLESS=1`
 //! rewrites those files, to be reviewed like code.
 
+mod golden;
+
 use std::path::{Path, PathBuf};
 
 use edgewise_core::formats::{self, Format};
@@ -203,7 +205,6 @@ fn committed(dir: &Path) -> Vec<(String, Vec<u8>)> {
 #[test]
 fn every_hostile_input_gets_its_expected_message() {
     let dir = corpus_dir();
-    let bless = std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0");
     let files = committed(&dir);
     assert!(
         files.len() >= 20,
@@ -231,25 +232,13 @@ fn every_hostile_input_gets_its_expected_message() {
         let stem = name
             .rsplit_once('.')
             .map_or(name.as_str(), |(stem, _)| stem);
-        let expected_path = dir.join(format!("{stem}.expected"));
-        if bless {
-            std::fs::write(&expected_path, &actual).expect("writable");
-            continue;
-        }
-        let expected = std::fs::read_to_string(&expected_path).unwrap_or_default();
-        if actual != expected {
-            failures.push(format!(
-                "{name}\n--- expected\n{expected}--- actual\n{actual}"
-            ));
-        }
+        failures.extend(golden::compare(
+            &dir.join(format!("{stem}.expected")),
+            &actual,
+        ));
     }
     assert!(count >= 40, "only {count} cases ran");
-    assert!(
-        failures.is_empty(),
-        "{} cases differ (EDGEWISE_BLESS=1 rewrites them):\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    golden::assert_none(&failures);
 }
 
 #[test]

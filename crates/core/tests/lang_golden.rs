@@ -5,6 +5,8 @@
 
 mod lang_support;
 
+mod golden;
+
 use edgewise_core::lang::{self, Program, RunOptions, Topology, Value};
 use edgewise_core::mesh::{EdgeId, FaceId, VertexId, WingedEdgeMesh, winged_edge};
 use glam::Vec3;
@@ -15,33 +17,6 @@ use std::path::{Path, PathBuf};
 
 fn golden_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/algorithms")
-}
-
-fn blessing() -> bool {
-    std::env::var_os("EDGEWISE_BLESS").is_some_and(|v| v != "0")
-}
-
-/// Compares `actual` with the file, or rewrites the file when blessing.
-/// Returns a description of the difference, to report all at once.
-fn compare(path: &Path, actual: &str) -> Option<String> {
-    if blessing() {
-        fs::create_dir_all(path.parent().expect("golden files live in a folder"))
-            .expect("create folder");
-        fs::write(path, actual).expect("write golden file");
-        return None;
-    }
-    let expected = fs::read_to_string(path).unwrap_or_default();
-    if expected == actual {
-        return None;
-    }
-    Some(format!(
-        "{} differs (run with EDGEWISE_BLESS=1 to accept):\n--- expected\n{expected}\n--- actual\n{actual}",
-        path.display()
-    ))
-}
-
-fn finish(problems: &[String]) {
-    assert!(problems.is_empty(), "{}", problems.join("\n\n"));
 }
 
 #[test]
@@ -68,9 +43,9 @@ fn error_corpus_renders_as_recorded() {
             continue;
         }
         let rendered = lang::render_all(&diagnostics, &source, Some(&name));
-        problems.extend(compare(&case.with_extension("txt"), &rendered));
+        problems.extend(golden::compare(&case.with_extension("txt"), &rendered));
     }
-    finish(&problems);
+    golden::assert_none(&problems);
 }
 
 #[test]
@@ -290,9 +265,9 @@ fn library_traces_render_as_recorded() {
     let folder = golden_root().join("traces");
     let problems: Vec<String> = cases
         .iter()
-        .filter_map(|(name, text)| compare(&folder.join(format!("{name}.txt")), text))
+        .filter_map(|(name, text)| golden::compare(&folder.join(format!("{name}.txt")), text))
         .collect();
-    finish(&problems);
+    golden::assert_none(&problems);
 }
 
 #[test]
@@ -301,10 +276,10 @@ fn disassembly_renders_as_recorded() {
     let mut problems = Vec::new();
     for (program, file) in [(&winged_lib, "winged-edge"), (&half_lib, "half-edge")] {
         let text = lang::disassemble_all(program.algorithms.iter().map(AsRef::as_ref));
-        problems.extend(compare(
+        problems.extend(golden::compare(
             &golden_root().join(format!("disasm/{file}.txt")),
             &text,
         ));
     }
-    finish(&problems);
+    golden::assert_none(&problems);
 }

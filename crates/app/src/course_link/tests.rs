@@ -5,6 +5,9 @@ use proptest::prelude::*;
 
 use super::*;
 
+#[path = "../../../core/tests/golden/mod.rs"]
+mod golden;
+
 const BASE: &str = "https://example.org/edgewise/index.html";
 
 /// Splits a URL into what `location.search` and `location.hash` give.
@@ -306,15 +309,7 @@ fn messages_match_the_golden_file() {
             actual.push_str(&format!("    {message}\n"));
         }
     }
-    if std::env::var_os("EDGEWISE_BLESS").is_some() {
-        std::fs::write(&path, &actual).expect("writable golden file");
-        return;
-    }
-    assert!(
-        expected == actual,
-        "the messages differ from {} (run with EDGEWISE_BLESS=1 to accept):\n{actual}",
-        path.display()
-    );
+    golden::assert_matches(&path, actual);
 }
 
 /// A float that survives printing with four decimals exactly.
