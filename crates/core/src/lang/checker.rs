@@ -135,23 +135,30 @@ struct Checker<'a> {
 }
 
 impl Checker<'_> {
-    /// Past [`MAX_ERRORS`] errors further ones are dropped (and their hints
-    /// not searched for), so a hostile file cannot make checking slow.
+    /// After [`MAX_ERRORS`] errors one more says so and the rest are
+    /// dropped (their hints not searched for), so a hostile file can make
+    /// checking neither slow nor its report long.
     fn full(&self) -> bool {
-        self.diagnostics.len() > MAX_ERRORS
+        self.diagnostics.len() >= MAX_ERRORS
+    }
+
+    fn report(&mut self, diagnostic: Diagnostic) {
+        match self.diagnostics.len() {
+            n if n < MAX_ERRORS => self.diagnostics.push(diagnostic),
+            MAX_ERRORS => self.diagnostics.push(Diagnostic::error(
+                diagnostic.span,
+                format!("more than {MAX_ERRORS} errors; the rest of the file was not checked"),
+            )),
+            _ => {}
+        }
     }
 
     fn error(&mut self, span: Span, message: String) {
-        if !self.full() {
-            self.diagnostics.push(Diagnostic::error(span, message));
-        }
+        self.report(Diagnostic::error(span, message));
     }
 
     fn error_with_hint(&mut self, span: Span, message: String, hint: String) {
-        if !self.full() {
-            self.diagnostics
-                .push(Diagnostic::error(span, message).with_hint(hint));
-        }
+        self.report(Diagnostic::error(span, message).with_hint(hint));
     }
 
     fn text(&self, span: Span) -> String {
@@ -288,10 +295,11 @@ impl Checker<'_> {
         if let Some((_, variable)) = self.scope.find(name) {
             return variable.ty;
         }
+        let message = format!("unknown variable `{name}`");
         if self.full() {
+            self.error(span, message);
             return None;
         }
-        let message = format!("unknown variable `{name}`");
         let names = self.scope.variables.iter().map(|v| v.name.as_str());
         if let Some(near) = nearest(name, names) {
             self.error_with_hint(span, message, format!("did you mean `{near}`?"));
