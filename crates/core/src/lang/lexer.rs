@@ -176,8 +176,10 @@ impl Lexer<'_> {
                     .unwrap_or('?');
                 self.pos += ch.len_utf8();
                 let span = Span::new(start, self.pos);
-                let diagnostic =
-                    Diagnostic::error(span, format!("unexpected character `{}`", ch.escape_debug()));
+                let diagnostic = Diagnostic::error(
+                    span,
+                    format!("unexpected character `{}`", ch.escape_debug()),
+                );
                 self.report(match ch {
                     '{' | '}' => diagnostic.with_hint("blocks are written `begin … end`"),
                     '/' => {
