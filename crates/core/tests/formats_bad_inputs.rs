@@ -9,7 +9,7 @@
 
 mod golden;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use edgewise_core::formats::{self, Format, Location, MAX_FILE_BYTES};
 use edgewise_core::mesh::Structure;
@@ -25,50 +25,24 @@ fn structure_for(name: &str) -> Structure {
         .unwrap_or(Structure::WingedEdge)
 }
 
-/// The inputs of the corpus (every file but the `.expected` ones and the
-/// README), sorted.
-fn inputs(dir: &Path) -> Vec<PathBuf> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .expect("tests/bad-inputs exists")
-        .map(|entry| entry.expect("entry").path())
-        .filter(|path| {
-            let name = path
-                .file_name()
-                .map(|n| n.to_string_lossy().into_owned())
-                .unwrap_or_default();
-            !name.ends_with(".expected") && name != "README.md"
-        })
-        .collect();
-    files.sort();
-    files
-}
-
 #[test]
 fn every_bad_input_is_refused_with_its_expected_message() {
     let dir = corpus_dir();
-    let files = inputs(&dir);
+    let names = golden::corpus_inputs(&dir);
     assert!(
-        files.len() >= 40,
+        names.len() >= 40,
         "the corpus has only {} files",
-        files.len()
+        names.len()
     );
     let mut failures = Vec::new();
-    for path in &files {
-        let name = path
-            .file_name()
-            .expect("name")
-            .to_string_lossy()
-            .into_owned();
-        let bytes = std::fs::read(path).expect("readable");
-        let rendered = match formats::load(&bytes, &name, structure_for(&name)) {
+    for name in &names {
+        let bytes = std::fs::read(dir.join(name)).expect("readable");
+        let rendered = match formats::load(&bytes, name, structure_for(name)) {
             Ok(_) => format!("{name}: LOADED, but this file must be refused\n"),
-            Err(error) => error.render(&name),
+            Err(error) => error.render(name),
         };
-        let stem = name
-            .rsplit_once('.')
-            .map_or(name.as_str(), |(stem, _)| stem);
         failures.extend(golden::compare(
-            &dir.join(format!("{stem}.expected")),
+            &golden::expected_path(&dir, name),
             &rendered,
         ));
     }
@@ -77,21 +51,7 @@ fn every_bad_input_is_refused_with_its_expected_message() {
 
 #[test]
 fn every_expected_file_has_its_input() {
-    let dir = corpus_dir();
-    let stems: Vec<String> = inputs(&dir)
-        .iter()
-        .filter_map(|p| p.file_stem().map(|s| s.to_string_lossy().into_owned()))
-        .collect();
-    for entry in std::fs::read_dir(&dir).expect("dir") {
-        let name = entry
-            .expect("entry")
-            .file_name()
-            .to_string_lossy()
-            .into_owned();
-        if let Some(stem) = name.strip_suffix(".expected") {
-            assert!(stems.iter().any(|s| s == stem), "{name} has no input file");
-        }
-    }
+    golden::assert_every_expected_has_input(&corpus_dir());
 }
 
 #[test]

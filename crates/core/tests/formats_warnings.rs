@@ -5,30 +5,13 @@
 
 mod golden;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use edgewise_core::formats::{self, Format, SaveOptions};
 use edgewise_core::mesh::Structure;
 
 fn corpus_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/warnings")
-}
-
-/// The inputs (every file but the `.expected` ones and the README), sorted.
-fn inputs(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .expect("tests/warnings exists")
-        .map(|entry| {
-            entry
-                .expect("entry")
-                .file_name()
-                .to_string_lossy()
-                .into_owned()
-        })
-        .filter(|name| !name.ends_with(".expected") && name != "README.md")
-        .collect();
-    names.sort();
-    names
 }
 
 /// How many vertices a "split into 7, 12 and 13" warning adds (two here).
@@ -44,7 +27,7 @@ fn copies(message: &str) -> usize {
 #[test]
 fn every_file_loads_with_its_expected_warnings() {
     let dir = corpus_dir();
-    let names = inputs(&dir);
+    let names = golden::corpus_inputs(&dir);
     assert!(
         names.len() >= 2,
         "the corpus has only {} files",
@@ -79,11 +62,8 @@ fn every_file_loads_with_its_expected_warnings() {
         assert_eq!(rendered[0], rendered[1], "{name}: the structures disagree");
         let rendered = &rendered[0];
         assert!(!rendered.is_empty(), "{name} loads without a warning");
-        let stem = name
-            .rsplit_once('.')
-            .map_or(name.as_str(), |(stem, _)| stem);
         failures.extend(golden::compare(
-            &dir.join(format!("{stem}.expected")),
+            &golden::expected_path(&dir, name),
             rendered,
         ));
     }
@@ -92,21 +72,5 @@ fn every_file_loads_with_its_expected_warnings() {
 
 #[test]
 fn every_expected_file_has_its_input() {
-    let dir = corpus_dir();
-    let names = inputs(&dir);
-    for entry in std::fs::read_dir(&dir).expect("dir") {
-        let name = entry
-            .expect("entry")
-            .file_name()
-            .to_string_lossy()
-            .into_owned();
-        if let Some(stem) = name.strip_suffix(".expected") {
-            assert!(
-                names
-                    .iter()
-                    .any(|n| n.rsplit_once('.').is_some_and(|(s, _)| s == stem)),
-                "{name} has no input file"
-            );
-        }
-    }
+    golden::assert_every_expected_has_input(&corpus_dir());
 }

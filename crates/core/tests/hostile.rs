@@ -187,19 +187,15 @@ fn outcome(name: &str, bytes: &[u8]) -> String {
     }
 }
 
+/// The cases kept as files, by name, with their bytes.
 fn committed(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
-        .expect("tests/hostile exists")
-        .map(|entry| entry.expect("entry").path())
-        .filter_map(|path| {
-            let name = path.file_name()?.to_string_lossy().into_owned();
-            let skip =
-                name.ends_with(".expected") || name == "README.md" || name.ends_with(".link");
-            (!skip).then(|| (name, std::fs::read(&path).expect("readable")))
+    golden::corpus_inputs(dir)
+        .into_iter()
+        .map(|name| {
+            let bytes = std::fs::read(dir.join(&name)).expect("readable");
+            (name, bytes)
         })
-        .collect();
-    files.sort();
-    files
+        .collect()
 }
 
 #[test]
@@ -229,11 +225,8 @@ fn every_hostile_input_gets_its_expected_message() {
             .expect("thread starts")
             .join()
             .unwrap_or_else(|_| format!("{name}: PANICKED\n"));
-        let stem = name
-            .rsplit_once('.')
-            .map_or(name.as_str(), |(stem, _)| stem);
         failures.extend(golden::compare(
-            &dir.join(format!("{stem}.expected")),
+            &golden::expected_path(&dir, &name),
             &actual,
         ));
     }
