@@ -788,32 +788,32 @@ impl Parser<'_> {
     /// Counts one level of nesting; past the limit, reports it once and
     /// skips the rest of the file, which ends every open construct.
     fn enter(&mut self) -> bool {
-        if self.depth < MAX_NESTING {
-            self.depth += 1;
-            return true;
-        }
         let span = self.token().span;
-        self.give_up(
-            span,
-            &format!("this is nested too deeply (more than {MAX_NESTING} levels)"),
-        );
-        false
+        self.deepen(span, || {
+            format!("this is nested too deeply (more than {MAX_NESTING} levels)")
+        })
     }
 
-    /// Counts one more operator or lookup of a chain that began at `depth`;
-    /// past the limit, reports it at `operator` and skips the rest of the file.
+    /// Counts one more operator or lookup of a chain (the caller restores
+    /// the depth after the chain); past the limit, reports it at `operator`
+    /// and skips the rest of the file.
     fn chain(&mut self, operator: Span) -> bool {
+        self.deepen(operator, || {
+            format!(
+                "this expression is too long (more than {MAX_NESTING} operators, lookups and \
+                 levels of nesting); split it into steps with variables"
+            )
+        })
+    }
+
+    /// One level deeper, or, past [`MAX_NESTING`], `why` at `span` and the
+    /// rest of the file skipped.
+    fn deepen(&mut self, span: Span, why: impl FnOnce() -> String) -> bool {
         if self.depth < MAX_NESTING {
             self.depth += 1;
             return true;
         }
-        self.give_up(
-            operator,
-            &format!(
-                "this expression is too long (more than {MAX_NESTING} operators, lookups and \
-                 levels of nesting); split it into steps with variables"
-            ),
-        );
+        self.give_up(span, &why());
         false
     }
 
