@@ -15,19 +15,18 @@ pub mod library;
 pub mod panel;
 pub mod session;
 
+use edgewise_core::schema::ElementRef;
+use edgewise_core::schema::Structure;
 use std::collections::{BTreeSet, HashMap};
 use std::sync::Arc;
 
-use edgewise_core::{
-    lang::{Algorithm, Structure},
-    mesh::Mesh,
-};
+use edgewise_core::{lang::Algorithm, mesh::Mesh};
 
-pub use frame::{TraceFrame, TraceRole};
+pub use frame::TraceFrame;
 pub use library::{AlgorithmLibrary, Origin};
 pub use session::{PendingRun, Run, TraceSession};
 
-use crate::{selection::ElementRef, theme::Theme};
+use crate::theme::Theme;
 
 /// Seconds between automatic steps when playing, by default.
 const DEFAULT_DELAY: f32 = 0.6;

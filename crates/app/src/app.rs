@@ -1,6 +1,7 @@
 //! The top-level eframe application: a mesh document, the 3D view, the
 //! tables, and the commands the JavaScript API and the UI share.
 
+use edgewise_core::schema::{Column, ElementKind, ElementRef};
 use egui_extras::{Size, StripBuilder};
 
 use edgewise_core::{
@@ -16,7 +17,7 @@ use crate::{
     obj_editor::{EDITOR_FILE, MAX_EDITOR_BYTES, ObjEditor},
     paint::Paint,
     samples::{self, SampleData},
-    selection::{ElementKind, ElementRef, Role},
+    selection::Role,
     settings::Settings,
     state::{AppState, Counts, DialogState, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
@@ -328,11 +329,11 @@ impl EdgewiseApp {
         }
         let role = ctx.input(|i| {
             [
-                (egui::Key::N, Role::SuccessorEdge),
-                (egui::Key::P, Role::PredecessorEdge),
-                (egui::Key::T, Role::PairEdge),
-                (egui::Key::F, Role::Face),
-                (egui::Key::V, Role::EndVertex),
+                (egui::Key::N, Role::Column(Column::SuccessorEdge)),
+                (egui::Key::P, Role::Column(Column::PredecessorEdge)),
+                (egui::Key::T, Role::Column(Column::PairEdge)),
+                (egui::Key::F, Role::Column(Column::Face)),
+                (egui::Key::V, Role::Column(Column::EndVertex)),
             ]
             .into_iter()
             .find(|(key, _)| i.key_pressed(*key))
@@ -368,7 +369,7 @@ impl EdgewiseApp {
             backend: self.backend.as_str(),
             frames: self.frames,
             mesh: doc.map(|d| d.name.clone()),
-            structure: doc.map(|d| structure_name(d.structure())),
+            structure: doc.map(|d| d.structure().link_name()),
             counts,
             selection: doc.and_then(Document::selection),
             highlights: paint
@@ -394,7 +395,7 @@ impl EdgewiseApp {
                 .map(|(file, structure)| DialogState {
                     kind: "structure",
                     file: file.to_owned(),
-                    structure: structure_name(structure),
+                    structure: structure.link_name(),
                 }),
         }
     }
@@ -902,22 +903,5 @@ fn counts(mesh: &Mesh) -> Counts {
         edges: mesh.edge_count(),
         faces: mesh.face_count(),
         halfedges: mesh.edge_count() * 2,
-    }
-}
-
-/// The JavaScript API's structure names.
-pub fn structure_name(structure: Structure) -> &'static str {
-    match structure {
-        Structure::WingedEdge => "winged",
-        Structure::HalfEdge => "half",
-    }
-}
-
-/// Parses the JavaScript API's structure names.
-pub fn parse_structure(name: &str) -> Option<Structure> {
-    match name {
-        "winged" | "winged-edge" | "wtb" => Some(Structure::WingedEdge),
-        "half" | "half-edge" | "htb" => Some(Structure::HalfEdge),
-        _ => None,
     }
 }

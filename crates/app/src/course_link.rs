@@ -12,6 +12,7 @@
 //! that field keeps its default, so a link with one typo still opens the
 //! rest of its view. See docs/embedding.md for the parameters.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use base64::Engine as _;
@@ -19,7 +20,6 @@ use edgewise_core::mesh::Structure;
 
 use crate::{
     Argument,
-    selection::{ElementKind, ElementRef},
     view3d::{Camera, DrawIds, ViewOptions},
 };
 
@@ -30,27 +30,21 @@ pub const MAX_PAYLOAD_CHARS: usize = 1 << 20;
 pub const MAX_INFLATED_BYTES: usize = 8 << 20;
 /// The colour keys `colors=` accepts: the trace roles as `state()` names
 /// them, then the selection roles in camelCase.
-pub const COLOR_KEYS: &[&str] = &[
-    "lookup",
-    "compared",
-    "variable",
-    "highlighted",
-    "marked",
-    "selected",
-    "incidentEdge",
-    "startVertex",
-    "endVertex",
-    "leftFace",
-    "rightFace",
-    "leftPredecessor",
-    "leftSuccessor",
-    "rightPredecessor",
-    "rightSuccessor",
-    "face",
-    "pairEdge",
-    "successorEdge",
-    "predecessorEdge",
-];
+pub fn color_keys() -> Vec<String> {
+    use crate::trace_role::TraceRole;
+    let trace = [
+        TraceRole::Lookup,
+        TraceRole::Compared,
+        TraceRole::Variable,
+        TraceRole::Highlighted,
+        TraceRole::Output,
+    ];
+    trace
+        .into_iter()
+        .map(|role| role.key().to_owned())
+        .chain(crate::selection::Role::all().map(crate::selection::Role::setting_key))
+        .collect()
+}
 /// The mesh formats an inline mesh may be written in (all have a text form).
 pub const INLINE_FORMATS: &[&str] = &["obj", "ply", "wtb", "htb"];
 /// The range `meshScale=` accepts, as the View menu's slider.
@@ -159,7 +153,7 @@ pub struct CourseLink {
     pub panels: Option<Panels>,
     /// `?present=1`: presentation mode.
     pub present: bool,
-    /// Role colours changed from the defaults: a key of [`COLOR_KEYS`] to RGB.
+    /// Role colours changed from the defaults: a key of [`color_keys`] to RGB.
     pub colors: BTreeMap<String, [u8; 3]>,
     /// The algorithm view's font size, in points.
     pub code_size: Option<f32>,
@@ -255,7 +249,7 @@ impl CourseLink {
             None => {}
         }
         if let Some(structure) = self.structure {
-            push("structure", crate::structure_name(structure).to_owned());
+            push("structure", structure.link_name().to_owned());
         }
         if let Some(name) = &self.algorithm {
             push("algorithm", name.clone());
@@ -491,7 +485,7 @@ impl Parser {
         let result = match key {
             "sample" => self.sample(value),
             "mesh" => self.mesh_path(value),
-            "structure" => crate::parse_structure(value)
+            "structure" => Structure::parse_link_name(value)
                 .map(|s| self.link.structure = Some(s))
                 .ok_or("expected winged or half, such as structure=half"),
             "algorithm" => parse_name(value)
@@ -659,12 +653,13 @@ impl Parser {
                 ));
                 continue;
             };
-            if !COLOR_KEYS.contains(&key) {
+            let keys = color_keys();
+            if !keys.iter().any(|known| known == key) {
                 self.messages.push(format!(
                     "colors={}: {} is not a role; the roles are {}",
                     quote(entry),
                     quote(key),
-                    COLOR_KEYS.join(", ")
+                    keys.join(", ")
                 ));
                 continue;
             }

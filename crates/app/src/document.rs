@@ -1,11 +1,12 @@
 //! One open mesh: its structure, where it came from, and what is selected.
 
+use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
 use edgewise_core::{
     formats::{self, FormatError, Loaded},
     mesh::{EdgeCorrespondence, EdgeId, HalfEdgeId, Mesh, Structure},
 };
 
-use crate::selection::{self, ElementKind, ElementRef, Highlight};
+use crate::selection::{self, Highlight};
 
 /// A mesh open in the app with its selection.
 pub struct Document {
@@ -98,7 +99,7 @@ impl Document {
     /// Selects `element` (or clears the selection), refusing ids the mesh lacks.
     pub fn select(&mut self, element: Option<ElementRef>) -> Result<(), String> {
         if let Some(element) = element
-            && !element.exists_in(&self.mesh)
+            && !self.mesh.contains(element)
         {
             let count = match element.kind {
                 ElementKind::Vertex => self.mesh.vertex_count(),

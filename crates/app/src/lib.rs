@@ -21,6 +21,7 @@ pub mod settings;
 pub mod state;
 mod tables;
 mod theme;
+pub mod trace_role;
 pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
@@ -29,7 +30,7 @@ pub mod web;
 mod web_files;
 
 pub use app::{
-    EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed, parse_structure,
-    settings_ui::Presentation, structure_name,
+    EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed,
+    settings_ui::Presentation,
 };
 pub use backend::GraphicsBackend;

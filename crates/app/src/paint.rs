@@ -2,12 +2,13 @@
 //! and a trace step each produce one [`Paint`]; both views draw from it, so
 //! they can never disagree.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::HashMap;
 
 use egui::Color32;
 
 use crate::{
-    selection::{self, ElementKind, ElementRef, Highlight, Role},
+    selection::{self, Highlight, Role},
     theme::Theme,
 };
 

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use egui::Color32;
 use serde::{Deserialize, Serialize};
 
-use crate::{algorithm::TraceRole, selection::Role, theme::Theme};
+use crate::{selection::Role, theme::Theme, trace_role::TraceRole};
 
 /// The local-storage key.
 pub const STORAGE_KEY: &str = "edgewise.settings";

@@ -3,16 +3,13 @@
 //! Browser tests and page authors read this instead of the pixels, so every
 //! field is plain data that serialises to JSON.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use edgewise_core::lang::Algorithm;
 use serde::Serialize;
 
-use crate::{
-    algorithm::TraceFrame,
-    code_editor::Diagnostic,
-    selection::{ElementKind, ElementRef},
-};
+use crate::{algorithm::TraceFrame, code_editor::Diagnostic};
 
 /// A JSON-serialisable snapshot of what the app shows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -95,7 +92,7 @@ impl TraceState {
     pub fn new(algorithm: &Algorithm, frame: &TraceFrame) -> Self {
         Self {
             algorithm: algorithm.name.clone(),
-            structure: crate::structure_name(algorithm.structure.into()),
+            structure: algorithm.structure.link_name(),
             step: frame.step,
             steps: frame.steps,
             line: frame.line,

@@ -5,14 +5,12 @@
 //! a link: clicking it selects that element, so a student can walk the
 //! structure from the tables alone.
 
-use edgewise_core::mesh::Mesh;
+use edgewise_core::mesh::{Mesh, VertexId};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
 use egui::RichText;
-use egui_extras::{Column, TableBuilder};
+use egui_extras::TableBuilder;
 
-use crate::{
-    paint::Paint,
-    selection::{ElementKind, ElementRef, Role},
-};
+use crate::{paint::Paint, selection::Role};
 
 const ROW_HEIGHT: f32 = 20.0;
 /// Shown for a missing (boundary) face.
@@ -30,8 +28,8 @@ enum Cell {
     /// The row's own id: clicking it selects the row.
     Id(ElementRef),
     Text(String),
-    /// A reference to another element, in the column named by its role.
-    Link(Option<ElementRef>, Role),
+    /// A reference to another element, and the column that holds it.
+    Link(Option<ElementRef>, Column),
 }
 
 /// Draws one table of `kind` filling `ui`, coloured by `paint`, scrolling
@@ -44,43 +42,21 @@ pub fn table_ui(
     scroll_to: Option<u32>,
     response: &mut TablesResponse,
 ) {
-    let half = matches!(mesh, Mesh::Half(_));
-    let headers: &[&str] = match (kind, half) {
-        (ElementKind::Vertex, _) => &["id", "x", "y", "z", "incident edge", "labels"],
-        (ElementKind::Face, _) => &["id", "incident edge", "labels"],
-        (ElementKind::Edge, false) => &[
-            "id",
-            "start",
-            "end",
-            "left face",
-            "right face",
-            "left pred",
-            "left succ",
-            "right pred",
-            "right succ",
-            "labels",
-        ],
-        (ElementKind::Edge, true) => &[
-            "id",
-            "end vertex",
-            "face",
-            "pair",
-            "successor",
-            "start vertex",
-            "predecessor",
-            "labels",
-        ],
-    };
-    let rows = match kind {
-        ElementKind::Vertex => mesh.vertex_count(),
-        ElementKind::Edge => mesh.edge_row_count(),
-        ElementKind::Face => mesh.face_count(),
-    };
-    let derived_from = if half && kind == ElementKind::Edge {
-        5
-    } else {
-        usize::MAX
-    };
+    let entries = Column::table(mesh.structure(), kind);
+    let mut headers = vec!["id"];
+    // Whether each header's column is derived, shown dimmed.
+    let mut derived = vec![false];
+    for entry in entries {
+        let names: &[&str] = match entry.column {
+            Column::Position => &Column::COORDINATES,
+            _ => std::slice::from_ref(&entry.header),
+        };
+        headers.extend(names);
+        derived.extend(names.iter().map(|_| entry.storage == Storage::Derived));
+    }
+    headers.push("labels");
+    derived.push(false);
+    let rows = mesh.count(kind);
 
     let mut table = TableBuilder::new(ui)
         .id_salt(kind)
@@ -94,9 +70,9 @@ pub fn table_ui(
     }
     for (i, _) in headers.iter().enumerate() {
         table = table.column(if i + 1 == headers.len() {
-            Column::remainder().at_least(60.0)
+            egui_extras::Column::remainder().at_least(60.0)
         } else {
-            Column::auto().at_least(if i == 0 { 36.0 } else { 48.0 })
+            egui_extras::Column::auto().at_least(if i == 0 { 36.0 } else { 48.0 })
         });
     }
     table
@@ -104,11 +80,7 @@ pub fn table_ui(
             for (i, title) in headers.iter().enumerate() {
                 header.col(|ui| {
                     let text = RichText::new(*title).strong();
-                    ui.label(if i >= derived_from && i + 1 < headers.len() {
-                        text.weak()
-                    } else {
-                        text
-                    });
+                    ui.label(if derived[i] { text.weak() } else { text });
                 });
             }
         })
@@ -132,7 +104,7 @@ pub fn table_ui(
                                 colour.gamma_multiply(0.28),
                             );
                         }
-                        let dim = i >= derived_from && i + 1 < headers.len();
+                        let dim = derived.get(i).copied().unwrap_or_default();
                         match cell {
                             Cell::Id(element) => {
                                 let label = ui
@@ -140,11 +112,7 @@ pub fn table_ui(
                                         selected_row,
                                         RichText::new(element.id.to_string()).monospace(),
                                     )
-                                    .on_hover_text(format!(
-                                        "select {} {}",
-                                        element.kind.title().to_lowercase(),
-                                        element.id
-                                    ));
+                                    .on_hover_text(format!("select {element}"));
                                 if label.clicked() {
                                     clicked_link = Some(element);
                                 }
@@ -159,21 +127,22 @@ pub fn table_ui(
                             Cell::Link(None, _) => {
                                 ui.label(RichText::new(NONE).monospace().weak());
                             }
-                            Cell::Link(Some(target), role) => {
+                            Cell::Link(Some(target), column) => {
                                 let mut text = RichText::new(target.id.to_string()).monospace();
-                                if let Some(tint) = paint.cells.get(&(element, role)) {
+                                if let Some(tint) =
+                                    paint.cells.get(&(element, Role::Column(column)))
+                                {
                                     text =
                                         text.background_color(tint.gamma_multiply(0.55)).strong();
                                 } else if dim {
                                     text = text.weak();
                                 }
-                                let target_name =
-                                    format!("{} {}", target.kind.title().to_lowercase(), target.id);
+                                let target_name = target.to_string();
                                 let link =
                                     ui.link(text).on_hover_text(format!("select {target_name}"));
                                 // Screen readers (and UI tests) hear which reference this is.
                                 let column = headers.get(i).copied().unwrap_or_default();
-                                let row_name = format!("{} {}", kind.title().to_lowercase(), id);
+                                let row_name = element.to_string();
                                 link.widget_info(|| {
                                     egui::WidgetInfo::labeled(
                                         egui::Role::Link,
@@ -195,110 +164,25 @@ pub fn table_ui(
         });
 }
 
-/// The cells of one row; each reference carries the role naming its column.
+/// The cells of one row, in the order of [`Column::table`]: the id, the
+/// coordinates of a vertex, each reference with the column it is in, and the
+/// labels.
 fn row_cells(mesh: &Mesh, element: ElementRef) -> Vec<Cell> {
-    let role_of = |target: Option<ElementRef>, role: Role| -> Cell { Cell::Link(target, role) };
-    let labels = Cell::Text(String::new());
-    let index = element.id as usize;
-    let id = Cell::Id(element);
-    match (mesh, element.kind) {
-        (Mesh::Winged(m), ElementKind::Vertex) => match m.vertices().get(index) {
-            Some(v) => vec![
-                id,
-                coordinate(v.position.x),
-                coordinate(v.position.y),
-                coordinate(v.position.z),
-                role_of(v.incident_edge.map(ElementRef::edge), Role::IncidentEdge),
-                labels,
-            ],
-            None => Vec::new(),
-        },
-        (Mesh::Half(m), ElementKind::Vertex) => match m.vertices().get(index) {
-            Some(v) => vec![
-                id,
-                coordinate(v.position.x),
-                coordinate(v.position.y),
-                coordinate(v.position.z),
-                role_of(
-                    v.incident_edge.map(ElementRef::half_edge),
-                    Role::IncidentEdge,
-                ),
-                labels,
-            ],
-            None => Vec::new(),
-        },
-        (Mesh::Winged(m), ElementKind::Face) => match m.faces().get(index) {
-            Some(f) => vec![
-                id,
-                role_of(Some(ElementRef::edge(f.incident_edge)), Role::IncidentEdge),
-                labels,
-            ],
-            None => Vec::new(),
-        },
-        (Mesh::Half(m), ElementKind::Face) => match m.faces().get(index) {
-            Some(f) => vec![
-                id,
-                role_of(
-                    Some(ElementRef::half_edge(f.incident_edge)),
-                    Role::IncidentEdge,
-                ),
-                labels,
-            ],
-            None => Vec::new(),
-        },
-        (Mesh::Winged(m), ElementKind::Edge) => match m.edges().get(index) {
-            Some(e) => vec![
-                id,
-                role_of(Some(ElementRef::vertex(e.start_vertex)), Role::StartVertex),
-                role_of(Some(ElementRef::vertex(e.end_vertex)), Role::EndVertex),
-                role_of(e.left_face.map(ElementRef::face), Role::LeftFace),
-                role_of(e.right_face.map(ElementRef::face), Role::RightFace),
-                role_of(
-                    Some(ElementRef::edge(e.left_predecessor)),
-                    Role::LeftPredecessor,
-                ),
-                role_of(
-                    Some(ElementRef::edge(e.left_successor)),
-                    Role::LeftSuccessor,
-                ),
-                role_of(
-                    Some(ElementRef::edge(e.right_predecessor)),
-                    Role::RightPredecessor,
-                ),
-                role_of(
-                    Some(ElementRef::edge(e.right_successor)),
-                    Role::RightSuccessor,
-                ),
-                labels,
-            ],
-            None => Vec::new(),
-        },
-        (Mesh::Half(m), ElementKind::Edge) => match m.half_edges().get(index) {
-            Some(h) => {
-                let hid = edgewise_core::mesh::HalfEdgeId::new(element.id);
-                vec![
-                    id,
-                    role_of(Some(ElementRef::vertex(h.end_vertex)), Role::EndVertex),
-                    role_of(h.face.map(ElementRef::face), Role::Face),
-                    role_of(Some(ElementRef::half_edge(h.pair_edge)), Role::PairEdge),
-                    role_of(
-                        Some(ElementRef::half_edge(h.successor_edge)),
-                        Role::SuccessorEdge,
-                    ),
-                    role_of(
-                        m.start_vertex(hid).map(ElementRef::vertex),
-                        Role::StartVertex,
-                    ),
-                    role_of(
-                        m.predecessor_edge(hid).map(ElementRef::half_edge),
-                        Role::PredecessorEdge,
-                    ),
-                    labels,
-                ]
-            }
-            None => Vec::new(),
-        },
+    if !mesh.contains(element) {
+        return Vec::new();
     }
+    let mut cells = vec![Cell::Id(element)];
+    for entry in Column::table(mesh.structure(), element.kind) {
+        if entry.column == Column::Position {
+            let p = mesh.position(VertexId::new(element.id)).unwrap_or_default();
+            cells.extend([p.x, p.y, p.z].map(coordinate));
+        } else {
+            let target = mesh.reference(element, entry.column).ok().flatten();
+            cells.push(Cell::Link(target, entry.column));
+        }
+    }
+    cells.push(Cell::Text(String::new()));
+    cells
 }
 
 fn coordinate(value: f32) -> Cell {

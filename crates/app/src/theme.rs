@@ -3,7 +3,7 @@
 
 use egui::Color32;
 
-use crate::{algorithm::TraceRole, selection::Role};
+use crate::{selection::Role, trace_role::TraceRole};
 
 /// The bold code face for keywords (egui ships only a regular monospace).
 const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
@@ -54,9 +54,8 @@ impl Theme {
         ctx.set_visuals(visuals);
     }
 
-    /// The colour of a selection role in the 3D view and the tables. Left-side
-    /// wings are greens, right-side wings purples, so a student can tell the
-    /// two faces' traversals apart at a glance.
+    /// The colour of a selection role in the 3D view and the tables (each
+    /// column's [`edgewise_core::schema::Palette`] unless overridden).
     pub fn role_colour(&self, role: Role) -> Color32 {
         if let Some(&(_, colour)) = self.role_overrides.iter().find(|(r, _)| *r == role) {
             return colour;
@@ -68,18 +67,10 @@ impl Theme {
     pub fn default_role_colour(&self, role: Role) -> Color32 {
         let (light, dark) = match role {
             Role::Selected => ((0xd9, 0x48, 0x0f), (0xff, 0x87, 0x4d)),
-            Role::IncidentEdge => ((0x1c, 0x6d, 0xd0), (0x5c, 0xa8, 0xff)),
-            Role::StartVertex => ((0x0b, 0x7a, 0x75), (0x3f, 0xc1, 0xb8)),
-            Role::EndVertex => ((0x1c, 0x4f, 0xa0), (0x74, 0x9c, 0xf0)),
-            Role::LeftFace | Role::Face => ((0x2b, 0x8a, 0x3e), (0x69, 0xdb, 0x7c)),
-            Role::RightFace => ((0x86, 0x2e, 0x9c), (0xcc, 0x8b, 0xe8)),
-            Role::LeftPredecessor | Role::PredecessorEdge => {
-                ((0x5c, 0x94, 0x0d), (0xa9, 0xe3, 0x4b))
+            Role::Column(column) => {
+                let palette = column.palette();
+                (palette.light.into(), palette.dark.into())
             }
-            Role::LeftSuccessor | Role::SuccessorEdge => ((0x08, 0x7f, 0x5b), (0x38, 0xd9, 0xa9)),
-            Role::RightPredecessor => ((0xae, 0x3e, 0xc9), (0xe5, 0x99, 0xf7)),
-            Role::RightSuccessor => ((0x67, 0x41, 0xd9), (0xb1, 0x97, 0xfc)),
-            Role::PairEdge => ((0xc2, 0x25, 0x5c), (0xf7, 0x83, 0xac)),
         };
         let (r, g, b) = if self.dark { dark } else { light };
         Color32::from_rgb(r, g, b)

@@ -5,6 +5,7 @@
 //! that box, and defines `window.edgewise` once the app is running, so page
 //! authors and browser tests can tell when it is ready.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
 use edgewise_core::{formats::MAX_FILE_BYTES, lang::MAX_SOURCE_BYTES, mesh::Structure};
@@ -16,7 +17,6 @@ use crate::{
     Argument, EdgewiseApp, FetchedMesh,
     course_link::{CourseLink, MeshSource},
     files::{ANNOUNCE_BYTES, SaveFormat, SavedFile, opening_label},
-    selection::{ElementKind, ElementRef},
 };
 
 /// The id of the canvas in index.html.
@@ -299,7 +299,7 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
         settle((|| {
             let structure = name
                 .as_string()
-                .and_then(|n| crate::parse_structure(&n))
+                .and_then(|n| Structure::parse_link_name(&n))
                 .ok_or_else(|| {
                     expected("setStructure(name)", "name", "'winged' or 'half'", &name)
                 })?;
@@ -338,7 +338,7 @@ fn install_js_api(runner: &eframe::WebRunner) -> Result<(), JsValue> {
             } else {
                 Some(
                     name.as_string()
-                        .and_then(|n| crate::parse_structure(&n))
+                        .and_then(|n| Structure::parse_link_name(&n))
                         .ok_or_else(|| {
                             expected(
                                 "chooseStructure(name)",
@@ -701,7 +701,7 @@ fn option_string(call: &str, options: &JsValue, key: &str) -> Result<Option<Stri
 fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
     option_string(call, options, "structure")?
         .map(|name| {
-            crate::parse_structure(&name).ok_or_else(|| {
+            Structure::parse_link_name(&name).ok_or_else(|| {
                 format!(
                     "{call}: options.structure must be 'winged' or 'half', not '{}'",
                     shown(&name)

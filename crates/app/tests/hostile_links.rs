@@ -8,12 +8,12 @@
 mod golden;
 mod support;
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
 use edgewise_app::{
     EdgewiseApp,
     course_link::{self, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS},
-    selection::{ElementKind, ElementRef},
 };
 use egui_kittest::Harness;
 

@@ -4,11 +4,9 @@
 
 mod support;
 
-use edgewise_app::{
-    Argument, course_link,
-    selection::{ElementKind, ElementRef},
-};
+use edgewise_app::{Argument, course_link};
 use edgewise_core::mesh::Structure;
+use edgewise_core::schema::{ElementKind, ElementRef};
 
 #[test]
 fn a_sample_an_algorithm_and_a_step() {

@@ -14,12 +14,9 @@
 
 mod support;
 
-use edgewise_app::{
-    Argument, EdgewiseApp,
-    selection::{ElementKind, ElementRef},
-    settings::Settings,
-};
+use edgewise_app::{Argument, EdgewiseApp, settings::Settings};
 use edgewise_core::mesh::Structure;
+use edgewise_core::schema::{ElementKind, ElementRef};
 use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
 use egui_kittest::{Harness, SnapshotOptions, TestRenderer, kittest::Queryable as _};
 

@@ -3,10 +3,8 @@
 
 mod support;
 
-use edgewise_app::{
-    Argument,
-    selection::{ElementKind, ElementRef},
-};
+use edgewise_app::Argument;
+use edgewise_core::schema::{ElementKind, ElementRef};
 use edgewise_core::{
     formats,
     mesh::{EdgeId, Mesh, Structure},

@@ -3,11 +3,9 @@
 
 mod support;
 
-use edgewise_app::{
-    EdgewiseApp,
-    selection::{ElementKind, ElementRef},
-};
+use edgewise_app::EdgewiseApp;
 use edgewise_core::mesh::{EdgeId, Mesh, Structure};
+use edgewise_core::schema::{ElementKind, ElementRef};
 use egui_kittest::{Harness, kittest::Queryable as _};
 
 fn harness() -> Harness<'static, EdgewiseApp> {

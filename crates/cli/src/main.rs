@@ -251,13 +251,6 @@ fn default_structure(asked: Option<StructureArg>) -> impl FnOnce(Format) -> Stru
     }
 }
 
-fn structure_name(structure: Structure) -> &'static str {
-    match structure {
-        Structure::WingedEdge => "winged-edge",
-        Structure::HalfEdge => "half-edge",
-    }
-}
-
 fn genus_text(stats: &MeshStats) -> String {
     match stats.components.as_slice() {
         [] => "- (no faces)".to_owned(),
@@ -273,11 +266,11 @@ fn info(path: &Path, structure: Option<StructureArg>) -> Outcome {
     let loaded = load(path, default_structure(structure))?;
     let stats = loaded.mesh.stats();
     let name = shown(path);
-    let mut structure_text = structure_name(loaded.mesh.structure()).to_owned();
+    let mut structure_text = loaded.mesh.structure().prose().to_owned();
     if let Some(from) = loaded.converted_from {
         structure_text.push_str(&format!(
             " (converted from the file's {} tables)",
-            structure_name(from)
+            from.prose()
         ));
     }
     let mut out = String::new();
@@ -343,7 +336,7 @@ fn check(path: &Path, structure: Option<StructureArg>) -> Outcome {
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),
-        structure_name(mesh.structure())
+        mesh.structure().prose()
     ));
     Ok(())
 }
@@ -431,7 +424,7 @@ fn trace(
         })?;
         inputs.push(parsed);
     }
-    let structure = Structure::from(algorithm.structure);
+    let structure = algorithm.structure;
     let loaded = load(meshfile, |_| structure)?;
     let inputs: Vec<(&str, Value)> = inputs.iter().map(|(n, v)| (n.as_str(), *v)).collect();
     let options = RunOptions { step_limit };

@@ -22,7 +22,7 @@ fn library_algorithm(file: usize, name: &str) -> std::sync::Arc<Algorithm> {
 
 /// Operations performed by one pass over every vertex.
 fn operations<T: Topology>(algorithm: &Algorithm, mesh: &T) -> u64 {
-    let vertices = mesh.count(lang::ElementKind::Vertex) as u32;
+    let vertices = mesh.count(edgewise_core::schema::ElementKind::Vertex) as u32;
     (0..vertices)
         .map(|v| {
             let run = lang::execute(
@@ -42,7 +42,7 @@ fn every_vertex<T: Topology>(
     algorithm: &std::sync::Arc<Algorithm>,
     mesh: &T,
 ) {
-    let vertices = mesh.count(lang::ElementKind::Vertex) as u32;
+    let vertices = mesh.count(edgewise_core::schema::ElementKind::Vertex) as u32;
     let mut group = c.benchmark_group(format!("vm/{label}"));
     group.sample_size(10);
     group.throughput(Throughput::Elements(operations(algorithm, mesh)));

@@ -11,8 +11,9 @@
 use std::sync::OnceLock;
 
 use crate::formats::{self, Format, Loaded};
-use crate::lang::{self, Element, RunOptions, Type, Value};
+use crate::lang::{self, RunOptions, Type, Value};
 use crate::mesh::{Mesh, Structure};
+use crate::schema::ElementRef;
 
 /// Operations each fuzzed algorithm may run: small, so iterations stay fast.
 pub const VM_STEP_LIMIT: usize = 2_000;
@@ -134,7 +135,7 @@ pub fn vm(data: &[u8]) {
                     };
                     let count = lang::Topology::count(mesh, kind).max(1);
                     let index = usize::from(byte) % count;
-                    Value::from(Element::new(kind, u32::try_from(index).unwrap_or(0)))
+                    Value::from(ElementRef::new(kind, u32::try_from(index).unwrap_or(0)))
                 }
             };
             inputs.push((param.name.as_str(), value));
@@ -162,7 +163,7 @@ pub fn vm(data: &[u8]) {
 
 /// The sample meshes [`vm`] runs algorithms on: the tetrahedron and the cube
 /// from meshes/, each in both structures.
-fn sample_mesh(structure: lang::Structure, choice: u8) -> &'static Mesh {
+fn sample_mesh(structure: Structure, choice: u8) -> &'static Mesh {
     static MESHES: OnceLock<[Mesh; 4]> = OnceLock::new();
     let meshes = MESHES.get_or_init(|| {
         let load =
@@ -180,8 +181,8 @@ fn sample_mesh(structure: lang::Structure, choice: u8) -> &'static Mesh {
         ]
     });
     let offset = match structure {
-        lang::Structure::WingedEdge => 0,
-        lang::Structure::HalfEdge => 1,
+        Structure::WingedEdge => 0,
+        Structure::HalfEdge => 1,
     };
     &meshes[usize::from(choice & 1) * 2 + offset]
 }

@@ -66,9 +66,9 @@ pub mod vm;
 pub use compiler::Algorithm;
 pub use diagnostic::{Diagnostic, Severity, Span, render_all};
 pub use disasm::{disassemble, disassemble_all};
-pub use topology::{LookupError, Topology};
+pub use topology::Topology;
 pub use trace::{Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
-pub use types::{Element, ElementKind, Field, Structure, Type, Value};
+pub use types::{Type, Value};
 pub use vm::{DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, run};
 
 use std::sync::Arc;

@@ -9,6 +9,7 @@ pub mod formats;
 pub mod fuzzing;
 pub mod lang;
 pub mod mesh;
+pub mod schema;
 
 /// The version of Edgewise, shared by the app, the CLI and the JavaScript API.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

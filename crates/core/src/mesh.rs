@@ -24,13 +24,14 @@ pub mod traversal;
 pub mod validate;
 pub mod winged_edge;
 
+pub use crate::schema::Structure;
 pub use convert::{ConvertError, EdgeCorrespondence};
 pub use error::{BuildError, BuildWarning, FaceRef};
 pub use half_edge::{HalfEdge, HalfEdgeMesh};
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 pub use polygons::Polygons;
 pub use stats::{ComponentStats, MeshStats};
-pub use structure::{Mesh, Structure};
+pub use structure::Mesh;
 pub use traversal::{FaceHalfEdges, FaceSides, VertexEdges, VertexHalfEdges};
-pub use validate::{Element, Field, Issue};
+pub use validate::{Element, Issue};
 pub use winged_edge::{Side, WingedEdge, WingedEdgeMesh};

@@ -5,9 +5,10 @@
 mod lang_support;
 
 use edgewise_core::lang::{
-    self, Algorithm, Element, ElementKind, Outcome, Program, RunOptions, Topology, Value, execute,
+    self, Algorithm, Outcome, Program, RunOptions, Topology, Value, execute,
 };
 use edgewise_core::mesh::Polygons;
+use edgewise_core::schema::{ElementKind, ElementRef};
 use lang_support::*;
 use proptest::prelude::*;
 use std::sync::Arc;
@@ -33,7 +34,7 @@ fn check_one(
     algorithm: &Algorithm,
     topology: &dyn Topology,
     polygons: &Polygons,
-    input: Element,
+    input: ElementRef,
 ) -> Result<(), String> {
     let param = algorithm
         .params()
@@ -72,9 +73,9 @@ fn check_one(
     Ok(())
 }
 
-fn all_inputs(topology: &dyn Topology, kind: ElementKind) -> Vec<Element> {
+fn all_inputs(topology: &dyn Topology, kind: ElementKind) -> Vec<ElementRef> {
     (0..topology.count(kind) as u32)
-        .map(|i| Element::new(kind, i))
+        .map(|i| ElementRef::new(kind, i))
         .collect()
 }
 
@@ -114,12 +115,12 @@ fn both_files_hold_the_same_algorithms_with_descriptions() {
         winged
             .algorithms
             .iter()
-            .all(|a| a.structure == lang::Structure::WingedEdge)
+            .all(|a| a.structure == edgewise_core::schema::Structure::WingedEdge)
     );
     assert!(
         half.algorithms
             .iter()
-            .all(|a| a.structure == lang::Structure::HalfEdge)
+            .all(|a| a.structure == edgewise_core::schema::Structure::HalfEdge)
     );
 }
 
@@ -263,7 +264,7 @@ fn exercise_extraordinary_vertices() {
         )
         .expect("inputs fit")
     };
-    assert_eq!(run(&cube).marked, [Element::Vertex(0)]);
+    assert_eq!(run(&cube).marked, [ElementRef::new(ElementKind::Vertex, 0)]);
     assert_eq!(
         run(&cube).messages,
         ["vertex 0 is extraordinary: its valence is 3"]
@@ -346,7 +347,7 @@ proptest! {
                 }
                 let kind = param_kind(algorithm);
                 let count = topology.count(kind) as u32;
-                let input = Element::new(kind, pick % count);
+                let input = ElementRef::new(kind, pick % count);
                 if let Err(problem) = check_one(algorithm, topology, &polygons, input) {
                     prop_assert!(false, "{}", problem);
                 }

@@ -4,9 +4,10 @@
 mod lang_support;
 
 use edgewise_core::lang::{
-    self, Algorithm, Element, ElementKind, Field, InputError, LookupError, Outcome, RunOptions,
-    RuntimeErrorKind, StepKind, Structure, Topology, Trace, Value, execute, run,
+    self, Algorithm, InputError, Outcome, RunOptions, RuntimeErrorKind, StepKind, Topology, Trace,
+    Value, execute, run,
 };
+use edgewise_core::schema::{Column, ElementKind, ElementRef, LookupError, Structure};
 use lang_support::*;
 use std::sync::Arc;
 
@@ -137,7 +138,7 @@ fn steps_carry_the_papers_operations_and_their_spans() {
         first.kind,
         StepKind::Lookup {
             base: Value::Vertex(1),
-            field: Field::IncidentEdge,
+            field: Column::IncidentEdge,
             result: Value::Edge(_)
         }
     ));
@@ -313,7 +314,7 @@ fn runtime_errors_name_the_line_and_the_values() {
     let we = winged(&grid);
     // Edge 0 runs along the bottom of the grid: one of its faces is missing.
     let missing_side = if we
-        .lookup(Element::Edge(0), Field::LeftFace)
+        .lookup(ElementRef::new(ElementKind::Edge, 0), Column::LeftFace)
         .expect("lookup")
         .is_none()
     {
@@ -466,9 +467,13 @@ impl Topology for Broken {
         1
     }
 
-    fn lookup(&self, element: Element, field: Field) -> Result<Option<Element>, LookupError> {
+    fn lookup(
+        &self,
+        element: ElementRef,
+        field: Column,
+    ) -> Result<Option<ElementRef>, LookupError> {
         match field {
-            Field::IncidentEdge => Ok(Some(Element::Edge(0))),
+            Column::IncidentEdge => Ok(Some(ElementRef::new(ElementKind::Edge, 0))),
             _ => Err(LookupError::NoSuchElement(element)),
         }
     }
@@ -506,7 +511,7 @@ fn fast_execution_and_full_traces_agree() {
                     .expect("a parameter")
                     .name
                     .as_str(),
-                Value::from(Element::new(kind, 3)),
+                Value::from(ElementRef::new(kind, 3)),
             )];
             let fast = execute(algorithm, &topology, &args, RunOptions::default()).expect("fits");
             let full = run(algorithm, &topology, &args, RunOptions::default()).expect("fits");

@@ -5,9 +5,10 @@
 use edgewise_core::mesh::half_edge;
 use edgewise_core::mesh::winged_edge;
 use edgewise_core::mesh::{
-    BuildError, BuildWarning, ConvertError, EdgeId, Element, FaceId, Field, HalfEdgeId,
-    HalfEdgeMesh, Issue, Polygons, VertexId, WingedEdgeMesh, generate,
+    BuildError, BuildWarning, ConvertError, EdgeId, Element, FaceId, HalfEdgeId, HalfEdgeMesh,
+    Issue, Polygons, VertexId, WingedEdgeMesh, generate,
 };
+use edgewise_core::schema::Column;
 use glam::Vec3;
 
 /// Faces read from "lines" 10, 11, 12, ... of a file.
@@ -312,7 +313,7 @@ fn tetrahedron() -> Polygons {
     Polygons::from_triangles(positions, &[[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
 }
 
-fn has(issues: &[Issue], element: Element, field: Field, text: &str) -> bool {
+fn has(issues: &[Issue], element: Element, field: Column, text: &str) -> bool {
     issues.iter().any(|issue| {
         issue.element == element && issue.field == field && issue.message.contains(text)
     })
@@ -331,7 +332,7 @@ fn validate_names_the_half_edge_field_at_fault() {
         has(
             &issues,
             Element::HalfEdge(HalfEdgeId::new(0)),
-            Field::PairEdge,
+            Column::PairEdge,
             "pair(pair(h)) must be h"
         ),
         "{issues:#?}"
@@ -339,19 +340,19 @@ fn validate_names_the_half_edge_field_at_fault() {
     assert!(has(
         &issues,
         Element::HalfEdge(HalfEdgeId::new(7)),
-        Field::SuccessorEdge,
+        Column::SuccessorEdge,
         "half-edge 40 does not exist"
     ));
     assert!(has(
         &issues,
         Element::HalfEdge(HalfEdgeId::new(9)),
-        Field::EndVertex,
+        Column::EndVertex,
         "vertex 9 does not exist"
     ));
     assert!(has(
         &issues,
         Element::Face(FaceId::new(2)),
-        Field::IncidentEdge,
+        Column::IncidentEdge,
         "do not come back"
     ));
     assert_eq!(
@@ -387,7 +388,7 @@ fn validate_catches_wrong_incident_edges_and_duplicate_successors() {
         has(
             &issues,
             Element::Vertex(VertexId::new(1)),
-            Field::IncidentEdge,
+            Column::IncidentEdge,
             "ends at vertex 2"
         ),
         "{issues:#?}"
@@ -395,19 +396,19 @@ fn validate_catches_wrong_incident_edges_and_duplicate_successors() {
     assert!(has(
         &issues,
         Element::Vertex(VertexId::new(3)),
-        Field::Position,
+        Column::Position,
         "not a finite point"
     ));
     assert!(has(
         &issues,
         Element::Face(FaceId::new(1)),
-        Field::IncidentEdge,
+        Column::IncidentEdge,
         "lies in face 0"
     ));
     assert!(has(
         &issues,
         Element::HalfEdge(HalfEdgeId::new(5)),
-        Field::SuccessorEdge,
+        Column::SuccessorEdge,
         "already the successor"
     ));
 }
@@ -425,7 +426,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
         has(
             &issues,
             zero,
-            Field::LeftPredecessor,
+            Column::LeftPredecessor,
             "the wings must agree"
         ),
         "{issues:#?}"
@@ -433,13 +434,13 @@ fn validate_names_the_winged_edge_wing_at_fault() {
     assert!(has(
         &issues,
         zero,
-        Field::LeftSuccessor,
+        Column::LeftSuccessor,
         "the wings must agree"
     ));
     assert!(has(
         &issues,
         zero,
-        Field::LeftPredecessor,
+        Column::LeftPredecessor,
         "going clockwise around face 0"
     ));
 
@@ -454,7 +455,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
         has(
             &issues,
             Element::Edge(EdgeId::new(3)),
-            Field::RightFace,
+            Column::RightFace,
             "face 7 does not exist"
         ),
         "{issues:#?}"
@@ -462,7 +463,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
     assert!(has(
         &issues,
         Element::Edge(EdgeId::new(3)),
-        Field::RightPredecessor,
+        Column::RightPredecessor,
         "does not border face 7"
     ));
 
@@ -480,13 +481,13 @@ fn validate_names_the_winged_edge_wing_at_fault() {
     assert!(has(
         &issues,
         Element::Vertex(VertexId::new(0)),
-        Field::IncidentEdge,
+        Column::IncidentEdge,
         "no incident edge, but 3 edges"
     ));
     assert!(has(
         &issues,
         Element::Face(FaceId::new(2)),
-        Field::IncidentEdge,
+        Column::IncidentEdge,
         "edge 99 does not exist"
     ));
     assert_eq!(broken.face_edges(FaceId::new(2)).count(), 0);
@@ -538,7 +539,7 @@ fn validate_reports_a_pinched_vertex_in_tables() {
     let issues = pinched.validate();
     assert_eq!(issues.len(), 1, "{issues:#?}");
     assert_eq!(issues[0].element, Element::Vertex(VertexId::new(0)));
-    assert_eq!(issues[0].field, Field::IncidentEdge);
+    assert_eq!(issues[0].field, Column::IncidentEdge);
     assert!(
         issues[0]
             .message

@@ -133,7 +133,10 @@ impl AlgorithmEditor {
         });
         ui.weak("Write an algorithm; each one that compiles joins the Algorithm menu.");
         if let Some(status) = &self.status {
-            ui.colored_label(theme.trace_colour(super::TraceRole::Lookup), status);
+            ui.colored_label(
+                theme.trace_colour(crate::trace_role::TraceRole::Lookup),
+                status,
+            );
         }
         if let Some(first) = self.problems.first() {
             ui.colored_label(

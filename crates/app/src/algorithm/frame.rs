@@ -13,69 +13,18 @@
 //! Steps are numbered as the step slider shows them: step 0 is the moment the
 //! inputs are picked, step k the moment after the k-th operation.
 
+use crate::trace_role::TraceRole;
+use edgewise_core::schema::ElementRef;
 use std::collections::HashMap;
 
-use edgewise_core::lang::{Algorithm, Element, StepKind, Trace, Type, Value};
+use edgewise_core::lang::{Algorithm, StepKind, Trace, Type, Value};
 use serde::Serialize;
 
 use crate::{
     paint::{Paint, Painted},
-    selection::{ElementKind, ElementRef, Role},
+    selection::Role,
     theme::Theme,
 };
-
-/// The journal's colour meanings (Table 3); the base colour is the view's
-/// own gray.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum TraceRole {
-    /// Blue: marked, the algorithm's output.
-    Output,
-    /// Green: the base and the result of the current lookup.
-    Lookup,
-    /// Yellow: highlighted by the algorithm.
-    Highlighted,
-    /// Purple: the value of some variable.
-    Variable,
-    /// Light blue: a side of the current comparison.
-    Compared,
-}
-
-impl TraceRole {
-    pub const ALL: [TraceRole; 5] = [
-        TraceRole::Output,
-        TraceRole::Lookup,
-        TraceRole::Highlighted,
-        TraceRole::Variable,
-        TraceRole::Compared,
-    ];
-
-    /// The name in `state().highlights` and in the colour settings.
-    pub fn key(self) -> &'static str {
-        match self {
-            TraceRole::Output => "marked",
-            TraceRole::Lookup => "lookup",
-            TraceRole::Highlighted => "highlighted",
-            TraceRole::Variable => "variable",
-            TraceRole::Compared => "compared",
-        }
-    }
-
-    /// Parses [`Self::key`].
-    pub fn parse(key: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|role| role.key() == key)
-    }
-
-    /// The legend's wording.
-    pub fn meaning(self) -> &'static str {
-        match self {
-            TraceRole::Output => "algorithm output (marked)",
-            TraceRole::Lookup => "in a lookup",
-            TraceRole::Highlighted => "highlighted",
-            TraceRole::Variable => "a variable refers to it",
-            TraceRole::Compared => "in a comparison",
-        }
-    }
-}
 
 /// A variable and its value at one step, as the algorithm view lists them.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -112,19 +61,6 @@ pub struct TraceFrame {
     pub paint: Paint,
 }
 
-/// An element of the trace as a table row.
-pub fn element_ref(element: Element) -> ElementRef {
-    let kind = match element {
-        Element::Vertex(_) => ElementKind::Vertex,
-        Element::Edge(_) => ElementKind::Edge,
-        Element::Face(_) => ElementKind::Face,
-    };
-    ElementRef {
-        kind,
-        id: element.index(),
-    }
-}
-
 /// "Edge 13", "Integer 4", "Boolean true", "null".
 pub fn value_text(value: Value) -> String {
     match value {
@@ -134,26 +70,6 @@ pub fn value_text(value: Value) -> String {
         Value::Face(i) => format!("Face {i}"),
         Value::Integer(n) => format!("Integer {n}"),
         Value::Boolean(b) => format!("Boolean {b}"),
-    }
-}
-
-/// The table column a lookup reads, named by its selection role.
-pub fn column_of(field: edgewise_core::lang::Field) -> Role {
-    use edgewise_core::lang::Field;
-    match field {
-        Field::IncidentEdge => Role::IncidentEdge,
-        Field::StartVertex => Role::StartVertex,
-        Field::EndVertex => Role::EndVertex,
-        Field::LeftFace => Role::LeftFace,
-        Field::RightFace => Role::RightFace,
-        Field::LeftPredecessor => Role::LeftPredecessor,
-        Field::LeftSuccessor => Role::LeftSuccessor,
-        Field::RightPredecessor => Role::RightPredecessor,
-        Field::RightSuccessor => Role::RightSuccessor,
-        Field::AdjacentFace => Role::Face,
-        Field::PairEdge => Role::PairEdge,
-        Field::SuccessorEdge => Role::SuccessorEdge,
-        Field::PredecessorEdge => Role::PredecessorEdge,
     }
 }
 
@@ -170,8 +86,8 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     let (marked, highlighted): (Vec<ElementRef>, Vec<ElementRef>) = match step {
         0 => (Vec::new(), Vec::new()),
         k => (
-            trace.marked_at(k - 1).map(element_ref).collect(),
-            trace.highlighted_at(k - 1).map(element_ref).collect(),
+            trace.marked_at(k - 1).collect(),
+            trace.highlighted_at(k - 1).collect(),
         ),
     };
     let at_end = step == steps;
@@ -207,20 +123,20 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
                 field,
                 result,
             } => {
-                if let Some(base) = base.element().map(element_ref) {
+                if let Some(base) = base.element() {
                     push(&mut paint, base, TraceRole::Lookup);
                     paint.cells.insert(
-                        (base, column_of(field)),
+                        (base, Role::Column(field)),
                         theme.trace_colour(TraceRole::Lookup),
                     );
                 }
-                if let Some(result) = result.element().map(element_ref) {
+                if let Some(result) = result.element() {
                     push(&mut paint, result, TraceRole::Lookup);
                 }
             }
             StepKind::Compare { left, right, .. } => {
                 for side in [left, right] {
-                    if let Some(element) = side.element().map(element_ref) {
+                    if let Some(element) = side.element() {
                         push(&mut paint, element, TraceRole::Compared);
                         paint
                             .pointers
@@ -237,7 +153,7 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     let mut names: HashMap<ElementRef, Vec<&str>> = HashMap::new();
     if !done {
         for (info, value) in algorithm.variables.iter().zip(&variables) {
-            if let Some(element) = value.element().map(element_ref) {
+            if let Some(element) = value.element() {
                 names.entry(element).or_default().push(&info.name);
             }
         }

@@ -1,10 +1,11 @@
 //! Syntax colouring of algorithm source, from the language's own lexer, so
 //! the view and the compiler never disagree about what a word is.
 
+use edgewise_core::schema::Structure;
 use std::ops::Range;
 
 use edgewise_core::lang::{
-    Structure, Type,
+    Type,
     lexer::tokenize,
     token::{Token, TokenKind},
 };

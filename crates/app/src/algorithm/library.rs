@@ -2,9 +2,10 @@
 //! whatever the user loads. A later algorithm with the same name and
 //! structure replaces the earlier one, so a student can fix and reload.
 
+use edgewise_core::schema::Structure;
 use std::sync::Arc;
 
-use edgewise_core::lang::{self, Algorithm, Structure};
+use edgewise_core::lang::{self, Algorithm};
 
 /// Where an algorithm came from, for the menu.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -3,17 +3,18 @@
 //! expression being executed highlighted. Clicking a line number toggles a
 //! breakpoint.
 
+use crate::trace_role::TraceRole;
 use std::ops::Range;
 use std::sync::Arc;
 
 use edgewise_core::{
-    lang::{Algorithm, Structure, Type, Value},
+    lang::{Algorithm, Type, Value},
     mesh::Mesh,
 };
 use egui::{Align, Color32, RichText, Sense, vec2};
 
 use super::{
-    Algorithms, Run, TraceFrame, TraceRole,
+    Algorithms, Run, TraceFrame,
     highlight::{CodeStyle, Mark},
 };
 use crate::theme::Theme;
@@ -43,7 +44,7 @@ impl Algorithms {
             ui.weak("Open a mesh, then choose an algorithm to run on it.");
             return None;
         };
-        let structure = Structure::from(mesh.structure());
+        let structure = mesh.structure();
         ui.label(format!(
             "Algorithms for the {} structure. Choose one, then pick its inputs.",
             structure.prose()

@@ -3,6 +3,7 @@
 //! auto-play. The whole trace is recorded when the inputs are complete, so
 //! stepping back costs no more than stepping forward.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeSet;
 use std::sync::Arc;
 
@@ -10,8 +11,6 @@ use edgewise_core::{
     lang::{self, Algorithm, RunOptions, Trace, Type, Value, compiler::VariableInfo},
     mesh::Mesh,
 };
-
-use crate::selection::{ElementKind, ElementRef};
 
 /// An algorithm waiting for its inputs.
 #[derive(Clone, Debug)]
@@ -41,9 +40,7 @@ impl PendingRun {
 
     /// The kind of element the next pick gives, if one is needed.
     pub fn wanted_kind(&self) -> Option<ElementKind> {
-        self.missing()
-            .and_then(|p| p.ty.element_kind())
-            .map(kind_of)
+        self.missing().and_then(|p| p.ty.element_kind())
     }
 
     /// "Pick a Vertex for v", or None when every input is given.
@@ -58,7 +55,7 @@ impl PendingRun {
         let Some(param) = self.missing() else {
             return Err("every input is already given".to_owned());
         };
-        let wanted = param.ty.element_kind().map(kind_of);
+        let wanted = param.ty.element_kind();
         if wanted != Some(element.kind) {
             return Err(format!(
                 "{} needs a {} for {}, not a {}",
@@ -69,7 +66,7 @@ impl PendingRun {
             ));
         }
         let name = param.name.clone();
-        self.inputs.push((name, value_of(element)));
+        self.inputs.push((name, Value::from(element)));
         Ok(())
     }
 
@@ -207,22 +204,6 @@ pub enum Run {
     Tracing(Box<TraceSession>),
 }
 
-fn kind_of(kind: lang::ElementKind) -> ElementKind {
-    match kind {
-        lang::ElementKind::Vertex => ElementKind::Vertex,
-        lang::ElementKind::Edge => ElementKind::Edge,
-        lang::ElementKind::Face => ElementKind::Face,
-    }
-}
-
-fn value_of(element: ElementRef) -> Value {
-    match element.kind {
-        ElementKind::Vertex => Value::Vertex(element.id),
-        ElementKind::Edge => Value::Edge(element.id),
-        ElementKind::Face => Value::Face(element.id),
-    }
-}
-
 /// Reads a JavaScript or URL argument for parameter type `ty`: an element
 /// id, an integer, or true/false.
 pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> Option<Value> {
@@ -231,10 +212,9 @@ pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> O
         (ty, Some(n), _) if n.fract() == 0.0 => {
             let kind = ty.element_kind();
             match kind {
-                Some(kind) if n >= 0.0 && n <= f64::from(u32::MAX) => Some(value_of(ElementRef {
-                    kind: kind_of(kind),
-                    id: n as u32,
-                })),
+                Some(kind) if n >= 0.0 && n <= f64::from(u32::MAX) => {
+                    Some(Value::from(ElementRef::new(kind, n as u32)))
+                }
                 None if ty == Type::Integer
                     && n >= f64::from(i32::MIN)
                     && n <= f64::from(i32::MAX) =>
@@ -250,12 +230,12 @@ pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> O
 
 #[cfg(test)]
 mod tests {
-    use edgewise_core::{formats, lang::Structure};
+    use edgewise_core::{formats, schema::Structure};
 
     use super::*;
     use crate::algorithm::AlgorithmLibrary;
 
-    fn tetrahedron(structure: edgewise_core::mesh::Structure) -> Mesh {
+    fn tetrahedron(structure: Structure) -> Mesh {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../meshes/tetrahedron.wtb");
         let bytes = std::fs::read(path).expect("the sample exists");
         formats::load(&bytes, "tetrahedron.wtb", structure)
@@ -289,7 +269,7 @@ mod tests {
             })
             .expect("a vertex");
         assert!(pending.prompt().is_none());
-        let mesh = tetrahedron(edgewise_core::mesh::Structure::WingedEdge);
+        let mesh = tetrahedron(Structure::WingedEdge);
         let mut session = pending.start(&mesh).expect("runs");
         assert_eq!(session.step(), 0);
         assert!(session.steps() > 10);
@@ -307,7 +287,7 @@ mod tests {
             .expect("shipped");
         let mut pending = PendingRun::new(Arc::clone(algorithm));
         pending.set("v", Value::Vertex(0));
-        let mesh = tetrahedron(edgewise_core::mesh::Structure::WingedEdge);
+        let mesh = tetrahedron(Structure::WingedEdge);
         let mut session = pending.start(&mesh).expect("runs");
         // The `e.mark` line of the shipped algorithm.
         let mark_line = (0..session.steps())

@@ -1,15 +1,15 @@
 //! The app's algorithm commands (shared by the UI and the JavaScript API),
 //! the Algorithm menu, the algorithm panel and the stepping keys.
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::sync::Arc;
 
-use edgewise_core::lang::Structure;
+use edgewise_core::schema::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
     algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
     files,
-    selection::{ElementKind, ElementRef},
     state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
 };
@@ -36,7 +36,7 @@ impl EdgewiseApp {
         let Some(document) = &self.document else {
             return Err(self.fail("open a mesh before running an algorithm".to_owned()));
         };
-        let structure = Structure::from(document.structure());
+        let structure = document.structure();
         let algorithm = match self.algorithms.find(name, structure) {
             Ok(algorithm) => algorithm,
             Err(message) => return Err(self.fail(message)),
@@ -91,7 +91,7 @@ impl EdgewiseApp {
                 let algorithm = &entry.algorithm;
                 AlgorithmInfo {
                     name: algorithm.name.clone(),
-                    structure: super::structure_name(algorithm.structure.into()),
+                    structure: algorithm.structure.link_name(),
                     parameters: algorithm
                         .params()
                         .map(|p| format!("{} : {}", p.name, p.ty))
@@ -235,7 +235,7 @@ impl EdgewiseApp {
         let structure = self
             .document
             .as_ref()
-            .map(|d| Structure::from(d.structure()));
+            .map(crate::document::Document::structure);
         let mut chosen = None;
         let mut write = false;
         ui.menu_button("Algorithm", |ui| {

@@ -18,10 +18,11 @@ use edgewise_core::{
 use super::{EdgewiseApp, embed::Embed, settings_ui::Presentation};
 use crate::{
     Argument,
-    algorithm::{Origin, TraceRole},
+    algorithm::Origin,
     course_link::{self, CourseLink, MeshSource, Panels, ThemeChoice},
     selection::Role,
     settings::{self, Settings},
+    trace_role::TraceRole,
 };
 
 /// A mesh file fetched for a link's `?mesh=` path.

@@ -3,8 +3,8 @@
 
 use super::EdgewiseApp;
 use crate::{
-    algorithm::TraceRole,
     settings::{self, CODE_SIZES, Settings},
+    trace_role::TraceRole,
 };
 
 /// How much larger everything is drawn when presenting.
@@ -106,10 +106,10 @@ impl EdgewiseApp {
                         egui::Grid::new("role_colours")
                             .num_columns(2)
                             .show(ui, |ui| {
-                                for role in crate::selection::Role::ALL {
+                                for role in crate::selection::Role::all() {
                                     let mut colour = theme.role_colour(role);
                                     let response = ui.color_edit_button_srgba(&mut colour);
-                                    let name = role.title(crate::selection::ElementKind::Edge);
+                                    let name = role.title(edgewise_core::schema::ElementKind::Edge);
                                     response.widget_info(|| {
                                         egui::WidgetInfo::labeled(
                                             egui::Role::ColorWell,

@@ -4,12 +4,12 @@
 //! corresponding element in both (a winged edge and its first half-edge).
 
 use edgewise_core::mesh::EdgeCorrespondence;
+use edgewise_core::schema::ElementRef;
 
 use super::{EdgewiseApp, element_of};
 use crate::{
     document::{Document, map_element},
     paint::Paint,
-    selection::ElementRef,
     view3d::{MeshGeometry, SceneStyles, View3d},
 };
 

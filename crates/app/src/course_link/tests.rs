@@ -382,7 +382,7 @@ fn arb_link() -> impl Strategy<Value = CourseLink> {
         proptest::option::of(any::<usize>()),
     ));
     let colors = proptest::collection::btree_map(
-        proptest::sample::select(COLOR_KEYS).prop_map(str::to_owned),
+        proptest::sample::select(color_keys()),
         any::<[u8; 3]>(),
         0..4,
     );

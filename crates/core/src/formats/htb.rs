@@ -5,12 +5,13 @@ use super::error::FormatError;
 use super::rows::{self, Problems, Rows, Section};
 use super::wtb;
 use crate::mesh::half_edge::{Face, Vertex};
-use crate::mesh::{Element, FaceId, HalfEdge, HalfEdgeId, HalfEdgeMesh, Mesh, VertexId};
+use crate::mesh::{Element, HalfEdge, HalfEdgeMesh, Mesh};
+use crate::schema::{ElementKind, Structure};
 
 const HALF_EDGES: Section = Section {
     name: "halfedges",
     element: "half-edge",
-    columns: &["end_vertex", "face", "pair_edge", "successor_edge"],
+    table: (Structure::HalfEdge, ElementKind::Edge),
 };
 
 pub(super) fn read(bytes: &[u8]) -> Result<Mesh, FormatError> {
@@ -18,27 +19,19 @@ pub(super) fn read(bytes: &[u8]) -> Result<Mesh, FormatError> {
     let mut rows = Rows::new(text);
     rows::header(&mut rows, "htb", "wtb")?;
     let mut problems = Problems::new();
-    let (vertices, vertex_places) = wtb::read_vertices(&mut rows, &mut problems, "a half-edge")?;
-    let (faces, face_places) = wtb::read_faces(&mut rows, &mut problems, "a half-edge")?;
+    let (vertices, vertex_places) =
+        wtb::read_vertices::<Vertex>(&mut rows, &mut problems, Structure::HalfEdge)?;
+    let (faces, face_places) =
+        wtb::read_faces::<Face>(&mut rows, &mut problems, Structure::HalfEdge)?;
     let mut half_edges = Vec::new();
     let half_edge_places = rows::section(
         &mut rows,
         &HALF_EDGES,
         &mut problems,
         |fields, line, problems| {
-            if let [end, face, pair, successor] = fields {
-                let end = rows::reference(end, "end_vertex", "a vertex", false, line, problems);
-                let face = rows::reference(face, "face", "a face", true, line, problems);
-                let mut half = |token, name| {
-                    rows::reference(token, name, "a half-edge", false, line, problems).unwrap_or(0)
-                };
-                half_edges.push(HalfEdge {
-                    end_vertex: VertexId::new(end.unwrap_or(0)),
-                    face: face.map(FaceId::new),
-                    pair_edge: HalfEdgeId::new(half(pair, "pair_edge")),
-                    successor_edge: HalfEdgeId::new(half(successor, "successor_edge")),
-                });
-            }
+            let mut half_edge = HalfEdge::default();
+            rows::fill(&mut half_edge, fields, &HALF_EDGES, line, problems);
+            half_edges.push(half_edge);
         },
     )?;
     rows::end(&mut rows, &HALF_EDGES, half_edges.len())?;
@@ -47,17 +40,9 @@ pub(super) fn read(bytes: &[u8]) -> Result<Mesh, FormatError> {
     let mesh = HalfEdgeMesh::from_raw_parts(
         vertices
             .into_iter()
-            .map(|(position, incident)| Vertex {
-                position,
-                incident_edge: incident.map(HalfEdgeId::new),
-            })
+            .map(|(position, vertex)| Vertex { position, ..vertex })
             .collect(),
-        faces
-            .into_iter()
-            .map(|incident| Face {
-                incident_edge: HalfEdgeId::new(incident),
-            })
-            .collect(),
+        faces,
         half_edges,
     );
     let issues = mesh.validate();
@@ -79,30 +64,8 @@ pub(super) fn write(mesh: &HalfEdgeMesh) -> String {
          # half-edge ends at it; - is the boundary.\n\
          htb 1\n",
     );
-    wtb::write_vertices(
-        &mut out,
-        mesh.vertices()
-            .iter()
-            .map(|v| (v.position, v.incident_edge.map(HalfEdgeId::raw))),
-    );
-    wtb::write_faces(&mut out, mesh.faces().iter().map(|f| f.incident_edge.raw()));
-    let rows: Vec<Vec<String>> = mesh
-        .half_edges()
-        .iter()
-        .enumerate()
-        .map(|(id, h)| {
-            vec![
-                id.to_string(),
-                h.end_vertex.raw().to_string(),
-                rows::cell(h.face.map(FaceId::raw)),
-                h.pair_edge.raw().to_string(),
-                h.successor_edge.raw().to_string(),
-            ]
-        })
-        .collect();
-    out.push_str(&format!("\nhalfedges {}\n", rows.len()));
-    let mut columns = vec!["id"];
-    columns.extend(HALF_EDGES.columns);
-    rows::write_table(&mut out, &columns, &rows);
+    rows::write_section(&mut out, mesh, &wtb::vertex_section(Structure::HalfEdge));
+    rows::write_section(&mut out, mesh, &wtb::face_section(Structure::HalfEdge));
+    rows::write_section(&mut out, mesh, &HALF_EDGES);
     out
 }

@@ -5,7 +5,8 @@
 
 use std::fmt::Write as _;
 
-use crate::mesh::{EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Mesh, WingedEdgeMesh};
+use crate::mesh::{Mesh, VertexId};
+use crate::schema::{Column, ElementKind, ElementRef, Records, Storage, Structure};
 
 fn or_dash<T: ToString>(value: Option<T>) -> String {
     value.map_or_else(|| "-".to_owned(), |v| v.to_string())
@@ -50,137 +51,53 @@ fn table(out: &mut String, title: &str, columns: &[&str], rows: &[Vec<String>]) 
 /// # Ok::<(), edgewise_core::mesh::BuildError>(())
 /// ```
 pub fn listing(mesh: &Mesh) -> String {
-    match mesh {
-        Mesh::Winged(mesh) => winged(mesh),
-        Mesh::Half(mesh) => half(mesh),
+    let structure = mesh.structure();
+    let mut out = format!("{} structure\n\n", structure.prose());
+    for kind in [ElementKind::Vertex, ElementKind::Face, ElementKind::Edge] {
+        let entries = Column::table(structure, kind);
+        let mut headers = vec!["id"];
+        for entry in entries {
+            match entry.column {
+                Column::Position => headers.extend(Column::COORDINATES),
+                _ => headers.push(entry.header),
+            }
+        }
+        let rows: Vec<Vec<String>> = (0..mesh.count(kind))
+            .map(|index| {
+                let id = u32::try_from(index).unwrap_or(u32::MAX);
+                let element = ElementRef::new(kind, id);
+                let mut row = vec![id.to_string()];
+                for entry in entries {
+                    if entry.column == Column::Position {
+                        let p = mesh.position(VertexId::new(id)).unwrap_or_default();
+                        row.extend([p.x, p.y, p.z].map(|c| c.to_string()));
+                    } else {
+                        let target = mesh.reference(element, entry.column).ok().flatten();
+                        row.push(or_dash(target.map(|t| t.id)));
+                    }
+                }
+                row
+            })
+            .collect();
+        let title = match (kind, structure) {
+            (ElementKind::Edge, Structure::HalfEdge) => "half-edges",
+            _ => kind.plural(),
+        };
+        table(&mut out, title, &headers, &rows);
+        if kind != ElementKind::Edge {
+            out.push('\n');
+        }
     }
-}
-
-/// The vertex and face tables, which both structures lay out alike: each
-/// row's incident-edge reference as a raw id.
-fn vertex_and_face_tables(
-    out: &mut String,
-    vertices: impl Iterator<Item = (glam::Vec3, Option<u32>)>,
-    face_incident_edges: impl Iterator<Item = u32>,
-) {
-    let rows: Vec<Vec<String>> = vertices
-        .enumerate()
-        .map(|(id, (position, incident_edge))| {
-            vec![
-                id.to_string(),
-                position.x.to_string(),
-                position.y.to_string(),
-                position.z.to_string(),
-                or_dash(incident_edge),
-            ]
-        })
-        .collect();
-    table(
-        out,
-        "vertices",
-        &["id", "x", "y", "z", "incident edge"],
-        &rows,
-    );
-    out.push('\n');
-    let rows: Vec<Vec<String>> = face_incident_edges
-        .enumerate()
-        .map(|(id, edge)| vec![id.to_string(), edge.to_string()])
-        .collect();
-    table(out, "faces", &["id", "incident edge"], &rows);
-    out.push('\n');
-}
-
-fn winged(mesh: &WingedEdgeMesh) -> String {
-    let mut out = String::from("winged-edge structure\n\n");
-    vertex_and_face_tables(
-        &mut out,
-        mesh.vertices()
-            .iter()
-            .map(|v| (v.position, v.incident_edge.map(EdgeId::raw))),
-        mesh.faces().iter().map(|f| f.incident_edge.raw()),
-    );
-    let rows: Vec<Vec<String>> = mesh
-        .edges()
+    let derived: Vec<&str> = Column::table(structure, ElementKind::Edge)
         .iter()
-        .enumerate()
-        .map(|(id, e)| {
-            vec![
-                id.to_string(),
-                e.start_vertex.raw().to_string(),
-                e.end_vertex.raw().to_string(),
-                or_dash(e.left_face.map(FaceId::raw)),
-                or_dash(e.right_face.map(FaceId::raw)),
-                e.left_predecessor.raw().to_string(),
-                e.left_successor.raw().to_string(),
-                e.right_predecessor.raw().to_string(),
-                e.right_successor.raw().to_string(),
-            ]
-        })
+        .filter(|entry| entry.storage == Storage::Derived)
+        .map(|entry| entry.header)
         .collect();
-    table(
-        &mut out,
-        "edges",
-        &[
-            "id",
-            "start",
-            "end",
-            "left face",
-            "right face",
-            "left pred",
-            "left succ",
-            "right pred",
-            "right succ",
-        ],
-        &rows,
-    );
-    out
-}
-
-fn half(mesh: &HalfEdgeMesh) -> String {
-    let mut out = String::from("half-edge structure\n\n");
-    vertex_and_face_tables(
-        &mut out,
-        mesh.vertices()
-            .iter()
-            .map(|v| (v.position, v.incident_edge.map(HalfEdgeId::raw))),
-        mesh.faces().iter().map(|f| f.incident_edge.raw()),
-    );
-    let rows: Vec<Vec<String>> = mesh
-        .half_edges()
-        .iter()
-        .enumerate()
-        .map(|(id, h)| {
-            vec![
-                id.to_string(),
-                h.end_vertex.raw().to_string(),
-                or_dash(h.face.map(FaceId::raw)),
-                h.pair_edge.raw().to_string(),
-                h.successor_edge.raw().to_string(),
-                or_dash(
-                    mesh.start_vertex(HalfEdgeId::new(id as u32))
-                        .map(crate::mesh::VertexId::raw),
-                ),
-                or_dash(
-                    mesh.predecessor_edge(HalfEdgeId::new(id as u32))
-                        .map(HalfEdgeId::raw),
-                ),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        "half-edges",
-        &[
-            "id",
-            "end vertex",
-            "face",
-            "pair",
-            "successor",
-            "start vertex",
-            "predecessor",
-        ],
-        &rows,
-    );
-    out.push_str("\nstart vertex and predecessor are derived (pair's end vertex, inverse of successor), not stored.\n");
+    if !derived.is_empty() {
+        out.push_str(&format!(
+            "\n{} are derived (pair's end vertex, inverse of successor), not stored.\n",
+            derived.join(" and ")
+        ));
+    }
     out
 }

@@ -9,7 +9,9 @@
 use std::fmt::Write as _;
 
 use super::error::{FormatError, Location, Problem, shown};
-use crate::mesh::{Element, Field, Issue};
+use crate::mesh::VertexId;
+use crate::mesh::{Element, Issue};
+use crate::schema::{Column, ElementKind, ElementRef, Record, Records, Storage, Structure};
 
 /// The most syntax problems reported before a table file is refused; past
 /// that, more of the same helps nobody.
@@ -175,18 +177,20 @@ pub(super) struct Section {
     pub name: &'static str,
     /// The element in messages (`vertex`).
     pub element: &'static str,
-    /// The column names after the id, for messages.
-    pub columns: &'static [&'static str],
+    /// The table whose stored columns the rows hold.
+    pub table: (Structure, ElementKind),
 }
 
 impl Section {
-    fn fields(&self) -> usize {
-        self.columns.len() + 1
+    /// The column names after the id.
+    pub fn columns(&self) -> Vec<&'static str> {
+        let (structure, kind) = self.table;
+        Column::file_columns(structure, kind)
     }
 
     fn column_list(&self) -> String {
         let mut list = String::from("id");
-        for column in self.columns {
+        for column in self.columns() {
             list.push(' ');
             list.push_str(column);
         }
@@ -282,7 +286,8 @@ pub(super) fn section<'a>(
     let count = count as usize;
     // Every row takes at least two bytes per field, so a count the rest of
     // the file cannot hold is caught before anything is reserved.
-    let most = rows.remaining() / (2 * section.fields());
+    let fields = section.columns().len() + 1;
+    let most = rows.remaining() / (2 * fields);
     let mut places = RowPlaces {
         rows: Vec::with_capacity(count.min(most)),
     };
@@ -309,13 +314,13 @@ pub(super) fn section<'a>(
             ));
         }
         places.rows.push((rows.line, rows.offset));
-        if rows.tokens.len() != section.fields() {
+        if rows.tokens.len() != fields {
             problems.push(
                 Location::line(rows.line),
                 format!(
                     "a {} row has {} fields ({}), found {}",
                     section.element,
-                    section.fields(),
+                    fields,
                     section.column_list(),
                     rows.tokens.len()
                 ),
@@ -382,6 +387,47 @@ pub(super) fn is_decimal(text: &str) -> bool {
         .all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'-' | b'+' | b'e' | b'E'))
 }
 
+/// Reads the stored references of one row into `record`, column by column
+/// in file order, after the coordinates if the table has them.
+pub(super) fn fill<R: Record>(
+    record: &mut R,
+    fields: &[Token<'_>],
+    section: &Section,
+    line: usize,
+    problems: &mut Problems,
+) {
+    let (structure, kind) = section.table;
+    let mut tokens = fields.iter();
+    for entry in Column::table(structure, kind) {
+        if entry.storage == Storage::Derived {
+            continue;
+        }
+        if entry.column == Column::Position {
+            tokens.nth(Column::COORDINATES.len() - 1);
+            continue;
+        }
+        let Some(token) = tokens.next() else {
+            return;
+        };
+        let column = entry.column;
+        let what = match column.target() {
+            Some(ElementKind::Vertex) => "a vertex",
+            Some(ElementKind::Face) => "a face",
+            _ if structure == Structure::HalfEdge => "a half-edge",
+            _ => "an edge",
+        };
+        let value = reference(
+            token,
+            column.record_name(),
+            what,
+            column.nullable_in(kind),
+            line,
+            problems,
+        );
+        record.set(column, value);
+    }
+}
+
 /// A reference to a row: a number, or `-` where the column allows "none".
 pub(super) fn reference(
     token: &Token<'_>,
@@ -416,20 +462,22 @@ pub(super) fn reference(
     }
 }
 
-/// The position of a field in its table row (the id is field 0).
-fn field_index(element: Element, field: Field) -> usize {
-    match (element, field) {
-        (Element::Edge(_), Field::EndVertex) | (Element::HalfEdge(_), Field::Face) => 2,
-        (Element::HalfEdge(_), Field::PairEdge) | (_, Field::LeftFace) => 3,
-        (Element::Vertex(_), Field::IncidentEdge)
-        | (Element::HalfEdge(_), Field::SuccessorEdge)
-        | (_, Field::RightFace) => 4,
-        (_, Field::LeftPredecessor) => 5,
-        (_, Field::LeftSuccessor) => 6,
-        (_, Field::RightPredecessor) => 7,
-        (_, Field::RightSuccessor) => 8,
-        _ => 1,
-    }
+/// The position of a column in its file row (the id is field 0).
+fn field_index(element: Element, column: Column) -> usize {
+    let (structure, kind) = match element {
+        Element::Vertex(_) => (Structure::WingedEdge, ElementKind::Vertex),
+        Element::Face(_) => (Structure::WingedEdge, ElementKind::Face),
+        Element::Edge(_) => (Structure::WingedEdge, ElementKind::Edge),
+        Element::HalfEdge(_) => (Structure::HalfEdge, ElementKind::Edge),
+    };
+    let first = match column {
+        Column::Position => Column::COORDINATES[0],
+        other => other.record_name(),
+    };
+    Column::file_columns(structure, kind)
+        .iter()
+        .position(|&name| name == first)
+        .map_or(1, |index| index + 1)
 }
 
 /// The validation issues of a table file, placed at the line of the row and
@@ -466,6 +514,38 @@ pub(super) fn place_issues<'p>(
         .collect();
     problems.sort_by_key(|problem| problem.location);
     FormatError::from_problems(problems)
+}
+
+/// Writes one section of a table file: its `name <count>` line, then each
+/// row's id, coordinates (for vertices) and stored references.
+pub(super) fn write_section(out: &mut String, mesh: &impl Records, section: &Section) {
+    let (structure, kind) = section.table;
+    let stored: Vec<Column> = Column::table(structure, kind)
+        .iter()
+        .filter(|entry| entry.storage == Storage::Stored)
+        .map(|entry| entry.column)
+        .collect();
+    let rows: Vec<Vec<String>> = (0..mesh.count(kind))
+        .map(|index| {
+            let id = u32::try_from(index).unwrap_or(u32::MAX);
+            let element = ElementRef::new(kind, id);
+            let mut row = vec![id.to_string()];
+            for &column in &stored {
+                if column == Column::Position {
+                    let p = mesh.position(VertexId::new(id)).unwrap_or_default();
+                    row.extend([p.x, p.y, p.z].map(|c| c.to_string()));
+                } else {
+                    let target = mesh.reference(element, column).ok().flatten();
+                    row.push(cell(target.map(|t| t.id)));
+                }
+            }
+            row
+        })
+        .collect();
+    out.push_str(&format!("\n{} {}\n", section.name, rows.len()));
+    let mut columns = vec!["id"];
+    columns.extend(section.columns());
+    write_table(out, &columns, &rows);
 }
 
 /// Writes rows as columns padded to a common width, under a comment line

@@ -1,7 +1,8 @@
 //! The syntax tree, as parsed, before names and types are checked.
 
 use super::diagnostic::Span;
-use super::types::{Structure, Type};
+use super::types::Type;
+use crate::schema::Structure;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Ident {

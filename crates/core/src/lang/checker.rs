@@ -9,7 +9,8 @@ use std::collections::{HashMap, HashSet};
 use super::ast::*;
 use super::diagnostic::{Diagnostic, Span, nearest};
 use super::parser::MAX_ERRORS;
-use super::types::{ElementKind, Field, FieldError, Structure, Type};
+use super::types::Type;
+use crate::schema::{Column, ElementKind, NameError, Structure};
 
 /// A parameter or declared variable. Parameters come first, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -303,7 +304,7 @@ impl Checker<'_> {
         let names = self.scope.variables.iter().map(|v| v.name.as_str());
         if let Some(near) = nearest(name, names) {
             self.error_with_hint(span, message, format!("did you mean `{near}`?"));
-        } else if Field::all_names().any(|f| f.eq_ignore_ascii_case(name)) {
+        } else if Column::all_language_names().any(|f| f.eq_ignore_ascii_case(name)) {
             self.error_with_hint(
                 span,
                 message,
@@ -444,8 +445,8 @@ impl Checker<'_> {
             return None;
         };
         let structure = self.structure?;
-        match Field::resolve(structure, kind, name) {
-            Ok(field) => Some(Type::of_kind(field.result())),
+        match Column::resolve(structure, kind, name) {
+            Ok(field) => field.target().map(Type::of_kind),
             Err(error) => {
                 self.lookup_error(structure, kind, field, &error);
                 None
@@ -458,17 +459,17 @@ impl Checker<'_> {
         structure: Structure,
         kind: ElementKind,
         field: &Ident,
-        error: &FieldError,
+        error: &NameError,
     ) {
         let name = field.name.as_str();
         let kind_name = Type::of_kind(kind);
-        let available: Vec<&str> = Field::names_for(structure, kind).collect();
+        let available: Vec<&str> = Column::language_names_for(structure, kind).collect();
         let listing = format!(
             "{kind_name} lookups in a {structure} structure: {}",
             canonical_names(structure, kind).join(", ")
         );
         match error {
-            FieldError::Unknown => {
+            NameError::Unknown => {
                 let hint = nearest(name, available.iter().copied())
                     .map_or(listing, |near| format!("did you mean `{near}`?"));
                 self.error_with_hint(
@@ -477,7 +478,7 @@ impl Checker<'_> {
                     hint,
                 );
             }
-            FieldError::OtherStructure(other) => {
+            NameError::OtherStructure(other) => {
                 self.error_with_hint(
                     field.span,
                     format!(
@@ -488,7 +489,7 @@ impl Checker<'_> {
                     listing,
                 );
             }
-            FieldError::WrongElement(owner) => {
+            NameError::WrongElement(owner) => {
                 self.error_with_hint(
                     field.span,
                     format!(
@@ -505,9 +506,9 @@ impl Checker<'_> {
 /// The canonical (non-alias) lookup names on `kind`, for hints.
 fn canonical_names(structure: Structure, kind: ElementKind) -> Vec<&'static str> {
     let mut names: Vec<&'static str> = Vec::new();
-    for name in Field::names_for(structure, kind) {
-        if let Ok(field) = Field::resolve(structure, kind, name)
-            && field.name() == name
+    for name in Column::language_names_for(structure, kind) {
+        if let Ok(field) = Column::resolve(structure, kind, name)
+            && field.language_name() == Some(name)
         {
             names.push(name);
         }

@@ -6,7 +6,8 @@
 use super::ast::*;
 use super::checker::Scope;
 use super::diagnostic::{Diagnostic, LineIndex, Span};
-use super::types::{Field, Structure, Type, Value};
+use super::types::{Type, Value};
+use crate::schema::{Column, Structure};
 use std::sync::Arc;
 
 /// A register number. Registers hold the variables (parameters first), then
@@ -73,7 +74,7 @@ pub enum Op {
     Lookup {
         dst: Reg,
         base: Reg,
-        field: Field,
+        field: Column,
     },
     Assign {
         var: Reg,
@@ -516,11 +517,11 @@ impl Compiler<'_> {
                 let base_reg = self.expr(base);
                 let kind = self.register_type(base_reg).element_kind();
                 let resolved =
-                    kind.and_then(|k| Field::resolve(self.structure, k, &field.name).ok());
-                let Some(field) = resolved else {
+                    kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok());
+                let Some((field, target)) = resolved.and_then(|f| Some((f, f.target()?))) else {
                     return self.constant(Value::Null, Type::Null);
                 };
-                let dst = self.register(Type::of_kind(field.result()));
+                let dst = self.register(Type::of_kind(target));
                 self.emit(
                     Op::Lookup {
                         dst,

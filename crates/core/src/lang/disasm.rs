@@ -67,6 +67,7 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
     let name = |reg| algorithm.register_name(reg);
     match op {
         Op::Lookup { dst, base, field } => {
+            let field = field.language_name().unwrap_or(field.record_name());
             format!("lookup   {} := {}.{field}", name(dst), name(base))
         }
         Op::Assign { var, src } => format!("assign   {} := {}", name(var), name(src)),

@@ -10,7 +10,8 @@ use super::ast::*;
 use super::diagnostic::{Diagnostic, LineIndex, Span, shorten};
 use super::lexer::{SKIPPED_REST, tokenize};
 use super::token::{Token, TokenKind as T};
-use super::types::{Structure, Type};
+use super::types::Type;
+use crate::schema::Structure;
 
 /// Parses a whole file. The tree is usable (with error nodes) even when
 /// diagnostics were reported.

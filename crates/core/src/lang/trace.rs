@@ -10,8 +10,9 @@
 
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Op};
 use super::diagnostic::Span;
-use super::types::{Element, Field, Value};
+use super::types::Value;
 use super::vm::Recorder;
+use crate::schema::{Column, ElementRef};
 use std::fmt;
 use std::sync::Arc;
 
@@ -73,7 +74,7 @@ pub enum StepKind<'t> {
     /// A data structure lookup: `base.field` gave `result`.
     Lookup {
         base: Value,
-        field: Field,
+        field: Column,
         result: Value,
     },
     /// Variable number `variable` now refers to `value`.
@@ -124,8 +125,8 @@ pub struct Trace {
     initial: Vec<Value>,
     steps: Vec<Step>,
     snapshots: Vec<Value>,
-    marks: Vec<(u32, Element)>,
-    highlights: Vec<(u32, Element)>,
+    marks: Vec<(u32, ElementRef)>,
+    highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
     final_variables: Vec<Value>,
     outcome: Outcome,
@@ -135,8 +136,8 @@ pub(crate) struct TraceRecorder {
     variable_count: usize,
     steps: Vec<Step>,
     snapshots: Vec<Value>,
-    marks: Vec<(u32, Element)>,
-    highlights: Vec<(u32, Element)>,
+    marks: Vec<(u32, ElementRef)>,
+    highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
 }
 
@@ -195,12 +196,12 @@ impl Recorder for TraceRecorder {
     }
 
     // The VM records a mark's step just before calling these.
-    fn mark(&mut self, element: Element) {
+    fn mark(&mut self, element: ElementRef) {
         let step = self.current_step();
         self.marks.push((step, element));
     }
 
-    fn highlight(&mut self, element: Element) {
+    fn highlight(&mut self, element: ElementRef) {
         let step = self.current_step();
         self.highlights.push((step, element));
     }
@@ -329,7 +330,7 @@ impl Trace {
     }
 
     /// The elements marked up to and including step `index`, in marking order.
-    pub fn marked_at(&self, index: usize) -> impl Iterator<Item = Element> + '_ {
+    pub fn marked_at(&self, index: usize) -> impl Iterator<Item = ElementRef> + '_ {
         let end = self
             .marks
             .partition_point(|&(step, _)| step as usize <= index);
@@ -337,11 +338,11 @@ impl Trace {
     }
 
     /// Every element marked in the run, in marking order.
-    pub fn marked(&self) -> impl Iterator<Item = Element> + '_ {
+    pub fn marked(&self) -> impl Iterator<Item = ElementRef> + '_ {
         self.marks.iter().map(|&(_, e)| e)
     }
 
-    pub fn highlighted_at(&self, index: usize) -> impl Iterator<Item = Element> + '_ {
+    pub fn highlighted_at(&self, index: usize) -> impl Iterator<Item = ElementRef> + '_ {
         let end = self
             .highlights
             .partition_point(|&(step, _)| step as usize <= index);
@@ -387,7 +388,7 @@ impl Trace {
         use std::mem::size_of;
         self.steps.capacity() * size_of::<Step>()
             + self.snapshots.capacity() * size_of::<Value>()
-            + (self.marks.capacity() + self.highlights.capacity()) * size_of::<(u32, Element)>()
+            + (self.marks.capacity() + self.highlights.capacity()) * size_of::<(u32, ElementRef)>()
     }
 
     /// One line per step, as `edgewise trace` prints it:

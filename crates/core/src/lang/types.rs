@@ -1,109 +1,9 @@
-//! The language's types and values, and the lookups each structure offers.
+//! The language's types and values. Lookups are table columns
+//! ([`crate::schema::Column`]).
 
 use std::fmt;
 
-/// Which data structure an algorithm walks.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Structure {
-    WingedEdge,
-    HalfEdge,
-}
-
-impl Structure {
-    pub fn name(self) -> &'static str {
-        match self {
-            Structure::WingedEdge => "WingedEdge",
-            Structure::HalfEdge => "HalfEdge",
-        }
-    }
-
-    /// Lower-case prose name, as in "a winged-edge lookup".
-    pub fn prose(self) -> &'static str {
-        match self {
-            Structure::WingedEdge => "winged-edge",
-            Structure::HalfEdge => "half-edge",
-        }
-    }
-
-    pub fn parse(word: &str) -> Option<Structure> {
-        [Structure::WingedEdge, Structure::HalfEdge]
-            .into_iter()
-            .find(|s| s.name().eq_ignore_ascii_case(word))
-    }
-}
-
-impl fmt::Display for Structure {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// The three kinds of mesh element.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum ElementKind {
-    Vertex,
-    Edge,
-    Face,
-}
-
-impl ElementKind {
-    /// "vertices", "edges", "faces".
-    pub fn plural(self) -> &'static str {
-        match self {
-            ElementKind::Vertex => "vertices",
-            ElementKind::Edge => "edges",
-            ElementKind::Face => "faces",
-        }
-    }
-
-    /// Lower-case, as elements are shown in traces: "vertex 3".
-    pub fn prose(self) -> &'static str {
-        match self {
-            ElementKind::Vertex => "vertex",
-            ElementKind::Edge => "edge",
-            ElementKind::Face => "face",
-        }
-    }
-}
-
-/// One mesh element: its kind and its number in that kind's table. In a
-/// half-edge structure an Edge is a half-edge.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Element {
-    Vertex(u32),
-    Edge(u32),
-    Face(u32),
-}
-
-impl Element {
-    pub fn kind(self) -> ElementKind {
-        match self {
-            Element::Vertex(_) => ElementKind::Vertex,
-            Element::Edge(_) => ElementKind::Edge,
-            Element::Face(_) => ElementKind::Face,
-        }
-    }
-
-    pub fn index(self) -> u32 {
-        match self {
-            Element::Vertex(i) | Element::Edge(i) | Element::Face(i) => i,
-        }
-    }
-
-    pub fn new(kind: ElementKind, index: u32) -> Element {
-        match kind {
-            ElementKind::Vertex => Element::Vertex(index),
-            ElementKind::Edge => Element::Edge(index),
-            ElementKind::Face => Element::Face(index),
-        }
-    }
-}
-
-impl fmt::Display for Element {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} {}", self.kind().prose(), self.index())
-    }
-}
+use crate::schema::{ElementKind, ElementRef};
 
 /// A static type. `Null` is the type of the literal `null` only; every
 /// element type also admits the null value (a missing face at a boundary).
@@ -227,28 +127,28 @@ impl Value {
     }
 
     #[inline]
-    pub fn element(self) -> Option<Element> {
+    pub fn element(self) -> Option<ElementRef> {
         match self {
-            Value::Vertex(i) => Some(Element::Vertex(i)),
-            Value::Edge(i) => Some(Element::Edge(i)),
-            Value::Face(i) => Some(Element::Face(i)),
+            Value::Vertex(i) => Some(ElementRef::new(ElementKind::Vertex, i)),
+            Value::Edge(i) => Some(ElementRef::new(ElementKind::Edge, i)),
+            Value::Face(i) => Some(ElementRef::new(ElementKind::Face, i)),
             _ => None,
         }
     }
 }
 
-impl From<Element> for Value {
-    fn from(element: Element) -> Value {
-        match element {
-            Element::Vertex(i) => Value::Vertex(i),
-            Element::Edge(i) => Value::Edge(i),
-            Element::Face(i) => Value::Face(i),
+impl From<ElementRef> for Value {
+    fn from(element: ElementRef) -> Value {
+        match element.kind {
+            ElementKind::Vertex => Value::Vertex(element.id),
+            ElementKind::Edge => Value::Edge(element.id),
+            ElementKind::Face => Value::Face(element.id),
         }
     }
 }
 
-impl From<Option<Element>> for Value {
-    fn from(element: Option<Element>) -> Value {
+impl From<Option<ElementRef>> for Value {
+    fn from(element: Option<ElementRef>) -> Value {
         element.map_or(Value::Null, Value::from)
     }
 }
@@ -267,224 +167,9 @@ impl fmt::Display for Value {
     }
 }
 
-/// A lookup: one reference stored in (or derived from) a table entry.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Field {
-    /// Vertex and face tables, both structures.
-    IncidentEdge,
-    StartVertex,
-    EndVertex,
-    // Winged-edge edge table.
-    LeftFace,
-    RightFace,
-    LeftPredecessor,
-    LeftSuccessor,
-    RightPredecessor,
-    RightSuccessor,
-    // Half-edge table.
-    AdjacentFace,
-    PairEdge,
-    SuccessorEdge,
-    PredecessorEdge,
-}
-
-/// Every spelling of every lookup: (name, field, structure it exists in, or
-/// `None` for both).
-const FIELD_NAMES: &[(&str, Field, Option<Structure>)] = &[
-    ("incidentEdge", Field::IncidentEdge, None),
-    ("startVertex", Field::StartVertex, None),
-    ("endVertex", Field::EndVertex, None),
-    ("leftFace", Field::LeftFace, Some(Structure::WingedEdge)),
-    ("rightFace", Field::RightFace, Some(Structure::WingedEdge)),
-    (
-        "leftPredecessor",
-        Field::LeftPredecessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "leftSuccessor",
-        Field::LeftSuccessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "rightPredecessor",
-        Field::RightPredecessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "rightSuccessor",
-        Field::RightSuccessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "adjacentFace",
-        Field::AdjacentFace,
-        Some(Structure::HalfEdge),
-    ),
-    ("face", Field::AdjacentFace, Some(Structure::HalfEdge)),
-    ("vertex", Field::EndVertex, Some(Structure::HalfEdge)),
-    ("pairEdge", Field::PairEdge, Some(Structure::HalfEdge)),
-    ("pair", Field::PairEdge, Some(Structure::HalfEdge)),
-    ("twin", Field::PairEdge, Some(Structure::HalfEdge)),
-    (
-        "successorEdge",
-        Field::SuccessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    ("successor", Field::SuccessorEdge, Some(Structure::HalfEdge)),
-    ("next", Field::SuccessorEdge, Some(Structure::HalfEdge)),
-    (
-        "predecessorEdge",
-        Field::PredecessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    (
-        "predecessor",
-        Field::PredecessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    ("prev", Field::PredecessorEdge, Some(Structure::HalfEdge)),
-];
-
-/// Why a lookup name was refused, for the checker's message.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum FieldError {
-    /// No structure has a lookup of this name.
-    Unknown,
-    /// The other structure has it.
-    OtherStructure(Structure),
-    /// The structure has it, on another kind of element.
-    WrongElement(ElementKind),
-}
-
-impl Field {
-    /// The canonical name, as the tables' column headings spell it.
-    pub fn name(self) -> &'static str {
-        FIELD_NAMES
-            .iter()
-            .find(|&&(_, f, _)| f == self)
-            .map_or("?", |&(name, _, _)| name)
-    }
-
-    /// The element kind a lookup applies to.
-    pub fn base(self) -> ElementKind {
-        match self {
-            Field::IncidentEdge => ElementKind::Vertex,
-            _ => ElementKind::Edge,
-        }
-    }
-
-    /// The kind of element a lookup yields.
-    pub fn result(self) -> ElementKind {
-        match self {
-            Field::StartVertex | Field::EndVertex => ElementKind::Vertex,
-            Field::LeftFace | Field::RightFace | Field::AdjacentFace => ElementKind::Face,
-            _ => ElementKind::Edge,
-        }
-    }
-
-    /// Whether this lookup applies to elements of `kind`.
-    pub fn applies_to(self, kind: ElementKind) -> bool {
-        match self {
-            Field::IncidentEdge => kind != ElementKind::Edge,
-            _ => kind == ElementKind::Edge,
-        }
-    }
-
-    /// Whether the lookup can yield null in a valid mesh: a missing face at a
-    /// boundary, or the incident edge of an isolated vertex.
-    pub fn may_be_null(self) -> bool {
-        matches!(
-            self,
-            Field::LeftFace | Field::RightFace | Field::AdjacentFace | Field::IncidentEdge
-        )
-    }
-
-    /// Resolves a lookup name (any case, any alias) on an element of `kind` in
-    /// `structure`.
-    pub fn resolve(
-        structure: Structure,
-        kind: ElementKind,
-        name: &str,
-    ) -> Result<Field, FieldError> {
-        let mut found_elsewhere = None;
-        let mut known = false;
-        for &(candidate, field, only_in) in FIELD_NAMES {
-            if !candidate.eq_ignore_ascii_case(name) {
-                continue;
-            }
-            known = true;
-            match only_in {
-                Some(other) if other != structure => {
-                    found_elsewhere = Some(FieldError::OtherStructure(other));
-                }
-                _ if !field.applies_to(kind) => {
-                    found_elsewhere = Some(FieldError::WrongElement(field.base()));
-                }
-                _ => return Ok(field),
-            }
-        }
-        if known {
-            Err(found_elsewhere.unwrap_or(FieldError::Unknown))
-        } else {
-            Err(FieldError::Unknown)
-        }
-    }
-
-    /// The lookup names (aliases included) valid on `kind` in `structure`.
-    pub fn names_for(
-        structure: Structure,
-        kind: ElementKind,
-    ) -> impl Iterator<Item = &'static str> {
-        FIELD_NAMES
-            .iter()
-            .filter(move |&&(_, field, only_in)| {
-                only_in.is_none_or(|s| s == structure) && field.applies_to(kind)
-            })
-            .map(|&(name, _, _)| name)
-    }
-
-    /// Every lookup name of either structure.
-    pub fn all_names() -> impl Iterator<Item = &'static str> {
-        FIELD_NAMES.iter().map(|&(name, _, _)| name)
-    }
-}
-
-impl fmt::Display for Field {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn lookups_resolve_by_structure_and_element() {
-        use ElementKind as K;
-        use Structure::{HalfEdge, WingedEdge};
-        assert_eq!(
-            Field::resolve(HalfEdge, K::Edge, "TWIN"),
-            Ok(Field::PairEdge)
-        );
-        assert_eq!(
-            Field::resolve(WingedEdge, K::Face, "incidentEdge"),
-            Ok(Field::IncidentEdge)
-        );
-        assert_eq!(
-            Field::resolve(HalfEdge, K::Edge, "leftFace"),
-            Err(FieldError::OtherStructure(WingedEdge))
-        );
-        assert_eq!(
-            Field::resolve(WingedEdge, K::Vertex, "startVertex"),
-            Err(FieldError::WrongElement(K::Edge))
-        );
-        assert_eq!(
-            Field::resolve(WingedEdge, K::Edge, "sideways"),
-            Err(FieldError::Unknown)
-        );
-    }
 
     #[test]
     fn values_round_trip_through_their_encoding() {

@@ -5,7 +5,8 @@ use super::compiler::{Algorithm, CompareOp, ComputeOp, MessageItem, Op, Reg};
 use super::diagnostic::Span;
 use super::topology::Topology;
 use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
-use super::types::{Element, Field, Type, Value};
+use super::types::{Type, Value};
+use crate::schema::{ElementKind, ElementRef};
 use std::fmt;
 use std::sync::Arc;
 
@@ -51,7 +52,7 @@ pub enum InputError {
     },
     OutOfRange {
         name: String,
-        element: Element,
+        element: ElementRef,
         count: usize,
     },
     Duplicate {
@@ -107,7 +108,7 @@ impl fmt::Display for InputError {
                 write!(
                     f,
                     "parameter `{name}`: {element} does not exist (the mesh has {count} {})",
-                    element.kind().plural()
+                    element.kind.plural()
                 )
             }
             InputError::Duplicate { name } => write!(f, "parameter `{name}` is given twice"),
@@ -151,7 +152,7 @@ impl Algorithm {
             ty => {
                 let index: u32 = value.parse().map_err(|_| wrong())?;
                 match ty.element_kind() {
-                    Some(kind) => Value::from(Element::new(kind, index)),
+                    Some(kind) => Value::from(ElementRef::new(kind, index)),
                     None => return Err(wrong()),
                 }
             }
@@ -219,7 +220,7 @@ impl Algorithm {
                 (Type::Integer, Value::Integer(_)) | (Type::Boolean, Value::Boolean(_)) => true,
                 (ty, value) => value
                     .element()
-                    .is_some_and(|e| Some(e.kind()) == ty.element_kind()),
+                    .is_some_and(|e| Some(e.kind) == ty.element_kind()),
             };
             if !fits {
                 return Err(InputError::WrongType {
@@ -229,8 +230,8 @@ impl Algorithm {
                 });
             }
             if let Some(element) = value.element() {
-                let count = topology.count(element.kind());
-                if element.index() as usize >= count {
+                let count = topology.count(element.kind);
+                if element.id as usize >= count {
                     return Err(InputError::OutOfRange {
                         name,
                         element,
@@ -269,8 +270,8 @@ pub fn run<T: Topology + ?Sized>(
 /// The result of [`execute`]: what a run produced, without its steps.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Execution {
-    pub marked: Vec<Element>,
-    pub highlighted: Vec<Element>,
+    pub marked: Vec<ElementRef>,
+    pub highlighted: Vec<ElementRef>,
     pub messages: Vec<String>,
     /// The variables' final values, in declaration order (parameters first).
     pub variables: Vec<Value>,
@@ -325,16 +326,16 @@ pub fn execute<T: Topology + ?Sized>(
 /// variable, with the variables as they are, so a recorder can snapshot them.
 pub(crate) trait Recorder {
     fn step(&mut self, pc: u32, a: u32, b: u32, r: u32, variables: &[Value]);
-    fn mark(&mut self, element: Element);
-    fn highlight(&mut self, element: Element);
+    fn mark(&mut self, element: ElementRef);
+    fn highlight(&mut self, element: ElementRef);
     /// Stores a message's text and returns its number.
     fn message(&mut self, text: String) -> u32;
 }
 
 #[derive(Default)]
 struct OutputRecorder {
-    marked: Vec<Element>,
-    highlighted: Vec<Element>,
+    marked: Vec<ElementRef>,
+    highlighted: Vec<ElementRef>,
     messages: Vec<String>,
 }
 
@@ -342,11 +343,11 @@ impl Recorder for OutputRecorder {
     #[inline]
     fn step(&mut self, _pc: u32, _a: u32, _b: u32, _r: u32, _variables: &[Value]) {}
 
-    fn mark(&mut self, element: Element) {
+    fn mark(&mut self, element: ElementRef) {
         self.marked.push(element);
     }
 
-    fn highlight(&mut self, element: Element) {
+    fn highlight(&mut self, element: ElementRef) {
         self.highlighted.push(element);
     }
 
@@ -658,11 +659,10 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
             return "it was never set".to_owned();
         };
         match field {
-            Field::LeftFace | Field::RightFace | Field::AdjacentFace => {
+            face if face.target() == Some(ElementKind::Face) => {
                 format!("{base} is on the boundary")
             }
-            Field::IncidentEdge => format!("{base} has no incident edge"),
-            other => format!("{base} has no {other}"),
+            other => format!("{base} has no {}", other.key()),
         }
     }
 

@@ -13,7 +13,7 @@ use super::polygons::Polygons;
 use super::repair;
 
 /// A row of the half-edge vertex table.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Vertex {
     /// Where the vertex is.
     pub position: Vec3,
@@ -24,14 +24,14 @@ pub struct Vertex {
 }
 
 /// A row of the half-edge face table.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Face {
     /// One of the face's half-edges.
     pub incident_edge: HalfEdgeId,
 }
 
 /// A row of the half-edge table.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct HalfEdge {
     /// The vertex this half-edge points to.
     pub end_vertex: VertexId,

@@ -11,15 +11,7 @@ use super::polygons::Polygons;
 use super::stats::MeshStats;
 use super::validate::Issue;
 use super::winged_edge::WingedEdgeMesh;
-
-/// Which data structure stores a mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Structure {
-    /// Winged-edge (edge, vertex and face tables; `.wtb` files).
-    WingedEdge,
-    /// Half-edge (half-edge, vertex and face tables; `.htb` files).
-    HalfEdge,
-}
+use crate::schema::Structure;
 
 /// A mesh in one of the two structures.
 #[derive(Clone, Debug, PartialEq)]

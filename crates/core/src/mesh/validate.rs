@@ -10,6 +10,7 @@ use std::fmt;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use super::winged_edge::{Side, WingedEdge, WingedEdgeMesh};
+use crate::schema::Column;
 
 /// The table row an issue is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -35,99 +36,26 @@ impl fmt::Display for Element {
     }
 }
 
-/// The table column an issue is about, named as in the papers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Field {
-    /// A vertex's position.
-    Position,
-    /// A vertex's or face's incident edge.
-    IncidentEdge,
-    /// A winged edge's start vertex.
-    StartVertex,
-    /// An edge's or half-edge's end vertex.
-    EndVertex,
-    /// A winged edge's left face.
-    LeftFace,
-    /// A winged edge's right face.
-    RightFace,
-    /// A winged edge's left predecessor.
-    LeftPredecessor,
-    /// A winged edge's left successor.
-    LeftSuccessor,
-    /// A winged edge's right predecessor.
-    RightPredecessor,
-    /// A winged edge's right successor.
-    RightSuccessor,
-    /// A half-edge's adjacent face.
-    Face,
-    /// A half-edge's pair edge.
-    PairEdge,
-    /// A half-edge's successor edge.
-    SuccessorEdge,
-}
-
-impl Field {
-    /// The column name, in the papers' vocabulary (`left_predecessor`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Position => "position",
-            Self::IncidentEdge => "incident_edge",
-            Self::StartVertex => "start_vertex",
-            Self::EndVertex => "end_vertex",
-            Self::LeftFace => "left_face",
-            Self::RightFace => "right_face",
-            Self::LeftPredecessor => "left_predecessor",
-            Self::LeftSuccessor => "left_successor",
-            Self::RightPredecessor => "right_predecessor",
-            Self::RightSuccessor => "right_successor",
-            Self::Face => "face",
-            Self::PairEdge => "pair_edge",
-            Self::SuccessorEdge => "successor_edge",
-        }
-    }
-
-    fn face_of(side: Side) -> Self {
-        match side {
-            Side::Left => Self::LeftFace,
-            Side::Right => Self::RightFace,
-        }
-    }
-
-    fn predecessor_of(side: Side) -> Self {
-        match side {
-            Side::Left => Self::LeftPredecessor,
-            Side::Right => Self::RightPredecessor,
-        }
-    }
-
-    fn successor_of(side: Side) -> Self {
-        match side {
-            Side::Left => Self::LeftSuccessor,
-            Side::Right => Self::RightSuccessor,
-        }
-    }
-}
-
-impl fmt::Display for Field {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
 /// One violated rule.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Issue {
     /// The row.
     pub element: Element,
     /// The column.
-    pub field: Field,
+    pub field: Column,
     /// What is wrong, in one line.
     pub message: String,
 }
 
 impl fmt::Display for Issue {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} {}: {}", self.element, self.field, self.message)
+        write!(
+            f,
+            "{} {}: {}",
+            self.element,
+            self.field.record_name(),
+            self.message
+        )
     }
 }
 
@@ -145,7 +73,7 @@ fn side_name(side: Side) -> &'static str {
 struct Issues(Vec<Issue>);
 
 impl Issues {
-    fn push(&mut self, element: Element, field: Field, message: String) {
+    fn push(&mut self, element: Element, field: Column, message: String) {
         self.0.push(Issue {
             element,
             field,
@@ -158,7 +86,7 @@ fn check_position(issues: &mut Issues, v: VertexId, position: glam::Vec3) {
     if !position.is_finite() {
         issues.push(
             Element::Vertex(v),
-            Field::Position,
+            Column::Position,
             format!(
                 "position ({}, {}, {}) is not a finite point",
                 position.x, position.y, position.z
@@ -185,7 +113,7 @@ impl HalfEdgeMesh {
                 Some(count) => *count += 1,
                 None => issues.push(
                     element,
-                    Field::EndVertex,
+                    Column::EndVertex,
                     format!("{} does not exist (there are {nv} vertices)", h.end_vertex),
                 ),
             }
@@ -194,7 +122,7 @@ impl HalfEdgeMesh {
                     Some(count) => *count += 1,
                     None => issues.push(
                         element,
-                        Field::Face,
+                        Column::Face,
                         format!("{f} does not exist (there are {nf} faces)"),
                     ),
                 }
@@ -202,15 +130,15 @@ impl HalfEdgeMesh {
             match self.half_edge(h.pair_edge) {
                 None => issues.push(
                     element,
-                    Field::PairEdge,
+                    Column::PairEdge,
                     format!("{} does not exist (there are {nh} half-edges)", h.pair_edge),
                 ),
                 Some(_) if h.pair_edge == id => {
-                    issues.push(element, Field::PairEdge, "the half-edge is its own pair edge".to_owned());
+                    issues.push(element, Column::PairEdge, "the half-edge is its own pair edge".to_owned());
                 }
                 Some(pair) if pair.pair_edge != id => issues.push(
                     element,
-                    Field::PairEdge,
+                    Column::PairEdge,
                     format!(
                         "its pair edge {} has {} as pair edge, not this half-edge (pair(pair(h)) must be h)",
                         h.pair_edge, pair.pair_edge
@@ -220,7 +148,7 @@ impl HalfEdgeMesh {
                     if pair.end_vertex == h.end_vertex {
                         issues.push(
                             element,
-                            Field::PairEdge,
+                            Column::PairEdge,
                             format!(
                                 "it and its pair edge {} both end at {}; the halves of an edge end at its two different vertices",
                                 h.pair_edge, h.end_vertex
@@ -230,7 +158,7 @@ impl HalfEdgeMesh {
                     if h.face.is_none() && pair.face.is_none() && id < h.pair_edge {
                         issues.push(
                             element,
-                            Field::Face,
+                            Column::Face,
                             format!(
                                 "neither it nor its pair edge {} has a face; an edge needs a face on at least one side",
                                 h.pair_edge
@@ -242,7 +170,7 @@ impl HalfEdgeMesh {
             match self.half_edge(h.successor_edge) {
                 None => issues.push(
                     element,
-                    Field::SuccessorEdge,
+                    Column::SuccessorEdge,
                     format!(
                         "{} does not exist (there are {nh} half-edges)",
                         h.successor_edge
@@ -252,7 +180,7 @@ impl HalfEdgeMesh {
                     if successor.face != h.face {
                         issues.push(
                             element,
-                            Field::SuccessorEdge,
+                            Column::SuccessorEdge,
                             format!(
                                 "its successor {} lies in {}, but this half-edge lies in {}",
                                 h.successor_edge,
@@ -266,7 +194,7 @@ impl HalfEdgeMesh {
                     {
                         issues.push(
                             element,
-                            Field::SuccessorEdge,
+                            Column::SuccessorEdge,
                             format!(
                                 "its successor {} starts at {start}, but this half-edge ends at {}",
                                 h.successor_edge, h.end_vertex
@@ -278,7 +206,7 @@ impl HalfEdgeMesh {
                     {
                         issues.push(
                             element,
-                            Field::SuccessorEdge,
+                            Column::SuccessorEdge,
                             format!(
                                 "{} is already the successor of {first}; every half-edge has exactly one predecessor",
                                 h.successor_edge
@@ -319,7 +247,7 @@ impl HalfEdgeMesh {
                     }
                 }
             };
-            issues.push(Element::Face(id), Field::IncidentEdge, message);
+            issues.push(Element::Face(id), Column::IncidentEdge, message);
         }
 
         for ((id, vertex), &count) in (0u32..)
@@ -357,7 +285,7 @@ impl HalfEdgeMesh {
                     }
                 },
             };
-            issues.push(Element::Vertex(id), Field::IncidentEdge, message);
+            issues.push(Element::Vertex(id), Column::IncidentEdge, message);
         }
         issues.0
     }
@@ -395,8 +323,8 @@ impl WingedEdgeMesh {
         for (id, edge) in (0u32..).map(EdgeId::new).zip(&self.edges) {
             let element = Element::Edge(id);
             for (v, field) in [
-                (edge.start_vertex, Field::StartVertex),
-                (edge.end_vertex, Field::EndVertex),
+                (edge.start_vertex, Column::StartVertex),
+                (edge.end_vertex, Column::EndVertex),
             ] {
                 match degree.get_mut(v.index()) {
                     Some(count) => *count += 1,
@@ -410,7 +338,7 @@ impl WingedEdgeMesh {
             if edge.start_vertex == edge.end_vertex {
                 issues.push(
                     element,
-                    Field::EndVertex,
+                    Column::EndVertex,
                     format!(
                         "the edge starts and ends at {}; an edge joins two different vertices",
                         edge.start_vertex
@@ -420,12 +348,12 @@ impl WingedEdgeMesh {
             match (edge.left_face, edge.right_face) {
                 (None, None) => issues.push(
                     element,
-                    Field::LeftFace,
+                    Column::LeftFace,
                     "the edge has no face on either side; an edge needs a face on at least one side".to_owned(),
                 ),
                 (Some(left), Some(right)) if left == right => issues.push(
                     element,
-                    Field::RightFace,
+                    Column::RightFace,
                     format!("{left} is on both sides of the edge; the two sides need different faces"),
                 ),
                 _ => {}
@@ -460,7 +388,7 @@ impl WingedEdgeMesh {
                     }
                 }
             };
-            issues.push(Element::Face(id), Field::IncidentEdge, message);
+            issues.push(Element::Face(id), Column::IncidentEdge, message);
         }
 
         for ((id, vertex), &count) in (0u32..).map(VertexId::new).zip(&self.vertices).zip(&degree) {
@@ -490,7 +418,7 @@ impl WingedEdgeMesh {
                     }
                 },
             };
-            issues.push(Element::Vertex(id), Field::IncidentEdge, message);
+            issues.push(Element::Vertex(id), Column::IncidentEdge, message);
         }
         issues.0
     }
@@ -525,7 +453,7 @@ impl WingedEdgeMesh {
                 Some(count) => *count += 1,
                 None => issues.push(
                     element,
-                    Field::face_of(side),
+                    Column::face_of(side),
                     format!("{f} does not exist (there are {} faces)", self.faces.len()),
                 ),
             }
@@ -536,7 +464,7 @@ impl WingedEdgeMesh {
         let ne = self.edges.len();
 
         let predecessor = edge.predecessor(side);
-        let field = Field::predecessor_of(side);
+        let field = Column::predecessor_of(side);
         match self.edge(predecessor) {
             None => issues.push(
                 element,
@@ -580,7 +508,7 @@ impl WingedEdgeMesh {
         }
 
         let successor = edge.successor(side);
-        let field = Field::successor_of(side);
+        let field = Column::successor_of(side);
         match self.edge(successor) {
             None => issues.push(
                 element,

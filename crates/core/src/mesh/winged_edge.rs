@@ -16,7 +16,7 @@ use super::polygons::Polygons;
 use super::repair;
 
 /// A row of the winged-edge vertex table.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Vertex {
     /// Where the vertex is.
     pub position: Vec3,
@@ -25,7 +25,7 @@ pub struct Vertex {
 }
 
 /// A row of the winged-edge face table.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Face {
     /// One of the face's edges.
     pub incident_edge: EdgeId,
@@ -33,7 +33,7 @@ pub struct Face {
 
 /// A row of the winged-edge edge table: the nine pieces of Table 1 (the name
 /// is the row number).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WingedEdge {
     /// Where the edge starts (the direction of its first appearance).
     pub start_vertex: VertexId,

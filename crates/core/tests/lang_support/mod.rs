@@ -5,8 +5,9 @@
 
 #![allow(dead_code)]
 
-use edgewise_core::lang::{Element, ElementKind, Field, Structure, Topology};
+use edgewise_core::lang::Topology;
 use edgewise_core::mesh::{HalfEdgeMesh, Polygons, WingedEdgeMesh, generate};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Structure};
 use glam::Vec3;
 use std::collections::BTreeSet;
 
@@ -282,7 +283,7 @@ pub struct Row {
     pub right: Option<u32>,
 }
 
-fn get(topology: &dyn Topology, element: Element, field: Field) -> Option<Element> {
+fn get(topology: &dyn Topology, element: ElementRef, field: Column) -> Option<ElementRef> {
     topology
         .lookup(element, field)
         .expect("lookup on a valid mesh")
@@ -290,23 +291,24 @@ fn get(topology: &dyn Topology, element: Element, field: Field) -> Option<Elemen
 
 /// Scans the whole edge (or half-edge) table.
 pub fn rows(topology: &dyn Topology) -> Vec<Row> {
-    let index = |e: Option<Element>| e.map(Element::index);
+    let index = |e: Option<ElementRef>| e.map(|e: ElementRef| e.id);
     (0..topology.count(ElementKind::Edge) as u32)
         .map(|edge| {
-            let e = Element::Edge(edge);
-            let start = get(topology, e, Field::StartVertex).map_or(u32::MAX, Element::index);
-            let end = get(topology, e, Field::EndVertex).map_or(u32::MAX, Element::index);
+            let e = ElementRef::new(ElementKind::Edge, edge);
+            let start =
+                get(topology, e, Column::StartVertex).map_or(u32::MAX, |e: ElementRef| e.id);
+            let end = get(topology, e, Column::EndVertex).map_or(u32::MAX, |e: ElementRef| e.id);
             let (left, right) = match topology.structure() {
                 Structure::WingedEdge => (
-                    index(get(topology, e, Field::LeftFace)),
-                    index(get(topology, e, Field::RightFace)),
+                    index(get(topology, e, Column::LeftFace)),
+                    index(get(topology, e, Column::RightFace)),
                 ),
                 Structure::HalfEdge => {
                     let pair =
-                        get(topology, e, Field::PairEdge).expect("every half-edge has a pair");
+                        get(topology, e, Column::PairEdge).expect("every half-edge has a pair");
                     (
-                        index(get(topology, e, Field::AdjacentFace)),
-                        index(get(topology, pair, Field::AdjacentFace)),
+                        index(get(topology, e, Column::Face)),
+                        index(get(topology, pair, Column::Face)),
                     )
                 }
             };
@@ -323,12 +325,12 @@ pub fn rows(topology: &dyn Topology) -> Vec<Row> {
 
 /// What a library algorithm must produce, found without walking the mesh.
 pub struct Expected {
-    pub marked: Vec<Element>,
+    pub marked: Vec<ElementRef>,
     /// For vertexValence: the final value of `n`.
     pub valence: Option<i32>,
 }
 
-fn sorted(mut elements: Vec<Element>) -> Vec<Element> {
+fn sorted(mut elements: Vec<ElementRef>) -> Vec<ElementRef> {
     elements.sort();
     elements
 }
@@ -339,15 +341,15 @@ pub fn brute_force(
     name: &str,
     topology: &dyn Topology,
     polygons: &Polygons,
-    input: Element,
+    input: ElementRef,
 ) -> Option<Expected> {
     let structure = topology.structure();
     let rows = rows(topology);
     let faces: Vec<Vec<u32>> = polygons.faces().map(<[u32]>::to_vec).collect();
-    let face_of = |f: u32| Element::Face(f);
-    let vertex_of = |v: u32| Element::Vertex(v);
-    let edge_of = |e: u32| Element::Edge(e);
-    let i = input.index();
+    let face_of = |f: u32| ElementRef::new(ElementKind::Face, f);
+    let vertex_of = |v: u32| ElementRef::new(ElementKind::Vertex, v);
+    let edge_of = |e: u32| ElementRef::new(ElementKind::Edge, e);
+    let i = input.id;
 
     // The edges (half-edges) a walk around vertex v meets, one per edge.
     let around_vertex = |v: u32| -> Vec<&Row> {
@@ -391,7 +393,7 @@ pub fn brute_force(
             Structure::HalfEdge => r.right,
         }
     };
-    let link = |v: u32| -> Vec<Element> {
+    let link = |v: u32| -> Vec<ElementRef> {
         let mut marked = Vec::new();
         let mut vertices = BTreeSet::new();
         for f in faces_at(v) {
@@ -407,7 +409,7 @@ pub fn brute_force(
         marked
     };
 
-    let marked: Vec<Element> = match name {
+    let marked: Vec<ElementRef> = match name {
         "vertexAdjacentEdge" => around_vertex(i).iter().map(|r| edge_of(r.edge)).collect(),
         "vertexAdjacentFace" | "vertexAdjacentFaceOpen" => {
             faces_at(i).into_iter().map(face_of).collect()
@@ -560,6 +562,6 @@ pub fn is_exercise(name: &str) -> bool {
     )
 }
 
-pub fn sorted_marked(marked: impl IntoIterator<Item = Element>) -> Vec<Element> {
+pub fn sorted_marked(marked: impl IntoIterator<Item = ElementRef>) -> Vec<ElementRef> {
     sorted(marked.into_iter().collect())
 }

@@ -1,0 +1,55 @@
+//! What a trace step's colours mean, kept apart from the algorithm views so
+//! that the theme can colour them without depending on those views.
+
+/// The journal's colour meanings (Table 3); the base colour is the view's
+/// own gray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum TraceRole {
+    /// Blue: marked, the algorithm's output.
+    Output,
+    /// Green: the base and the result of the current lookup.
+    Lookup,
+    /// Yellow: highlighted by the algorithm.
+    Highlighted,
+    /// Purple: the value of some variable.
+    Variable,
+    /// Light blue: a side of the current comparison.
+    Compared,
+}
+
+impl TraceRole {
+    pub const ALL: [TraceRole; 5] = [
+        TraceRole::Output,
+        TraceRole::Lookup,
+        TraceRole::Highlighted,
+        TraceRole::Variable,
+        TraceRole::Compared,
+    ];
+
+    /// The name in `state().highlights` and in the colour settings.
+    pub fn key(self) -> &'static str {
+        match self {
+            TraceRole::Output => "marked",
+            TraceRole::Lookup => "lookup",
+            TraceRole::Highlighted => "highlighted",
+            TraceRole::Variable => "variable",
+            TraceRole::Compared => "compared",
+        }
+    }
+
+    /// Parses [`Self::key`].
+    pub fn parse(key: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|role| role.key() == key)
+    }
+
+    /// The legend's wording.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            TraceRole::Output => "algorithm output (marked)",
+            TraceRole::Lookup => "in a lookup",
+            TraceRole::Highlighted => "highlighted",
+            TraceRole::Variable => "a variable refers to it",
+            TraceRole::Compared => "in a comparison",
+        }
+    }
+}

@@ -1,0 +1,780 @@
+//! Every column of every table, with every name it goes by: the record field
+//! and file column (`left_predecessor`), the role label ("Left Predecessor"),
+//! the table header ("left pred"), the language's lookup names
+//! (`leftPredecessor`), and the colour its role is shown in. Reading a column
+//! from a mesh ([`Records::reference`]) lives here too, so that adding a
+//! column means editing this file and no other.
+
+use std::fmt;
+
+use glam::Vec3;
+
+use super::{ElementKind, ElementRef, Structure};
+use crate::mesh::{
+    EdgeId, FaceId, HalfEdge, HalfEdgeId, HalfEdgeMesh, Mesh, Side, VertexId, WingedEdge,
+    WingedEdgeMesh, half_edge, winged_edge,
+};
+
+/// One column of a vertex, edge (or half-edge) or face table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Column {
+    /// A vertex's position (x, y, z): the one column that is not a reference.
+    Position,
+    /// A vertex's or face's incident edge.
+    IncidentEdge,
+    /// An edge's start vertex (derived in a half-edge structure).
+    StartVertex,
+    /// An edge's or half-edge's end vertex.
+    EndVertex,
+    /// A winged edge's left face.
+    LeftFace,
+    /// A winged edge's right face.
+    RightFace,
+    /// A winged edge's left predecessor.
+    LeftPredecessor,
+    /// A winged edge's left successor.
+    LeftSuccessor,
+    /// A winged edge's right predecessor.
+    RightPredecessor,
+    /// A winged edge's right successor.
+    RightSuccessor,
+    /// A half-edge's adjacent face.
+    Face,
+    /// A half-edge's pair edge.
+    PairEdge,
+    /// A half-edge's successor edge.
+    SuccessorEdge,
+    /// A half-edge's predecessor edge, derived from the successor cycle.
+    PredecessorEdge,
+}
+
+/// The colours of a column's role, as sRGB for the light and dark themes.
+/// Left-side wings are greens and right-side wings purples, so a student can
+/// tell the two faces' traversals apart at a glance.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Palette {
+    pub light: [u8; 3],
+    pub dark: [u8; 3],
+}
+
+/// Whether a structure keeps a column in its records or computes it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Storage {
+    /// Kept in the record and written to table files.
+    Stored,
+    /// Computed from stored columns (a half-edge's start vertex and
+    /// predecessor); shown dimmed in the tables, never written.
+    Derived,
+}
+
+/// A column as one structure's table lays it out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TableColumn {
+    pub column: Column,
+    /// The table header in the app and in `edgewise tables`.
+    pub header: &'static str,
+    pub storage: Storage,
+}
+
+/// The names a column goes by, one row per column.
+struct Names {
+    /// The record field, file column and `validate` name.
+    record: &'static str,
+    /// The role label in the 3D view.
+    title: &'static str,
+    palette: Palette,
+}
+
+const fn names(record: &'static str, title: &'static str, light: u32, dark: u32) -> Names {
+    const fn rgb(hex: u32) -> [u8; 3] {
+        [(hex >> 16) as u8, (hex >> 8) as u8, hex as u8]
+    }
+    Names {
+        record,
+        title,
+        palette: Palette {
+            light: rgb(light),
+            dark: rgb(dark),
+        },
+    }
+}
+
+impl Column {
+    /// Every column, in table order.
+    pub const ALL: [Column; 14] = [
+        Column::Position,
+        Column::IncidentEdge,
+        Column::StartVertex,
+        Column::EndVertex,
+        Column::LeftFace,
+        Column::RightFace,
+        Column::LeftPredecessor,
+        Column::LeftSuccessor,
+        Column::RightPredecessor,
+        Column::RightSuccessor,
+        Column::Face,
+        Column::PairEdge,
+        Column::SuccessorEdge,
+        Column::PredecessorEdge,
+    ];
+
+    /// The names of the coordinates that make up [`Column::Position`], as
+    /// file columns and table headers.
+    pub const COORDINATES: [&'static str; 3] = ["x", "y", "z"];
+
+    fn names(self) -> Names {
+        match self {
+            Self::Position => names("position", "Position", 0x495057, 0xadb5bd),
+            Self::IncidentEdge => names("incident_edge", "Incident Edge", 0x1c6dd0, 0x5ca8ff),
+            Self::StartVertex => names("start_vertex", "Start Vertex", 0x0b7a75, 0x3fc1b8),
+            Self::EndVertex => names("end_vertex", "End Vertex", 0x1c4fa0, 0x749cf0),
+            Self::LeftFace => names("left_face", "Left Face", 0x2b8a3e, 0x69db7c),
+            Self::RightFace => names("right_face", "Right Face", 0x862e9c, 0xcc8be8),
+            Self::LeftPredecessor => {
+                names("left_predecessor", "Left Predecessor", 0x5c940d, 0xa9e34b)
+            }
+            Self::LeftSuccessor => names("left_successor", "Left Successor", 0x087f5b, 0x38d9a9),
+            Self::RightPredecessor => {
+                names("right_predecessor", "Right Predecessor", 0xae3ec9, 0xe599f7)
+            }
+            Self::RightSuccessor => names("right_successor", "Right Successor", 0x6741d9, 0xb197fc),
+            Self::Face => names("face", "Face", 0x2b8a3e, 0x69db7c),
+            Self::PairEdge => names("pair_edge", "Pair Edge", 0xc2255c, 0xf783ac),
+            Self::SuccessorEdge => names("successor_edge", "Successor Edge", 0x087f5b, 0x38d9a9),
+            Self::PredecessorEdge => {
+                names("predecessor_edge", "Predecessor Edge", 0x5c940d, 0xa9e34b)
+            }
+        }
+    }
+
+    /// The record field's name, as table files and `validate` spell it
+    /// (`left_predecessor`).
+    pub fn record_name(self) -> &'static str {
+        self.names().record
+    }
+
+    /// The role label: "Left Predecessor".
+    pub fn title(self) -> &'static str {
+        self.names().title
+    }
+
+    /// The role's name in `window.edgewise.state()`: "left predecessor".
+    pub fn key(self) -> String {
+        self.title().to_lowercase()
+    }
+
+    /// The role's name in settings and links: "leftPredecessor".
+    pub fn setting_key(self) -> String {
+        let mut words = self.title().split(' ');
+        let mut key = words.next().unwrap_or_default().to_lowercase();
+        key.extend(words);
+        key
+    }
+
+    /// The colours of the column's role.
+    pub fn palette(self) -> Palette {
+        self.names().palette
+    }
+
+    /// The kind of element the column refers to; `None` for the position.
+    pub fn target(self) -> Option<ElementKind> {
+        match self {
+            Self::Position => None,
+            Self::StartVertex | Self::EndVertex => Some(ElementKind::Vertex),
+            Self::LeftFace | Self::RightFace | Self::Face => Some(ElementKind::Face),
+            _ => Some(ElementKind::Edge),
+        }
+    }
+
+    /// The kind of element whose record holds the column (the vertex, for
+    /// an incident edge, which faces have too).
+    pub fn owner(self) -> ElementKind {
+        match self {
+            Self::Position | Self::IncidentEdge => ElementKind::Vertex,
+            _ => ElementKind::Edge,
+        }
+    }
+
+    /// Whether elements of `kind` have this column.
+    pub fn applies_to(self, kind: ElementKind) -> bool {
+        match self {
+            Self::IncidentEdge => kind != ElementKind::Edge,
+            other => other.owner() == kind,
+        }
+    }
+
+    /// Whether the column can be null in a valid mesh: a missing face at a
+    /// boundary, or the incident edge of an isolated vertex.
+    pub fn may_be_null(self) -> bool {
+        matches!(
+            self,
+            Self::LeftFace | Self::RightFace | Self::Face | Self::IncidentEdge
+        )
+    }
+
+    /// Whether a row of `kind` may hold no reference in this column (`-` in
+    /// table files): a boundary face, or an isolated vertex's incident edge.
+    pub fn nullable_in(self, kind: ElementKind) -> bool {
+        self.may_be_null() && !(self == Self::IncidentEdge && kind == ElementKind::Face)
+    }
+
+    /// A winged edge's face on `side`.
+    pub fn face_of(side: Side) -> Self {
+        match side {
+            Side::Left => Self::LeftFace,
+            Side::Right => Self::RightFace,
+        }
+    }
+
+    /// A winged edge's predecessor on `side`.
+    pub fn predecessor_of(side: Side) -> Self {
+        match side {
+            Side::Left => Self::LeftPredecessor,
+            Side::Right => Self::RightPredecessor,
+        }
+    }
+
+    /// A winged edge's successor on `side`.
+    pub fn successor_of(side: Side) -> Self {
+        match side {
+            Side::Left => Self::LeftSuccessor,
+            Side::Right => Self::RightSuccessor,
+        }
+    }
+}
+
+/// The tables of each structure, column by column.
+mod layout {
+    use super::Column::*;
+    use super::Storage::{Derived, Stored};
+    use super::TableColumn;
+
+    const fn col(column: super::Column, header: &'static str) -> TableColumn {
+        TableColumn {
+            column,
+            header,
+            storage: Stored,
+        }
+    }
+
+    const fn derived(column: super::Column, header: &'static str) -> TableColumn {
+        TableColumn {
+            column,
+            header,
+            storage: Derived,
+        }
+    }
+
+    pub(super) const VERTEX: &[TableColumn] = &[
+        col(Position, "position"),
+        col(IncidentEdge, "incident edge"),
+    ];
+    pub(super) const FACE: &[TableColumn] = &[col(IncidentEdge, "incident edge")];
+    pub(super) const WINGED_EDGE: &[TableColumn] = &[
+        col(StartVertex, "start"),
+        col(EndVertex, "end"),
+        col(LeftFace, "left face"),
+        col(RightFace, "right face"),
+        col(LeftPredecessor, "left pred"),
+        col(LeftSuccessor, "left succ"),
+        col(RightPredecessor, "right pred"),
+        col(RightSuccessor, "right succ"),
+    ];
+    pub(super) const HALF_EDGE: &[TableColumn] = &[
+        col(EndVertex, "end vertex"),
+        col(Face, "face"),
+        col(PairEdge, "pair"),
+        col(SuccessorEdge, "successor"),
+        derived(StartVertex, "start vertex"),
+        derived(PredecessorEdge, "predecessor"),
+    ];
+}
+
+impl Column {
+    /// The columns of one table of `structure`, in order: the stored ones,
+    /// then the derived ones.
+    pub fn table(structure: Structure, kind: ElementKind) -> &'static [TableColumn] {
+        match (structure, kind) {
+            (_, ElementKind::Vertex) => layout::VERTEX,
+            (_, ElementKind::Face) => layout::FACE,
+            (Structure::WingedEdge, ElementKind::Edge) => layout::WINGED_EDGE,
+            (Structure::HalfEdge, ElementKind::Edge) => layout::HALF_EDGE,
+        }
+    }
+
+    /// The column names of a table file's section, after the id: the
+    /// coordinates, then every stored reference.
+    pub fn file_columns(structure: Structure, kind: ElementKind) -> Vec<&'static str> {
+        let mut names = Vec::new();
+        for entry in Self::table(structure, kind) {
+            match (entry.column, entry.storage) {
+                (Self::Position, _) => names.extend(Self::COORDINATES),
+                (column, Storage::Stored) => names.push(column.record_name()),
+                (_, Storage::Derived) => {}
+            }
+        }
+        names
+    }
+
+    /// Where the column is in `structure`'s tables, if it is.
+    pub fn storage(self, structure: Structure) -> Option<Storage> {
+        ElementKind::ALL.into_iter().find_map(|kind| {
+            Self::table(structure, kind)
+                .iter()
+                .find(|entry| entry.column == self)
+                .map(|entry| entry.storage)
+        })
+    }
+}
+
+/// Every name the language accepts for a lookup, the canonical one of each
+/// column first: (name, column, the structure it is limited to or `None`
+/// for both). Names ignore case.
+const LANGUAGE_NAMES: &[(&str, Column, Option<Structure>)] = &[
+    ("incidentEdge", Column::IncidentEdge, None),
+    ("startVertex", Column::StartVertex, None),
+    ("endVertex", Column::EndVertex, None),
+    ("leftFace", Column::LeftFace, Some(Structure::WingedEdge)),
+    ("rightFace", Column::RightFace, Some(Structure::WingedEdge)),
+    (
+        "leftPredecessor",
+        Column::LeftPredecessor,
+        Some(Structure::WingedEdge),
+    ),
+    (
+        "leftSuccessor",
+        Column::LeftSuccessor,
+        Some(Structure::WingedEdge),
+    ),
+    (
+        "rightPredecessor",
+        Column::RightPredecessor,
+        Some(Structure::WingedEdge),
+    ),
+    (
+        "rightSuccessor",
+        Column::RightSuccessor,
+        Some(Structure::WingedEdge),
+    ),
+    ("adjacentFace", Column::Face, Some(Structure::HalfEdge)),
+    ("face", Column::Face, Some(Structure::HalfEdge)),
+    ("vertex", Column::EndVertex, Some(Structure::HalfEdge)),
+    ("pairEdge", Column::PairEdge, Some(Structure::HalfEdge)),
+    ("pair", Column::PairEdge, Some(Structure::HalfEdge)),
+    ("twin", Column::PairEdge, Some(Structure::HalfEdge)),
+    (
+        "successorEdge",
+        Column::SuccessorEdge,
+        Some(Structure::HalfEdge),
+    ),
+    (
+        "successor",
+        Column::SuccessorEdge,
+        Some(Structure::HalfEdge),
+    ),
+    ("next", Column::SuccessorEdge, Some(Structure::HalfEdge)),
+    (
+        "predecessorEdge",
+        Column::PredecessorEdge,
+        Some(Structure::HalfEdge),
+    ),
+    (
+        "predecessor",
+        Column::PredecessorEdge,
+        Some(Structure::HalfEdge),
+    ),
+    ("prev", Column::PredecessorEdge, Some(Structure::HalfEdge)),
+];
+
+/// Why a lookup name was refused, for the checker's message.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NameError {
+    /// No structure has a lookup of this name.
+    Unknown,
+    /// The other structure has it.
+    OtherStructure(Structure),
+    /// The structure has it, on another kind of element.
+    WrongElement(ElementKind),
+}
+
+impl Column {
+    /// The canonical lookup name in the language (`leftPredecessor`), or
+    /// `None` for the position, which is not a lookup.
+    pub fn language_name(self) -> Option<&'static str> {
+        LANGUAGE_NAMES
+            .iter()
+            .find(|&&(_, column, _)| column == self)
+            .map(|&(name, _, _)| name)
+    }
+
+    /// Resolves a lookup name (any case, any alias) on an element of `kind`
+    /// in `structure`.
+    pub fn resolve(structure: Structure, kind: ElementKind, name: &str) -> Result<Self, NameError> {
+        let mut found_elsewhere = None;
+        for &(candidate, column, only_in) in LANGUAGE_NAMES {
+            if !candidate.eq_ignore_ascii_case(name) {
+                continue;
+            }
+            match only_in {
+                Some(other) if other != structure => {
+                    found_elsewhere = Some(NameError::OtherStructure(other));
+                }
+                _ if !column.applies_to(kind) => {
+                    found_elsewhere = Some(NameError::WrongElement(column.owner()));
+                }
+                _ => return Ok(column),
+            }
+        }
+        Err(found_elsewhere.unwrap_or(NameError::Unknown))
+    }
+
+    /// The lookup names (aliases included) valid on `kind` in `structure`.
+    pub fn language_names_for(
+        structure: Structure,
+        kind: ElementKind,
+    ) -> impl Iterator<Item = &'static str> {
+        LANGUAGE_NAMES
+            .iter()
+            .filter(move |&&(_, column, only_in)| {
+                only_in.is_none_or(|s| s == structure) && column.applies_to(kind)
+            })
+            .map(|&(name, _, _)| name)
+    }
+
+    /// Every lookup name of either structure.
+    pub fn all_language_names() -> impl Iterator<Item = &'static str> {
+        LANGUAGE_NAMES.iter().map(|&(name, _, _)| name)
+    }
+}
+
+/// A table row that can be filled column by column, as the file readers do.
+pub trait Record: Default {
+    /// Stores `value` (a row number, or none) in `column`. Columns the
+    /// record does not store are ignored.
+    fn set(&mut self, column: Column, value: Option<u32>);
+}
+
+impl Record for winged_edge::Vertex {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        if column == Column::IncidentEdge {
+            self.incident_edge = value.map(EdgeId::new);
+        }
+    }
+}
+
+impl Record for winged_edge::Face {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        if column == Column::IncidentEdge {
+            self.incident_edge = EdgeId::new(value.unwrap_or_default());
+        }
+    }
+}
+
+impl Record for WingedEdge {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        let vertex = VertexId::new(value.unwrap_or_default());
+        let edge = EdgeId::new(value.unwrap_or_default());
+        let face = value.map(FaceId::new);
+        match column {
+            Column::StartVertex => self.start_vertex = vertex,
+            Column::EndVertex => self.end_vertex = vertex,
+            Column::LeftFace => self.left_face = face,
+            Column::RightFace => self.right_face = face,
+            Column::LeftPredecessor => self.left_predecessor = edge,
+            Column::LeftSuccessor => self.left_successor = edge,
+            Column::RightPredecessor => self.right_predecessor = edge,
+            Column::RightSuccessor => self.right_successor = edge,
+            _ => {}
+        }
+    }
+}
+
+impl Record for half_edge::Vertex {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        if column == Column::IncidentEdge {
+            self.incident_edge = value.map(HalfEdgeId::new);
+        }
+    }
+}
+
+impl Record for half_edge::Face {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        if column == Column::IncidentEdge {
+            self.incident_edge = HalfEdgeId::new(value.unwrap_or_default());
+        }
+    }
+}
+
+impl Record for HalfEdge {
+    fn set(&mut self, column: Column, value: Option<u32>) {
+        let half_edge = HalfEdgeId::new(value.unwrap_or_default());
+        match column {
+            Column::EndVertex => self.end_vertex = VertexId::new(value.unwrap_or_default()),
+            Column::Face => self.face = value.map(FaceId::new),
+            Column::PairEdge => self.pair_edge = half_edge,
+            Column::SuccessorEdge => self.successor_edge = half_edge,
+            _ => {}
+        }
+    }
+}
+
+/// A reference a mesh could not give: the row does not exist, or its table
+/// has no such column.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LookupError {
+    NoSuchElement(ElementRef),
+    NotApplicable { element: ElementRef, column: Column },
+}
+
+impl fmt::Display for LookupError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoSuchElement(element) => write!(f, "{element} does not exist in this mesh"),
+            Self::NotApplicable { element, column } => write!(
+                f,
+                "{element} has no {}",
+                column.language_name().unwrap_or(column.record_name())
+            ),
+        }
+    }
+}
+
+impl std::error::Error for LookupError {}
+
+/// A mesh's tables, read column by column.
+pub trait Records {
+    /// The structure whose tables these are.
+    fn structure(&self) -> Structure;
+
+    /// The number of rows in one table (half-edges, for a half-edge mesh's
+    /// edge table).
+    fn count(&self, kind: ElementKind) -> usize;
+
+    /// The reference `column` of `element`'s row holds (or derives).
+    /// `Ok(None)` is a legitimately missing reference: the face beyond a
+    /// boundary edge, or the incident edge of an isolated vertex.
+    fn reference(
+        &self,
+        element: ElementRef,
+        column: Column,
+    ) -> Result<Option<ElementRef>, LookupError>;
+
+    /// A vertex's position, the one column that is not a reference.
+    fn position(&self, vertex: VertexId) -> Option<Vec3>;
+
+    /// Whether the row exists.
+    fn contains(&self, element: ElementRef) -> bool {
+        (element.id as usize) < self.count(element.kind)
+    }
+}
+
+impl Records for WingedEdgeMesh {
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        WingedEdgeMesh::position(self, vertex)
+    }
+
+    fn structure(&self) -> Structure {
+        Structure::WingedEdge
+    }
+
+    fn count(&self, kind: ElementKind) -> usize {
+        match kind {
+            ElementKind::Vertex => self.vertex_count(),
+            ElementKind::Edge => self.edge_count(),
+            ElementKind::Face => self.face_count(),
+        }
+    }
+
+    #[inline]
+    fn reference(
+        &self,
+        element: ElementRef,
+        column: Column,
+    ) -> Result<Option<ElementRef>, LookupError> {
+        let missing = || LookupError::NoSuchElement(element);
+        let edge = |e: EdgeId| Some(ElementRef::edge(e));
+        let vertex = |v: VertexId| Some(ElementRef::vertex(v));
+        match (element.kind, column) {
+            (ElementKind::Vertex, Column::IncidentEdge) => {
+                let row = self.vertex(VertexId::new(element.id)).ok_or_else(missing)?;
+                Ok(row.incident_edge.map(ElementRef::edge))
+            }
+            (ElementKind::Face, Column::IncidentEdge) => {
+                let row = self.face(FaceId::new(element.id)).ok_or_else(missing)?;
+                Ok(edge(row.incident_edge))
+            }
+            (ElementKind::Edge, _) => {
+                let row = self.edge(EdgeId::new(element.id)).ok_or_else(missing)?;
+                Ok(match column {
+                    Column::StartVertex => vertex(row.start_vertex),
+                    Column::EndVertex => vertex(row.end_vertex),
+                    Column::LeftFace => row.left_face.map(ElementRef::face),
+                    Column::RightFace => row.right_face.map(ElementRef::face),
+                    Column::LeftPredecessor => edge(row.left_predecessor),
+                    Column::LeftSuccessor => edge(row.left_successor),
+                    Column::RightPredecessor => edge(row.right_predecessor),
+                    Column::RightSuccessor => edge(row.right_successor),
+                    _ => return Err(LookupError::NotApplicable { element, column }),
+                })
+            }
+            _ => Err(LookupError::NotApplicable { element, column }),
+        }
+    }
+}
+
+impl Records for HalfEdgeMesh {
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        HalfEdgeMesh::position(self, vertex)
+    }
+
+    fn structure(&self) -> Structure {
+        Structure::HalfEdge
+    }
+
+    fn count(&self, kind: ElementKind) -> usize {
+        match kind {
+            ElementKind::Vertex => self.vertex_count(),
+            ElementKind::Edge => self.half_edge_count(),
+            ElementKind::Face => self.face_count(),
+        }
+    }
+
+    #[inline]
+    fn reference(
+        &self,
+        element: ElementRef,
+        column: Column,
+    ) -> Result<Option<ElementRef>, LookupError> {
+        let missing = || LookupError::NoSuchElement(element);
+        let half_edge = |h: HalfEdgeId| Some(ElementRef::half_edge(h));
+        match (element.kind, column) {
+            (ElementKind::Vertex, Column::IncidentEdge) => {
+                let row = self.vertex(VertexId::new(element.id)).ok_or_else(missing)?;
+                Ok(row.incident_edge.map(ElementRef::half_edge))
+            }
+            (ElementKind::Face, Column::IncidentEdge) => {
+                let row = self.face(FaceId::new(element.id)).ok_or_else(missing)?;
+                Ok(half_edge(row.incident_edge))
+            }
+            (ElementKind::Edge, _) => {
+                let id = HalfEdgeId::new(element.id);
+                let row = self.half_edge(id).ok_or_else(missing)?;
+                Ok(match column {
+                    Column::EndVertex => Some(ElementRef::vertex(row.end_vertex)),
+                    Column::Face => row.face.map(ElementRef::face),
+                    Column::PairEdge => half_edge(row.pair_edge),
+                    Column::SuccessorEdge => half_edge(row.successor_edge),
+                    Column::StartVertex => self.start_vertex(id).map(ElementRef::vertex),
+                    Column::PredecessorEdge => self.predecessor_edge(id).and_then(half_edge),
+                    _ => return Err(LookupError::NotApplicable { element, column }),
+                })
+            }
+            _ => Err(LookupError::NotApplicable { element, column }),
+        }
+    }
+}
+
+/// Either structure, as loaded.
+impl Records for Mesh {
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        Mesh::position(self, vertex)
+    }
+
+    fn structure(&self) -> Structure {
+        Mesh::structure(self)
+    }
+
+    fn count(&self, kind: ElementKind) -> usize {
+        match self {
+            Mesh::Winged(mesh) => mesh.count(kind),
+            Mesh::Half(mesh) => mesh.count(kind),
+        }
+    }
+
+    #[inline]
+    fn reference(
+        &self,
+        element: ElementRef,
+        column: Column,
+    ) -> Result<Option<ElementRef>, LookupError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.reference(element, column),
+            Mesh::Half(mesh) => mesh.reference(element, column),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lookups_resolve_by_structure_and_element() {
+        use ElementKind as K;
+        use Structure::{HalfEdge, WingedEdge};
+        assert_eq!(
+            Column::resolve(HalfEdge, K::Edge, "TWIN"),
+            Ok(Column::PairEdge)
+        );
+        assert_eq!(
+            Column::resolve(WingedEdge, K::Face, "incidentEdge"),
+            Ok(Column::IncidentEdge)
+        );
+        assert_eq!(
+            Column::resolve(HalfEdge, K::Edge, "leftFace"),
+            Err(NameError::OtherStructure(WingedEdge))
+        );
+        assert_eq!(
+            Column::resolve(WingedEdge, K::Vertex, "startVertex"),
+            Err(NameError::WrongElement(K::Edge))
+        );
+        assert_eq!(
+            Column::resolve(WingedEdge, K::Edge, "sideways"),
+            Err(NameError::Unknown)
+        );
+    }
+
+    #[test]
+    fn every_name_of_a_column_comes_from_one_row() {
+        let column = Column::LeftPredecessor;
+        assert_eq!(column.record_name(), "left_predecessor");
+        assert_eq!(column.title(), "Left Predecessor");
+        assert_eq!(column.key(), "left predecessor");
+        assert_eq!(column.setting_key(), "leftPredecessor");
+        assert_eq!(column.language_name(), Some("leftPredecessor"));
+        assert_eq!(Column::Face.language_name(), Some("adjacentFace"));
+        assert_eq!(Column::Position.language_name(), None);
+    }
+
+    #[test]
+    fn file_columns_are_the_stored_record_names() {
+        assert_eq!(
+            Column::file_columns(Structure::HalfEdge, ElementKind::Edge),
+            ["end_vertex", "face", "pair_edge", "successor_edge"]
+        );
+        assert_eq!(
+            Column::file_columns(Structure::WingedEdge, ElementKind::Vertex),
+            ["x", "y", "z", "incident_edge"]
+        );
+        assert_eq!(
+            Column::PredecessorEdge.storage(Structure::HalfEdge),
+            Some(Storage::Derived)
+        );
+        assert_eq!(Column::PairEdge.storage(Structure::WingedEdge), None);
+    }
+
+    #[test]
+    fn every_column_but_the_position_is_in_some_table_and_the_language() {
+        for column in Column::ALL {
+            let in_a_table = Structure::ALL
+                .into_iter()
+                .any(|structure| column.storage(structure).is_some());
+            assert!(in_a_table, "{column:?}");
+            assert_eq!(
+                column.language_name().is_some(),
+                column != Column::Position,
+                "{column:?}"
+            );
+        }
+    }
+}

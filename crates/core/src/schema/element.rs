@@ -1,0 +1,120 @@
+//! Element kinds and references to rows, shared by the language, the app and
+//! the 3D view, so that no layer passes a bare row number.
+
+use std::fmt;
+
+use crate::mesh::{EdgeId, FaceId, HalfEdgeId, VertexId};
+
+/// The three kinds of mesh element, one table each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+pub enum ElementKind {
+    Vertex,
+    Edge,
+    Face,
+}
+
+impl ElementKind {
+    /// The three kinds, in the order the papers list the tables.
+    pub const ALL: [ElementKind; 3] = [ElementKind::Vertex, ElementKind::Edge, ElementKind::Face];
+
+    /// "vertices", "edges", "faces".
+    pub fn plural(self) -> &'static str {
+        match self {
+            ElementKind::Vertex => "vertices",
+            ElementKind::Edge => "edges",
+            ElementKind::Face => "faces",
+        }
+    }
+
+    /// Lower-case, as elements are shown in traces: "vertex 3".
+    pub fn prose(self) -> &'static str {
+        match self {
+            ElementKind::Vertex => "vertex",
+            ElementKind::Edge => "edge",
+            ElementKind::Face => "face",
+        }
+    }
+
+    /// "Vertex", "Edge" or "Face", as in role labels.
+    pub fn title(self) -> &'static str {
+        match self {
+            ElementKind::Vertex => "Vertex",
+            ElementKind::Edge => "Edge",
+            ElementKind::Face => "Face",
+        }
+    }
+
+    /// Parses the JavaScript API's and links' kind names.
+    pub fn parse(name: &str) -> Option<Self> {
+        match name {
+            "vertex" => Some(Self::Vertex),
+            "edge" | "halfedge" | "half-edge" => Some(Self::Edge),
+            "face" => Some(Self::Face),
+            _ => None,
+        }
+    }
+}
+
+/// One row of one table: its kind and its number in that table. In a
+/// half-edge structure an edge row is a half-edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ElementRef {
+    pub kind: ElementKind,
+    pub id: u32,
+}
+
+impl ElementRef {
+    pub const fn new(kind: ElementKind, id: u32) -> Self {
+        Self { kind, id }
+    }
+
+    pub const fn vertex(v: VertexId) -> Self {
+        Self::new(ElementKind::Vertex, v.raw())
+    }
+
+    pub const fn edge(e: EdgeId) -> Self {
+        Self::new(ElementKind::Edge, e.raw())
+    }
+
+    pub const fn half_edge(h: HalfEdgeId) -> Self {
+        Self::new(ElementKind::Edge, h.raw())
+    }
+
+    pub const fn face(f: FaceId) -> Self {
+        Self::new(ElementKind::Face, f.raw())
+    }
+}
+
+impl From<VertexId> for ElementRef {
+    fn from(v: VertexId) -> Self {
+        Self::vertex(v)
+    }
+}
+
+impl From<EdgeId> for ElementRef {
+    fn from(e: EdgeId) -> Self {
+        Self::edge(e)
+    }
+}
+
+impl From<HalfEdgeId> for ElementRef {
+    fn from(h: HalfEdgeId) -> Self {
+        Self::half_edge(h)
+    }
+}
+
+impl From<FaceId> for ElementRef {
+    fn from(f: FaceId) -> Self {
+        Self::face(f)
+    }
+}
+
+/// "vertex 3", "edge 7", "face 0".
+impl fmt::Display for ElementRef {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} {}", self.kind.prose(), self.id)
+    }
+}
