@@ -33,6 +33,7 @@ mod listing;
 mod obj;
 mod ply;
 mod rows;
+mod tables;
 mod wtb;
 
 use std::fmt;
@@ -41,7 +42,7 @@ pub use error::{FormatError, Location, Problem, SaveError};
 pub use listing::listing;
 pub use ply::PlyEncoding;
 
-use crate::mesh::{Mesh, Polygons, Structure};
+use crate::mesh::{HalfEdgeMesh, Mesh, Polygons, Structure, WingedEdgeMesh};
 
 /// The largest file any reader accepts: 256 MiB, about six million
 /// triangles as binary PLY. Larger inputs are refused before parsing, so a
@@ -193,8 +194,12 @@ pub fn load(bytes: &[u8], name: &str, structure: Structure) -> Result<Loaded, Fo
 pub fn load_as(bytes: &[u8], format: Format, structure: Structure) -> Result<Loaded, FormatError> {
     check_size(bytes)?;
     let (polygons, mut warnings) = match format {
-        Format::Wtb => return tables_loaded(wtb::read(bytes)?, format, structure),
-        Format::Htb => return tables_loaded(htb::read(bytes)?, format, structure),
+        Format::Wtb => {
+            return tables_loaded(tables::read::<WingedEdgeMesh>(bytes)?, format, structure);
+        }
+        Format::Htb => {
+            return tables_loaded(tables::read::<HalfEdgeMesh>(bytes)?, format, structure);
+        }
         Format::Ply => ply::read(bytes)?,
         Format::Obj => obj::read(bytes)?,
     };
@@ -268,13 +273,13 @@ pub struct SaveOptions {
 pub fn save(mesh: &Mesh, format: Format, options: &SaveOptions) -> Result<Vec<u8>, SaveError> {
     match format {
         Format::Wtb => match mesh.convert_to(Structure::WingedEdge)? {
-            Mesh::Winged(winged) => Ok(wtb::write(&winged).into_bytes()),
+            Mesh::Winged(winged) => Ok(tables::write(&winged).into_bytes()),
             Mesh::Half(_) => Err(SaveError::Unsupported(
                 "the mesh did not convert to winged-edge".to_owned(),
             )),
         },
         Format::Htb => match mesh.convert_to(Structure::HalfEdge)? {
-            Mesh::Half(half) => Ok(htb::write(&half).into_bytes()),
+            Mesh::Half(half) => Ok(tables::write(&half).into_bytes()),
             Mesh::Winged(_) => Err(SaveError::Unsupported(
                 "the mesh did not convert to half-edge".to_owned(),
             )),

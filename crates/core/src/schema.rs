@@ -15,6 +15,8 @@ mod column;
 mod element;
 mod structure;
 
-pub use column::{Column, LookupError, NameError, Palette, Record, Records, Storage, TableColumn};
+pub use column::{
+    Column, LookupError, NameError, Palette, Record, Records, Rows, Storage, TableColumn,
+};
 pub use element::{ElementKind, ElementRef};
 pub use structure::Structure;

@@ -447,76 +447,90 @@ impl Column {
     }
 }
 
-/// A table row that can be filled column by column, as the file readers do.
+/// A table row whose columns can be read and written by [`Column`]: the file
+/// readers fill rows this way, and [`Records::reference`] reads them.
 pub trait Record: Default {
+    /// The row number `column` holds (`Some(None)` for an empty reference),
+    /// or `None` if this record does not store `column`.
+    fn get(&self, column: Column) -> Option<Option<u32>>;
+
     /// Stores `value` (a row number, or none) in `column`. Columns the
     /// record does not store are ignored.
     fn set(&mut self, column: Column, value: Option<u32>);
 }
 
-impl Record for winged_edge::Vertex {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        if column == Column::IncidentEdge {
-            self.incident_edge = value.map(EdgeId::new);
-        }
-    }
+/// A record field that holds a row number, or an optional one.
+trait Cell {
+    fn read(&self) -> Option<u32>;
+    fn write(value: Option<u32>) -> Self;
 }
 
-impl Record for winged_edge::Face {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        if column == Column::IncidentEdge {
-            self.incident_edge = EdgeId::new(value.unwrap_or_default());
+macro_rules! id_cells {
+    ($($id:ty),*) => {$(
+        impl Cell for $id {
+            fn read(&self) -> Option<u32> {
+                Some(self.raw())
+            }
+            fn write(value: Option<u32>) -> Self {
+                <$id>::new(value.unwrap_or_default())
+            }
         }
-    }
+
+        impl Cell for Option<$id> {
+            fn read(&self) -> Option<u32> {
+                self.map(<$id>::raw)
+            }
+            fn write(value: Option<u32>) -> Self {
+                value.map(<$id>::new)
+            }
+        }
+    )*};
 }
 
-impl Record for WingedEdge {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        let vertex = VertexId::new(value.unwrap_or_default());
-        let edge = EdgeId::new(value.unwrap_or_default());
-        let face = value.map(FaceId::new);
-        match column {
-            Column::StartVertex => self.start_vertex = vertex,
-            Column::EndVertex => self.end_vertex = vertex,
-            Column::LeftFace => self.left_face = face,
-            Column::RightFace => self.right_face = face,
-            Column::LeftPredecessor => self.left_predecessor = edge,
-            Column::LeftSuccessor => self.left_successor = edge,
-            Column::RightPredecessor => self.right_predecessor = edge,
-            Column::RightSuccessor => self.right_successor = edge,
-            _ => {}
+id_cells!(VertexId, EdgeId, FaceId, HalfEdgeId);
+
+/// Implements [`Record`] for a row type from its stored columns and the
+/// fields that hold them.
+macro_rules! record {
+    ($row:ty: $($column:ident => $field:ident),* $(,)?) => {
+        impl Record for $row {
+            fn get(&self, column: Column) -> Option<Option<u32>> {
+                match column {
+                    $(Column::$column => Some(Cell::read(&self.$field)),)*
+                    _ => None,
+                }
+            }
+
+            fn set(&mut self, column: Column, value: Option<u32>) {
+                match column {
+                    $(Column::$column => self.$field = Cell::write(value),)*
+                    _ => {}
+                }
+            }
         }
-    }
+    };
 }
 
-impl Record for half_edge::Vertex {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        if column == Column::IncidentEdge {
-            self.incident_edge = value.map(HalfEdgeId::new);
-        }
-    }
-}
-
-impl Record for half_edge::Face {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        if column == Column::IncidentEdge {
-            self.incident_edge = HalfEdgeId::new(value.unwrap_or_default());
-        }
-    }
-}
-
-impl Record for HalfEdge {
-    fn set(&mut self, column: Column, value: Option<u32>) {
-        let half_edge = HalfEdgeId::new(value.unwrap_or_default());
-        match column {
-            Column::EndVertex => self.end_vertex = VertexId::new(value.unwrap_or_default()),
-            Column::Face => self.face = value.map(FaceId::new),
-            Column::PairEdge => self.pair_edge = half_edge,
-            Column::SuccessorEdge => self.successor_edge = half_edge,
-            _ => {}
-        }
-    }
-}
+record!(winged_edge::Vertex: IncidentEdge => incident_edge);
+record!(winged_edge::Face: IncidentEdge => incident_edge);
+record!(WingedEdge:
+    StartVertex => start_vertex,
+    EndVertex => end_vertex,
+    LeftFace => left_face,
+    RightFace => right_face,
+    LeftPredecessor => left_predecessor,
+    LeftSuccessor => left_successor,
+    RightPredecessor => right_predecessor,
+    RightSuccessor => right_successor,
+);
+record!(half_edge::Vertex: IncidentEdge => incident_edge);
+record!(half_edge::Face: IncidentEdge => incident_edge);
+record!(HalfEdge:
+    EndVertex => end_vertex,
+    Face => face,
+    PairEdge => pair_edge,
+    SuccessorEdge => successor_edge,
+);
 
 /// A reference a mesh could not give: the row does not exist, or its table
 /// has no such column.
@@ -550,6 +564,9 @@ pub trait Records {
     /// edge table).
     fn count(&self, kind: ElementKind) -> usize;
 
+    /// A vertex's position, the one column that is not a reference.
+    fn position(&self, vertex: VertexId) -> Option<Vec3>;
+
     /// The reference `column` of `element`'s row holds (or derives).
     /// `Ok(None)` is a legitimately missing reference: the face beyond a
     /// boundary edge, or the incident edge of an isolated vertex.
@@ -559,127 +576,139 @@ pub trait Records {
         column: Column,
     ) -> Result<Option<ElementRef>, LookupError>;
 
-    /// A vertex's position, the one column that is not a reference.
-    fn position(&self, vertex: VertexId) -> Option<Vec3>;
-
     /// Whether the row exists.
     fn contains(&self, element: ElementRef) -> bool {
         (element.id as usize) < self.count(element.kind)
     }
 }
 
-impl Records for WingedEdgeMesh {
-    fn position(&self, vertex: VertexId) -> Option<Vec3> {
-        WingedEdgeMesh::position(self, vertex)
+/// The three tables of one structure, as slices of [`Record`]s; every such
+/// mesh is [`Records`].
+pub trait Rows {
+    type Vertex: Record;
+    type Face: Record;
+    type Edge: Record;
+
+    fn structure(&self) -> Structure;
+    fn vertex_rows(&self) -> &[Self::Vertex];
+    fn face_rows(&self) -> &[Self::Face];
+    /// Edges, or half-edges.
+    fn edge_rows(&self) -> &[Self::Edge];
+    fn position(&self, vertex: VertexId) -> Option<Vec3>;
+
+    /// A column the structure computes instead of storing (a half-edge's
+    /// start vertex and predecessor), or `None` if it has no such column.
+    fn derived(&self, _edge: u32, _column: Column) -> Option<Option<ElementRef>> {
+        None
     }
+}
+
+impl<T: Rows> Records for T {
+    fn structure(&self) -> Structure {
+        Rows::structure(self)
+    }
+
+    fn count(&self, kind: ElementKind) -> usize {
+        match kind {
+            ElementKind::Vertex => self.vertex_rows().len(),
+            ElementKind::Edge => self.edge_rows().len(),
+            ElementKind::Face => self.face_rows().len(),
+        }
+    }
+
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        Rows::position(self, vertex)
+    }
+
+    #[inline]
+    fn reference(
+        &self,
+        element: ElementRef,
+        column: Column,
+    ) -> Result<Option<ElementRef>, LookupError> {
+        let index = element.id as usize;
+        let stored = match element.kind {
+            ElementKind::Vertex => self.vertex_rows().get(index).map(|row| row.get(column)),
+            ElementKind::Face => self.face_rows().get(index).map(|row| row.get(column)),
+            ElementKind::Edge => self.edge_rows().get(index).map(|row| row.get(column)),
+        };
+        let not_applicable = LookupError::NotApplicable { element, column };
+        match stored.ok_or(LookupError::NoSuchElement(element))? {
+            Some(value) => {
+                let target = column.target().ok_or(not_applicable)?;
+                Ok(value.map(|id| ElementRef::new(target, id)))
+            }
+            None if element.kind == ElementKind::Edge => {
+                self.derived(element.id, column).ok_or(not_applicable)
+            }
+            None => Err(not_applicable),
+        }
+    }
+}
+
+impl Rows for WingedEdgeMesh {
+    type Vertex = winged_edge::Vertex;
+    type Face = winged_edge::Face;
+    type Edge = WingedEdge;
 
     fn structure(&self) -> Structure {
         Structure::WingedEdge
     }
 
-    fn count(&self, kind: ElementKind) -> usize {
-        match kind {
-            ElementKind::Vertex => self.vertex_count(),
-            ElementKind::Edge => self.edge_count(),
-            ElementKind::Face => self.face_count(),
-        }
+    fn vertex_rows(&self) -> &[Self::Vertex] {
+        self.vertices()
     }
 
-    #[inline]
-    fn reference(
-        &self,
-        element: ElementRef,
-        column: Column,
-    ) -> Result<Option<ElementRef>, LookupError> {
-        let missing = || LookupError::NoSuchElement(element);
-        let edge = |e: EdgeId| Some(ElementRef::edge(e));
-        let vertex = |v: VertexId| Some(ElementRef::vertex(v));
-        match (element.kind, column) {
-            (ElementKind::Vertex, Column::IncidentEdge) => {
-                let row = self.vertex(VertexId::new(element.id)).ok_or_else(missing)?;
-                Ok(row.incident_edge.map(ElementRef::edge))
-            }
-            (ElementKind::Face, Column::IncidentEdge) => {
-                let row = self.face(FaceId::new(element.id)).ok_or_else(missing)?;
-                Ok(edge(row.incident_edge))
-            }
-            (ElementKind::Edge, _) => {
-                let row = self.edge(EdgeId::new(element.id)).ok_or_else(missing)?;
-                Ok(match column {
-                    Column::StartVertex => vertex(row.start_vertex),
-                    Column::EndVertex => vertex(row.end_vertex),
-                    Column::LeftFace => row.left_face.map(ElementRef::face),
-                    Column::RightFace => row.right_face.map(ElementRef::face),
-                    Column::LeftPredecessor => edge(row.left_predecessor),
-                    Column::LeftSuccessor => edge(row.left_successor),
-                    Column::RightPredecessor => edge(row.right_predecessor),
-                    Column::RightSuccessor => edge(row.right_successor),
-                    _ => return Err(LookupError::NotApplicable { element, column }),
-                })
-            }
-            _ => Err(LookupError::NotApplicable { element, column }),
-        }
+    fn face_rows(&self) -> &[Self::Face] {
+        self.faces()
+    }
+
+    fn edge_rows(&self) -> &[Self::Edge] {
+        self.edges()
+    }
+
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        WingedEdgeMesh::position(self, vertex)
     }
 }
 
-impl Records for HalfEdgeMesh {
-    fn position(&self, vertex: VertexId) -> Option<Vec3> {
-        HalfEdgeMesh::position(self, vertex)
-    }
+impl Rows for HalfEdgeMesh {
+    type Vertex = half_edge::Vertex;
+    type Face = half_edge::Face;
+    type Edge = HalfEdge;
 
     fn structure(&self) -> Structure {
         Structure::HalfEdge
     }
 
-    fn count(&self, kind: ElementKind) -> usize {
-        match kind {
-            ElementKind::Vertex => self.vertex_count(),
-            ElementKind::Edge => self.half_edge_count(),
-            ElementKind::Face => self.face_count(),
-        }
+    fn vertex_rows(&self) -> &[Self::Vertex] {
+        self.vertices()
     }
 
-    #[inline]
-    fn reference(
-        &self,
-        element: ElementRef,
-        column: Column,
-    ) -> Result<Option<ElementRef>, LookupError> {
-        let missing = || LookupError::NoSuchElement(element);
-        let half_edge = |h: HalfEdgeId| Some(ElementRef::half_edge(h));
-        match (element.kind, column) {
-            (ElementKind::Vertex, Column::IncidentEdge) => {
-                let row = self.vertex(VertexId::new(element.id)).ok_or_else(missing)?;
-                Ok(row.incident_edge.map(ElementRef::half_edge))
-            }
-            (ElementKind::Face, Column::IncidentEdge) => {
-                let row = self.face(FaceId::new(element.id)).ok_or_else(missing)?;
-                Ok(half_edge(row.incident_edge))
-            }
-            (ElementKind::Edge, _) => {
-                let id = HalfEdgeId::new(element.id);
-                let row = self.half_edge(id).ok_or_else(missing)?;
-                Ok(match column {
-                    Column::EndVertex => Some(ElementRef::vertex(row.end_vertex)),
-                    Column::Face => row.face.map(ElementRef::face),
-                    Column::PairEdge => half_edge(row.pair_edge),
-                    Column::SuccessorEdge => half_edge(row.successor_edge),
-                    Column::StartVertex => self.start_vertex(id).map(ElementRef::vertex),
-                    Column::PredecessorEdge => self.predecessor_edge(id).and_then(half_edge),
-                    _ => return Err(LookupError::NotApplicable { element, column }),
-                })
-            }
-            _ => Err(LookupError::NotApplicable { element, column }),
+    fn face_rows(&self) -> &[Self::Face] {
+        self.faces()
+    }
+
+    fn edge_rows(&self) -> &[Self::Edge] {
+        self.half_edges()
+    }
+
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        HalfEdgeMesh::position(self, vertex)
+    }
+
+    fn derived(&self, edge: u32, column: Column) -> Option<Option<ElementRef>> {
+        let id = HalfEdgeId::new(edge);
+        match column {
+            Column::StartVertex => Some(self.start_vertex(id).map(ElementRef::vertex)),
+            Column::PredecessorEdge => Some(self.predecessor_edge(id).map(ElementRef::half_edge)),
+            _ => None,
         }
     }
 }
 
 /// Either structure, as loaded.
 impl Records for Mesh {
-    fn position(&self, vertex: VertexId) -> Option<Vec3> {
-        Mesh::position(self, vertex)
-    }
-
     fn structure(&self) -> Structure {
         Mesh::structure(self)
     }
@@ -689,6 +718,10 @@ impl Records for Mesh {
             Mesh::Winged(mesh) => mesh.count(kind),
             Mesh::Half(mesh) => mesh.count(kind),
         }
+    }
+
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        Mesh::position(self, vertex)
     }
 
     #[inline]

@@ -1,0 +1,133 @@
+//! The reading and writing the two table formats share: `.wtb` and `.htb`
+//! hold a vertex, a face and an edge (or half-edge) section whose columns are
+//! the structure's stored columns ([`Column::file_columns`]), so one reader
+//! and one writer serve both, and each format only says what differs.
+
+use glam::Vec3;
+
+use super::error::FormatError;
+use super::rows::{self, Problems, RowPlaces, Rows as Lines, Section};
+use crate::mesh::{Element, Mesh};
+use crate::schema::{Column, ElementKind, Record, Rows, Structure};
+
+/// A structure a table file holds.
+pub(super) trait TableFile: Rows + Sized {
+    /// The header word (`wtb`), and the other format's.
+    const MAGIC: &'static str;
+    const OTHER: &'static str;
+    /// The comment lines written before the header.
+    const PREAMBLE: &'static str;
+    /// The edge section.
+    const EDGES: Section;
+
+    /// The tables as written, unchecked.
+    fn from_tables(
+        vertices: Vec<(Vec3, Self::Vertex)>,
+        faces: Vec<Self::Face>,
+        edges: Vec<Self::Edge>,
+    ) -> Self;
+
+    /// Whether `element` is a row of this structure's edge table (an edge,
+    /// or a half-edge), to place validation issues.
+    fn is_edge_row(element: Element) -> bool;
+
+    fn into_mesh(self) -> Mesh;
+
+    fn validate(&self) -> Vec<crate::mesh::Issue>;
+}
+
+/// The vertex section of `structure`'s file.
+fn vertex_section(structure: Structure) -> Section {
+    Section {
+        name: "vertices",
+        element: "vertex",
+        table: (structure, ElementKind::Vertex),
+    }
+}
+
+/// The face section of `structure`'s file.
+fn face_section(structure: Structure) -> Section {
+    Section {
+        name: "faces",
+        element: "face",
+        table: (structure, ElementKind::Face),
+    }
+}
+
+/// Reads one section into records, `prefix` reading what comes before the
+/// references (a vertex's coordinates).
+fn read_section<R: Record, T>(
+    lines: &mut Lines<'_>,
+    problems: &mut Problems,
+    section: &Section,
+    mut prefix: impl FnMut(&[rows::Token<'_>], usize, &mut Problems) -> T,
+) -> Result<(Vec<(T, R)>, RowPlaces), FormatError> {
+    let mut records = Vec::new();
+    let places = rows::section(lines, section, problems, |fields, line, problems| {
+        let before = prefix(fields, line, problems);
+        let mut record = R::default();
+        rows::fill(&mut record, fields, section, line, problems);
+        records.push((before, record));
+    })?;
+    Ok((records, places))
+}
+
+/// Reads a table file of structure `M`, placing every problem at its line
+/// and column.
+pub(super) fn read<M: TableFile>(bytes: &[u8]) -> Result<Mesh, FormatError> {
+    let text = super::text(bytes)?;
+    let mut lines = Lines::new(text);
+    rows::header(&mut lines, M::MAGIC, M::OTHER)?;
+    let structure = M::EDGES.table.0;
+    let mut problems = Problems::new();
+    let coordinates = |fields: &[rows::Token<'_>], line, problems: &mut Problems| {
+        let [x, y, z] = Column::COORDINATES;
+        let mut axis = |index: usize, name| {
+            fields
+                .get(index)
+                .map_or(0.0, |token| rows::coordinate(token, name, line, problems))
+        };
+        Vec3::new(axis(0, x), axis(1, y), axis(2, z))
+    };
+    let (vertices, vertex_places) = read_section(
+        &mut lines,
+        &mut problems,
+        &vertex_section(structure),
+        coordinates,
+    )?;
+    let (faces, face_places) = read_section(
+        &mut lines,
+        &mut problems,
+        &face_section(structure),
+        |_, _, _| (),
+    )?;
+    let (edges, edge_places) = read_section(&mut lines, &mut problems, &M::EDGES, |_, _, _| ())?;
+    rows::end(&mut lines, &M::EDGES, edges.len())?;
+    problems.finish()?;
+
+    let mesh = M::from_tables(
+        vertices,
+        faces.into_iter().map(|((), face)| face).collect(),
+        edges.into_iter().map(|((), edge)| edge).collect(),
+    );
+    let issues = mesh.validate();
+    if issues.is_empty() {
+        return Ok(mesh.into_mesh());
+    }
+    Err(rows::place_issues(issues, text, |element| match element {
+        Element::Vertex(_) => Some(&vertex_places),
+        Element::Face(_) => Some(&face_places),
+        edge if M::is_edge_row(edge) => Some(&edge_places),
+        _ => None,
+    }))
+}
+
+/// Writes `mesh`'s tables as its structure's table file.
+pub(super) fn write<M: TableFile>(mesh: &M) -> String {
+    let structure = M::EDGES.table.0;
+    let mut out = format!("{}{} 1\n", M::PREAMBLE, M::MAGIC);
+    rows::write_section(&mut out, mesh, &vertex_section(structure));
+    rows::write_section(&mut out, mesh, &face_section(structure));
+    rows::write_section(&mut out, mesh, &M::EDGES);
+    out
+}
