@@ -10,14 +10,11 @@
 
 use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
 
-use crate::{EdgewiseApp, open_dialog::StructureDialog};
-
-/// A file read from disk, waiting to be opened.
-pub struct PendingFile {
-    /// The file name (no directories), which gives the format.
-    pub name: String,
-    pub bytes: Vec<u8>,
-}
+use crate::{
+    EdgewiseApp,
+    open_dialog::StructureDialog,
+    platform::{FileIo, PendingFile},
+};
 
 /// The extensions Edgewise opens, for messages and the file picker.
 pub const OPEN_EXTENSIONS: &str = ".wtb, .htb, .ply or .obj";
@@ -27,16 +24,8 @@ pub const OPEN_EXTENSIONS: &str = ".wtb, .htb, .ply or .obj";
 pub struct FileState {
     /// The structure question for a PLY or OBJ file, while it is asked.
     pub(crate) dialog: Option<StructureDialog>,
-    /// Files read by the browser (picker or drop), opened on the next frame:
-    /// the browser reads them asynchronously.
-    #[cfg(target_arch = "wasm32")]
-    pub(crate) inbox: crate::web_files::Inbox,
-    /// The path typed into the native Open box.
-    #[cfg(not(target_arch = "wasm32"))]
-    path: String,
-    /// Where the last native save went, shown in the Save as… menu.
-    #[cfg(not(target_arch = "wasm32"))]
-    saved: Option<String>,
+    /// Reading and writing files where the app runs.
+    pub(crate) io: FileIo,
     /// A large file, opened once a frame has shown that it is being opened:
     /// reading it blocks the page, so "Opening…" paints first.
     pub(crate) opening: Option<Opening>,
@@ -67,23 +56,6 @@ pub fn is_algorithm_file(name: &str) -> bool {
     std::path::Path::new(name)
         .extension()
         .is_some_and(|ext| ext.eq_ignore_ascii_case("alg"))
-}
-
-/// Writes a file: a download in the browser, a file in the current directory
-/// natively. Returns what to tell the user.
-pub fn write_file(name: &str, bytes: &[u8]) -> Result<String, String> {
-    #[cfg(target_arch = "wasm32")]
-    {
-        crate::web_files::download(name, bytes).map(|()| format!("Downloaded {name}"))
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        std::env::current_dir()
-            .map(|dir| dir.join(name))
-            .and_then(|path| std::fs::write(&path, bytes).map(|()| path))
-            .map(|path| format!("Saved {}", path.display()))
-            .map_err(|err| format!("cannot write {name}: {err}"))
-    }
 }
 
 /// A format the Save as… menu and `exportMesh` offer.
@@ -215,13 +187,7 @@ impl EdgewiseApp {
     /// directory natively.
     fn save_as(&mut self, format: SaveFormat) -> Result<(), String> {
         let saved = self.export(format).map_err(|err| self.fail(err))?;
-        match write_file(&saved.name, &saved.bytes) {
-            #[cfg(not(target_arch = "wasm32"))]
-            Ok(said) => {
-                self.files.saved = Some(said);
-                Ok(())
-            }
-            #[cfg(target_arch = "wasm32")]
+        match self.files.io.write(&saved.name, &saved.bytes) {
             Ok(_) => Ok(()),
             Err(err) => Err(self.fail(err)),
         }
@@ -240,27 +206,13 @@ impl EdgewiseApp {
             // open_file reports its own failures.
             self.open_file(&file.name, file.bytes).ok();
         }
-        let dropped = ctx.input(|i| i.raw.dropped_files.first().cloned());
-        #[cfg(target_arch = "wasm32")]
-        {
-            if let Some(file) = dropped {
-                crate::web_files::read_dropped(&self.files.inbox, ctx, file);
-            }
-            let arrived: Vec<_> = self.files.inbox.borrow_mut().drain(..).collect();
-            for file in arrived {
-                if let Ok(file) = file.map_err(|message| self.fail(message)) {
-                    self.open_or_announce(ctx, file);
+        for file in self.files.io.receive(ctx) {
+            match file {
+                Ok(file) => self.open_or_announce(ctx, file),
+                Err(message) => {
+                    self.fail(message);
                 }
             }
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Some(file) = dropped {
-            let path = file.path();
-            let name = path.file_name().map_or_else(
-                || path.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            );
-            self.open_read_file(ctx, &name, file.bytes());
         }
     }
 
@@ -275,14 +227,7 @@ impl EdgewiseApp {
                         chosen = Some(format);
                     }
                 }
-                #[cfg(not(target_arch = "wasm32"))]
-                {
-                    ui.separator();
-                    match &self.files.saved {
-                        Some(saved) => ui.weak(saved.as_str()),
-                        None => ui.weak("Files go to the current directory."),
-                    };
-                }
+                self.files.io.save_note_ui(ui);
             })
             .response
             .on_disabled_hover_text("Open a mesh first");
@@ -292,74 +237,15 @@ impl EdgewiseApp {
         }
     }
 
-    #[cfg(target_arch = "wasm32")]
+    /// Open mesh…: the browser's picker, or natively a path box.
     fn open_button_ui(&mut self, ui: &mut egui::Ui) {
-        if ui
-            .button("Open mesh…")
-            .on_hover_text(format!(
-                "Open a {OPEN_EXTENSIONS} file, or drop one on the page"
-            ))
-            .clicked()
-            && let Err(message) =
-                crate::web_files::pick_file(&self.files.inbox, ui.ctx(), crate::web_files::MESHES)
-        {
-            self.fail(message);
-        }
-    }
-
-    /// Natively: a path box (there is no native file dialog) and the hint
-    /// that files can be dropped on the window.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn open_button_ui(&mut self, ui: &mut egui::Ui) {
-        let mut open = false;
-        ui.menu_button("Open mesh…", |ui| {
-            ui.label(format!("Path of a {OPEN_EXTENSIONS} file:"));
-            let response = ui.add(
-                egui::TextEdit::singleline(&mut self.files.path)
-                    .desired_width(320.0)
-                    .hint_text("meshes/cube.htb"),
-            );
-            open = ui.button("Open").clicked()
-                || (response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
-            ui.weak("Or drop a file on the window.");
-            if open {
-                ui.close();
+        match self.files.io.open_ui(ui, OPEN_EXTENSIONS) {
+            Some(Ok(file)) => self.open_or_announce(ui.ctx(), file),
+            Some(Err(message)) => {
+                self.fail(message);
             }
-        });
-        if open {
-            let path = std::path::PathBuf::from(self.files.path.trim());
-            let name = path.file_name().map_or_else(
-                || path.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            );
-            let bytes = std::fs::read(&path).map_err(|err| err.to_string());
-            self.open_read_file(ui.ctx(), &name, bytes);
+            None => {}
         }
-    }
-
-    /// Opens a file that was read natively, or reports why it could not be.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn open_read_file(&mut self, ctx: &egui::Context, name: &str, bytes: Result<Vec<u8>, String>) {
-        match bytes {
-            Ok(bytes) => self.open_or_announce(
-                ctx,
-                PendingFile {
-                    name: name.to_owned(),
-                    bytes,
-                },
-            ),
-            Err(err) => {
-                self.fail(format!("{name}: cannot read the file: {err}"));
-            }
-        }
-    }
-
-    /// Shows (or, with `None`, hides) what is being opened outside the
-    /// file inbox: a large text given to `loadMesh`, a large linked file.
-    #[cfg(target_arch = "wasm32")]
-    pub(crate) fn set_busy(&mut self, label: Option<String>) {
-        self.files.busy = label;
-        self.request_repaint();
     }
 
     /// Opens a small file now; a large one on the next frame, after this

@@ -15,6 +15,7 @@ pub mod fuzzing;
 pub mod obj_editor;
 mod open_dialog;
 pub mod paint;
+mod platform;
 pub mod samples;
 pub mod selection;
 pub mod settings;
@@ -26,8 +27,6 @@ pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
-#[cfg(target_arch = "wasm32")]
-mod web_files;
 
 pub use app::{
     EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed,

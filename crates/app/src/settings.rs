@@ -150,41 +150,19 @@ pub fn to_hex(colour: Color32) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
-/// Loads the settings saved in this browser, if any.
-#[cfg(target_arch = "wasm32")]
+/// Loads the settings saved in this browser, if any (natively, settings
+/// last the session).
 pub fn load_stored() -> (Settings, Option<String>) {
-    let stored = web_sys::window()
-        .and_then(|w| w.local_storage().ok().flatten())
-        .and_then(|storage| storage.get_item(STORAGE_KEY).ok().flatten());
-    match stored {
+    match crate::platform::load_settings(STORAGE_KEY) {
         Some(json) => Settings::from_json(&json),
         None => (Settings::default(), None),
     }
 }
 
-/// Saves the settings in this browser; a full or disabled storage is
-/// logged, not fatal.
-#[cfg(target_arch = "wasm32")]
+/// Saves the settings where the platform keeps them.
 pub fn store(settings: &Settings) {
-    let storage = web_sys::window().and_then(|w| w.local_storage().ok().flatten());
-    match storage {
-        Some(storage) => {
-            if storage.set_item(STORAGE_KEY, &settings.to_json()).is_err() {
-                log::warn!("the settings could not be saved in local storage");
-            }
-        }
-        None => log::warn!("this browser offers no local storage; settings last this visit"),
-    }
+    crate::platform::store_settings(STORAGE_KEY, &settings.to_json());
 }
-
-/// Native runs (development, UI tests) keep settings for the session only.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn load_stored() -> (Settings, Option<String>) {
-    (Settings::default(), None)
-}
-
-#[cfg(not(target_arch = "wasm32"))]
-pub fn store(_settings: &Settings) {}
 
 #[cfg(test)]
 mod tests {

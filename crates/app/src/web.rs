@@ -17,6 +17,7 @@ use crate::{
     Argument, EdgewiseApp, FetchedMesh,
     course_link::{CourseLink, MeshSource},
     files::{ANNOUNCE_BYTES, SaveFormat, SavedFile, opening_label},
+    platform::js_error_text,
 };
 
 /// The id of the canvas in index.html.
@@ -461,7 +462,7 @@ fn install_view_api(runner: &eframe::WebRunner, api: &js_sys::Object) -> Result<
 
     let r = runner.clone();
     let share_url = Closure::<dyn Fn() -> Result<JsValue, JsValue>>::new(move || {
-        let base = crate::app::course::page_base();
+        let base = crate::platform::page_base();
         with_app(&r, |app| app.share_url(&base))?
             .map(|url| JsValue::from_str(&url))
             .map_err(|message| JsValue::from(js_sys::Error::new(&message)))
@@ -711,6 +712,15 @@ fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, 
         .transpose()
 }
 
+impl EdgewiseApp {
+    /// Shows (or, with `None`, hides) what is being opened outside the
+    /// file inbox: a large text given to `loadMesh`, a large linked file.
+    fn set_busy(&mut self, label: Option<String>) {
+        self.files.busy = label;
+        self.request_repaint();
+    }
+}
+
 /// Runs `f` on the app, or fails if the app has panicked or is busy drawing.
 fn with_app<R>(
     runner: &eframe::WebRunner,
@@ -746,15 +756,4 @@ fn show_error(message: &str) {
         error.set_text_content(Some(message));
         error.set_attribute("data-visible", "true").ok();
     }
-}
-
-pub(crate) fn js_error_text(value: &JsValue) -> String {
-    value
-        .as_string()
-        .or_else(|| {
-            value
-                .dyn_ref::<js_sys::Error>()
-                .map(|err| String::from(err.message()))
-        })
-        .unwrap_or_else(|| format!("{value:?}"))
 }

@@ -1,6 +1,7 @@
 //! The app's algorithm commands (shared by the UI and the JavaScript API),
 //! the Algorithm menu, the algorithm panel and the stepping keys.
 
+use crate::platform::ALGORITHM_FILES;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::sync::Arc;
 
@@ -9,7 +10,6 @@ use edgewise_core::schema::Structure;
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
     algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
-    files,
     state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
 };
@@ -310,7 +310,11 @@ impl EdgewiseApp {
                     Some(EditorCommand::Open) => self.pick_algorithm_file(ui.ctx()),
                     Some(EditorCommand::Save) => {
                         let editor = &mut self.algorithms.editor;
-                        match files::write_file(&editor.file_name, editor.text.as_bytes()) {
+                        match self
+                            .files
+                            .io
+                            .write(&editor.file_name, editor.text.as_bytes())
+                        {
                             Ok(said) => editor.status = Some(said),
                             Err(message) => {
                                 self.fail(message);
@@ -343,17 +347,12 @@ impl EdgewiseApp {
     /// The browser's file picker for algorithm files; natively, files are
     /// dropped on the window (or opened by path through Open mesh…).
     fn pick_algorithm_file(&mut self, ctx: &egui::Context) {
-        #[cfg(target_arch = "wasm32")]
-        if let Err(message) =
-            crate::web_files::pick_file(&self.files.inbox, ctx, crate::web_files::ALGORITHMS)
-        {
-            self.fail(message);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            let _ = ctx;
-            self.algorithms.editor.status =
-                Some("Drop an .alg file on the window, or type its path in Open mesh….".to_owned());
+        match self.files.io.pick(ctx, ALGORITHM_FILES) {
+            Ok(None) => {}
+            Ok(Some(hint)) => self.algorithms.editor.status = Some(hint.to_owned()),
+            Err(message) => {
+                self.fail(message);
+            }
         }
     }
 }

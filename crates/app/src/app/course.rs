@@ -248,7 +248,7 @@ impl EdgewiseApp {
         if !self.show_share {
             return;
         }
-        let base = page_base();
+        let base = crate::platform::page_base();
         let url = self.share_url(&base);
         let mut open = true;
         egui::Window::new("Share this view")
@@ -316,26 +316,4 @@ fn argument_of(value: Value) -> Option<Argument> {
         Value::Boolean(b) => Some(Argument::Boolean(b)),
         Value::Null => None,
     }
-}
-
-/// The page's address without query or fragment.
-#[cfg(target_arch = "wasm32")]
-pub fn page_base() -> String {
-    web_sys::window()
-        .and_then(|w| {
-            let location = w.location();
-            Some(format!(
-                "{}{}",
-                location.origin().ok()?,
-                location.pathname().ok()?
-            ))
-        })
-        .unwrap_or_default()
-}
-
-/// Natively there is no page; links name the local server `cargo xtask
-/// serve` runs.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn page_base() -> String {
-    "http://127.0.0.1:8080/".to_owned()
 }

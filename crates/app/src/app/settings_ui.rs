@@ -2,6 +2,7 @@
 //! mode (fullscreen, chosen panels, larger type, Escape leaves).
 
 use super::EdgewiseApp;
+use crate::platform;
 use crate::{
     settings::{self, CODE_SIZES, Settings},
     trace_role::TraceRole,
@@ -149,14 +150,14 @@ impl EdgewiseApp {
             ctx.set_zoom_factor(self.zoom_before_presenting * PRESENTATION_ZOOM);
         }
         self.presentation = Some(presentation);
-        set_fullscreen(ctx, true);
+        platform::set_fullscreen(ctx, true);
     }
 
     /// Leaves presentation mode and fullscreen.
     pub fn leave_presentation(&mut self, ctx: &egui::Context) {
         if self.presentation.take().is_some() {
             ctx.set_zoom_factor(self.zoom_before_presenting);
-            set_fullscreen(ctx, false);
+            platform::set_fullscreen(ctx, false);
         }
     }
 
@@ -170,7 +171,7 @@ impl EdgewiseApp {
             return;
         }
         let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape));
-        if escape || left_fullscreen() {
+        if escape || platform::left_fullscreen() {
             self.leave_presentation(ctx);
         }
     }
@@ -206,43 +207,4 @@ impl EdgewiseApp {
                 });
         }
     }
-}
-
-#[cfg(target_arch = "wasm32")]
-fn set_fullscreen(_ctx: &egui::Context, on: bool) {
-    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
-        return;
-    };
-    if on {
-        if let Some(element) = document.document_element()
-            && element.request_fullscreen().is_err()
-        {
-            log::warn!("the browser refused fullscreen; presenting in the window");
-        }
-    } else if document.fullscreen_element().is_some() {
-        document.exit_fullscreen();
-    }
-}
-
-#[cfg(not(target_arch = "wasm32"))]
-fn set_fullscreen(ctx: &egui::Context, on: bool) {
-    ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(on));
-}
-
-/// Whether the page was fullscreen for a presentation and no longer is (the
-/// browser handles Escape itself in fullscreen).
-#[cfg(target_arch = "wasm32")]
-fn left_fullscreen() -> bool {
-    use std::sync::atomic::{AtomicBool, Ordering};
-    static WAS_FULLSCREEN: AtomicBool = AtomicBool::new(false);
-    let now = web_sys::window()
-        .and_then(|w| w.document())
-        .is_some_and(|d| d.fullscreen_element().is_some());
-    let was = WAS_FULLSCREEN.swap(now, Ordering::Relaxed);
-    was && !now
-}
-
-#[cfg(not(target_arch = "wasm32"))]
-fn left_fullscreen() -> bool {
-    false
 }

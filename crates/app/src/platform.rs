@@ -1,0 +1,36 @@
+//! What differs between the browser and the desktop, behind one interface:
+//! reading and writing files, keeping settings, fullscreen, and the page's
+//! address. The rest of the app is the same on both; `cfg(target_arch)`
+//! chooses the implementation here and nowhere else in the UI code.
+//!
+//! - `browser.rs`: a file picker and dropped files read asynchronously into
+//!   an inbox the app empties each frame, downloads through a Blob URL, local
+//!   storage, the Fullscreen API.
+//! - `desktop.rs`: a typed path (there is no native file dialog, which keeps
+//!   the desktop build free of GTK and D-Bus), files written to the current
+//!   directory, settings kept for the session only.
+
+#[cfg(target_arch = "wasm32")]
+mod browser;
+#[cfg(not(target_arch = "wasm32"))]
+mod desktop;
+
+#[cfg(target_arch = "wasm32")]
+pub use browser::{
+    FileIo, js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen,
+    store_settings,
+};
+#[cfg(not(target_arch = "wasm32"))]
+pub use desktop::{
+    FileIo, left_fullscreen, load_settings, page_base, set_fullscreen, store_settings,
+};
+
+/// A file read from disk, waiting to be opened.
+pub struct PendingFile {
+    /// The file name (no directories), which gives the format.
+    pub name: String,
+    pub bytes: Vec<u8>,
+}
+
+/// The files a picker offers for algorithms, as a file input's `accept`.
+pub const ALGORITHM_FILES: &str = ".alg,.txt";

@@ -1,0 +1,255 @@
+//! The browser: files through a picker, drops and downloads, settings in
+//! local storage, the Fullscreen API.
+//!
+//! Browsers read files asynchronously, so what is read goes into an inbox
+//! that [`FileIo::receive`] empties on the app's next frame.
+
+use std::{cell::RefCell, rc::Rc};
+
+use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
+use wasm_bindgen_futures::JsFuture;
+
+use edgewise_core::formats::MAX_FILE_BYTES;
+
+use super::PendingFile;
+
+/// The files the picker offers for meshes.
+const MESH_FILES: &str = ".wtb,.htb,.ply,.obj";
+
+/// Files read (or failed reads, as messages) waiting for the next frame.
+type Inbox = Rc<RefCell<Vec<Result<PendingFile, String>>>>;
+
+/// Opening and saving files in the browser.
+#[derive(Default)]
+pub struct FileIo {
+    inbox: Inbox,
+}
+
+impl FileIo {
+    /// Offers `bytes` as a download called `name`; returns what to tell the
+    /// user.
+    pub fn write(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
+        download(name, bytes).map(|()| format!("Downloaded {name}"))
+    }
+
+    /// Starts reading the file dropped this frame, if any, and returns the
+    /// files that finished reading since the last frame.
+    pub fn receive(&mut self, ctx: &egui::Context) -> Vec<Result<PendingFile, String>> {
+        if let Some(file) = ctx.input(|i| i.raw.dropped_files.first().cloned()) {
+            read_dropped(&self.inbox, ctx, file);
+        }
+        self.inbox.borrow_mut().drain(..).collect()
+    }
+
+    /// The Open mesh… button: the browser's file picker.
+    pub fn open_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        extensions: &str,
+    ) -> Option<Result<PendingFile, String>> {
+        let clicked = ui
+            .button("Open mesh…")
+            .on_hover_text(format!("Open a {extensions} file, or drop one on the page"))
+            .clicked();
+        match clicked.then(|| self.pick(ui.ctx(), MESH_FILES)) {
+            Some(Err(message)) => Some(Err(message)),
+            _ => None,
+        }
+    }
+
+    /// Nothing to add under Save as…: downloads go where the browser puts them.
+    pub fn save_note_ui(&self, _ui: &mut egui::Ui) {}
+
+    /// Opens the browser's file picker offering `accept`; the chosen file
+    /// arrives through [`Self::receive`], so there is nothing to tell the
+    /// user (`Ok(None)`). Must run soon after a click: browsers only open
+    /// pickers for a user's action.
+    pub fn pick(&self, ctx: &egui::Context, accept: &str) -> Result<Option<&'static str>, String> {
+        let document = web_sys::window()
+            .and_then(|w| w.document())
+            .ok_or("no document to open a file picker in")?;
+        let input = document
+            .create_element("input")
+            .map_err(|err| js_error_text(&err))?
+            .dyn_into::<web_sys::HtmlInputElement>()
+            .map_err(|_| "the browser did not create a file input")?;
+        input.set_type("file");
+        input.set_accept(accept);
+        let (inbox, ctx, target) = (self.inbox.clone(), ctx.clone(), input.clone());
+        // Called once when a file is chosen; a cancelled picker leaves it unused.
+        let on_change = Closure::once_into_js(move || {
+            if let Some(file) = target.files().and_then(|files| files.get(0)) {
+                read_file(inbox, ctx, file);
+            }
+        });
+        input
+            .add_event_listener_with_callback("change", on_change.unchecked_ref())
+            .map_err(|err| js_error_text(&err))?;
+        input.click();
+        Ok(None)
+    }
+}
+
+/// Reads a file from the picker into `inbox`, refusing huge files before
+/// reading them into memory.
+fn read_file(inbox: Inbox, ctx: egui::Context, file: web_sys::File) {
+    wasm_bindgen_futures::spawn_local(async move {
+        let name = file.name();
+        let result = if file.size() > MAX_FILE_BYTES as f64 {
+            Err(too_large(&name, file.size()))
+        } else {
+            JsFuture::from(file.array_buffer())
+                .await
+                .map(|buffer| PendingFile {
+                    name: name.clone(),
+                    bytes: js_sys::Uint8Array::new(&buffer).to_vec(),
+                })
+                .map_err(|err| format!("{name}: cannot read the file: {}", js_error_text(&err)))
+        };
+        inbox.borrow_mut().push(result);
+        ctx.request_repaint();
+    });
+}
+
+/// The message for a file refused by its size, before any of it is read.
+fn too_large(name: &str, size: f64) -> String {
+    format!(
+        "{name}: the file is {size} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes"
+    )
+}
+
+/// Reads a file dropped on the page (eframe hands it over unread) into
+/// `inbox`, refusing huge files by their size before reading them.
+fn read_dropped(inbox: &Inbox, ctx: &egui::Context, file: egui::DroppedFileHandle) {
+    let (inbox, ctx) = (inbox.clone(), ctx.clone());
+    wasm_bindgen_futures::spawn_local(async move {
+        let name = file
+            .path()
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+        let size = file.web_file().map_or(0.0, |file| file.size());
+        let result = if size > MAX_FILE_BYTES as f64 {
+            Err(too_large(&name, size))
+        } else {
+            file.bytes_async()
+                .await
+                .map(|bytes| PendingFile {
+                    name: name.clone(),
+                    bytes,
+                })
+                .map_err(|err| format!("{name}: cannot read the file: {err}"))
+        };
+        inbox.borrow_mut().push(result);
+        ctx.request_repaint();
+    });
+}
+
+/// Offers `bytes` as a download called `name`: a Blob behind a temporary
+/// link that is clicked and removed, its URL revoked once the download began.
+fn download(name: &str, bytes: &[u8]) -> Result<(), String> {
+    let window = web_sys::window().ok_or("no window to download from")?;
+    let document = window.document().ok_or("no document to download from")?;
+    let body = document.body().ok_or("the page has no body")?;
+    let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type("application/octet-stream");
+    let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
+        .map_err(|err| js_error_text(&err))?;
+    let url =
+        web_sys::Url::create_object_url_with_blob(&blob).map_err(|err| js_error_text(&err))?;
+    let anchor = document
+        .create_element("a")
+        .map_err(|err| js_error_text(&err))?
+        .dyn_into::<web_sys::HtmlAnchorElement>()
+        .map_err(|_| "the browser did not create a link")?;
+    anchor.set_href(&url);
+    anchor.set_download(name);
+    anchor.set_hidden(true);
+    body.append_child(&anchor)
+        .map_err(|err| js_error_text(&err))?;
+    anchor.click();
+    anchor.remove();
+    let revoke = Closure::once_into_js(move || {
+        web_sys::Url::revoke_object_url(&url).ok();
+    });
+    window
+        .set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 1000)
+        .map_err(|err| js_error_text(&err))?;
+    Ok(())
+}
+
+/// A JavaScript exception or value as text, for messages.
+pub fn js_error_text(value: &JsValue) -> String {
+    value
+        .as_string()
+        .or_else(|| {
+            value
+                .dyn_ref::<js_sys::Error>()
+                .map(|err| String::from(err.message()))
+        })
+        .unwrap_or_else(|| format!("{value:?}"))
+}
+
+fn local_storage() -> Option<web_sys::Storage> {
+    web_sys::window().and_then(|w| w.local_storage().ok().flatten())
+}
+
+/// The settings saved in this browser under `key`, if any.
+pub fn load_settings(key: &str) -> Option<String> {
+    local_storage().and_then(|storage| storage.get_item(key).ok().flatten())
+}
+
+/// Saves the settings in this browser; a full or disabled storage is
+/// logged, not fatal.
+pub fn store_settings(key: &str, json: &str) {
+    match local_storage() {
+        Some(storage) => {
+            if storage.set_item(key, json).is_err() {
+                log::warn!("the settings could not be saved in local storage");
+            }
+        }
+        None => log::warn!("this browser offers no local storage; settings last this visit"),
+    }
+}
+
+/// Enters or leaves fullscreen for a presentation.
+pub fn set_fullscreen(_ctx: &egui::Context, on: bool) {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    if on {
+        if let Some(element) = document.document_element()
+            && element.request_fullscreen().is_err()
+        {
+            log::warn!("the browser refused fullscreen; presenting in the window");
+        }
+    } else if document.fullscreen_element().is_some() {
+        document.exit_fullscreen();
+    }
+}
+
+/// Whether the page was fullscreen for a presentation and no longer is (the
+/// browser handles Escape itself in fullscreen).
+pub fn left_fullscreen() -> bool {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    static WAS_FULLSCREEN: AtomicBool = AtomicBool::new(false);
+    let now = web_sys::window()
+        .and_then(|w| w.document())
+        .is_some_and(|d| d.fullscreen_element().is_some());
+    let was = WAS_FULLSCREEN.swap(now, Ordering::Relaxed);
+    was && !now
+}
+
+/// The page's address without query or fragment.
+pub fn page_base() -> String {
+    web_sys::window()
+        .and_then(|w| {
+            let location = w.location();
+            Some(format!(
+                "{}{}",
+                location.origin().ok()?,
+                location.pathname().ok()?
+            ))
+        })
+        .unwrap_or_default()
+}
