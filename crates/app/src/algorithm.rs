@@ -31,23 +31,17 @@ use crate::theme::Theme;
 /// Seconds between automatic steps when playing, by default.
 const DEFAULT_DELAY: f32 = 0.6;
 
-/// The algorithm side of the app.
+/// The algorithms every tab shares: the library, the editor, breakpoints
+/// and how traces play.
 pub struct Algorithms {
     pub library: AlgorithmLibrary,
-    pub run: Run,
     /// Breakpoint lines, kept per algorithm across runs.
     breakpoints: HashMap<(String, Structure), BTreeSet<u32>>,
     /// Seconds between automatic steps.
     pub delay: f32,
-    /// Bumped on every change of run or step, so views re-derive colours.
-    generation: u64,
-    /// The frame of the current step, and the (generation, theme key) it is for.
-    frame: Option<((u64, u64), TraceFrame)>,
     pub editor: editor::AlgorithmEditor,
     /// Point size of the algorithm view's code.
     pub code_size: f32,
-    /// The step the source view last scrolled to.
-    scrolled_to: Option<(u64, usize)>,
     /// The colouring of the algorithm on show, keyed by its source.
     highlighted: Option<(Arc<str>, highlight::Highlighted)>,
 }
@@ -56,20 +50,103 @@ impl Default for Algorithms {
     fn default() -> Self {
         Self {
             library: AlgorithmLibrary::shipped(),
-            run: Run::Idle,
             breakpoints: HashMap::new(),
             delay: DEFAULT_DELAY,
-            generation: 0,
-            frame: None,
             editor: editor::AlgorithmEditor::default(),
             code_size: 14.0,
-            scrolled_to: None,
             highlighted: None,
         }
     }
 }
 
+/// One tab's algorithm run: waiting for inputs or being traced, and the
+/// frame of its current step.
+#[derive(Default)]
+pub struct AlgorithmRun {
+    pub run: Run,
+    /// Bumped on every change of run or step, so views re-derive colours.
+    generation: u64,
+    /// The frame of the current step, and the (generation, theme key) it is for.
+    frame: Option<((u64, u64), TraceFrame)>,
+    /// The step the source view last scrolled to.
+    scrolled_to: Option<(u64, usize)>,
+}
+
 impl Algorithms {
+    /// Looks up `name` for the mesh's structure, explaining a miss.
+    pub fn find(&self, name: &str, structure: Structure) -> Result<Arc<Algorithm>, String> {
+        if let Some(algorithm) = self.library.find(name, structure) {
+            return Ok(Arc::clone(algorithm));
+        }
+        if self.library.exists_anywhere(name) {
+            return Err(format!(
+                "`{name}` is written for the {} structure and the mesh is {}; switch the structure to run it",
+                structure.other().prose(),
+                structure.prose()
+            ));
+        }
+        Err(format!(
+            "there is no algorithm called `{name}`; the Algorithm menu lists them"
+        ))
+    }
+
+    fn key_of(algorithm: &Algorithm) -> (String, Structure) {
+        (algorithm.name.clone(), algorithm.structure)
+    }
+
+    /// The breakpoint lines of `algorithm`.
+    pub fn breakpoints(&self, algorithm: Option<&Arc<Algorithm>>) -> BTreeSet<u32> {
+        algorithm
+            .and_then(|algorithm| self.breakpoints.get(&Self::key_of(algorithm)))
+            .cloned()
+            .unwrap_or_default()
+    }
+
+    /// Sets or clears a breakpoint on `line` of the run's algorithm.
+    pub fn toggle_breakpoint(&mut self, run: &mut AlgorithmRun, line: u32) {
+        let Some(algorithm) = run.algorithm() else {
+            return;
+        };
+        let set = self.breakpoints.entry(Self::key_of(algorithm)).or_default();
+        if !set.remove(&line) {
+            set.insert(line);
+        }
+        run.changed();
+    }
+
+    /// Advances `run` if it is playing; see [`AlgorithmRun::tick`].
+    pub fn tick(&self, run: &mut AlgorithmRun, now: f64) -> Option<f64> {
+        let breakpoints = self.breakpoints(run.algorithm());
+        run.tick(now, f64::from(self.delay), &breakpoints)
+    }
+
+    /// Jumps `run` to the next step on a breakpoint line (or the end).
+    pub fn continue_to_breakpoint(&self, run: &mut AlgorithmRun) -> Result<(), String> {
+        let breakpoints = self.breakpoints(run.algorithm());
+        let session = run.session_mut()?;
+        let target = session.next_breakpoint(&breakpoints);
+        session.goto(target);
+        run.changed();
+        Ok(())
+    }
+
+    /// The syntax colouring of `algorithm`'s source, cached.
+    fn highlighted(&mut self, source: &Arc<str>) -> &highlight::Highlighted {
+        if self
+            .highlighted
+            .as_ref()
+            .is_some_and(|(s, _)| !Arc::ptr_eq(s, source))
+        {
+            self.highlighted = None;
+        }
+        &self
+            .highlighted
+            .get_or_insert_with(|| (Arc::clone(source), highlight::Highlighted::new(source)))
+            .1
+    }
+}
+
+impl AlgorithmRun {
     pub fn generation(&self) -> u64 {
         self.generation
     }
@@ -110,28 +187,6 @@ impl Algorithms {
             Run::Idle => Err("no algorithm is running".to_owned()),
         }
     }
-
-    /// Looks up `name` for the mesh's structure, explaining a miss.
-    pub fn find(&self, name: &str, structure: Structure) -> Result<Arc<Algorithm>, String> {
-        if let Some(algorithm) = self.library.find(name, structure) {
-            return Ok(Arc::clone(algorithm));
-        }
-        if self.library.exists_anywhere(name) {
-            let other = match structure {
-                Structure::WingedEdge => Structure::HalfEdge,
-                Structure::HalfEdge => Structure::WingedEdge,
-            };
-            return Err(format!(
-                "`{name}` is written for the {} structure and the mesh is {}; switch the structure to run it",
-                other.prose(),
-                structure.prose()
-            ));
-        }
-        Err(format!(
-            "there is no algorithm called `{name}`; the Algorithm menu lists them"
-        ))
-    }
-
     /// Starts `algorithm`: it waits for its inputs, or runs at once if it
     /// needs none. `inputs` are given up front (the JavaScript API).
     pub fn begin(
@@ -214,13 +269,6 @@ impl Algorithms {
         Ok(())
     }
 
-    /// Puts another tab's run in place of this one's and returns this one.
-    pub fn replace_run(&mut self, run: Run) -> Run {
-        let old = std::mem::replace(&mut self.run, run);
-        self.changed();
-        old
-    }
-
     /// Stops the run; the mesh returns to its plain look.
     pub fn abort(&mut self) -> Result<(), String> {
         if !self.is_active() {
@@ -251,11 +299,9 @@ impl Algorithms {
         }
     }
 
-    /// Advances a playing trace when its delay has passed; returns how long
-    /// to wait for the next step.
-    pub fn tick(&mut self, now: f64) -> Option<f64> {
-        let delay = f64::from(self.delay);
-        let breakpoints = self.breakpoints_of_current().cloned().unwrap_or_default();
+    /// Advances a playing trace when `delay` seconds have passed, stopping
+    /// at `breakpoints`; returns how long to wait for the next step.
+    pub fn tick(&mut self, now: f64, delay: f64, breakpoints: &BTreeSet<u32>) -> Option<f64> {
         let Run::Tracing(session) = &mut self.run else {
             return None;
         };
@@ -266,45 +312,11 @@ impl Algorithms {
         if now < due {
             return Some(due - now);
         }
-        session.auto_step(&breakpoints);
+        session.auto_step(breakpoints);
         session.last_auto_step = now;
         let playing = session.playing;
         self.changed();
         playing.then_some(delay)
-    }
-
-    fn key_of(algorithm: &Algorithm) -> (String, Structure) {
-        (algorithm.name.clone(), algorithm.structure)
-    }
-
-    fn breakpoints_of_current(&self) -> Option<&BTreeSet<u32>> {
-        self.breakpoints.get(&Self::key_of(self.algorithm()?))
-    }
-
-    /// The breakpoint lines of the current algorithm.
-    pub fn breakpoints(&self) -> BTreeSet<u32> {
-        self.breakpoints_of_current().cloned().unwrap_or_default()
-    }
-
-    pub fn toggle_breakpoint(&mut self, line: u32) {
-        let Some(algorithm) = self.algorithm() else {
-            return;
-        };
-        let set = self.breakpoints.entry(Self::key_of(algorithm)).or_default();
-        if !set.remove(&line) {
-            set.insert(line);
-        }
-        self.changed();
-    }
-
-    /// Jumps to the next step on a breakpoint line (or the end).
-    pub fn continue_to_breakpoint(&mut self) -> Result<(), String> {
-        let breakpoints = self.breakpoints();
-        let session = self.session_mut()?;
-        let target = session.next_breakpoint(&breakpoints);
-        session.goto(target);
-        self.changed();
-        Ok(())
     }
 
     /// The frame of the current step: the cached one when it is current
@@ -331,20 +343,5 @@ impl Algorithms {
             self.frame = Some((key, frame));
         }
         self.frame.as_ref().map(|(_, frame)| frame)
-    }
-
-    /// The syntax colouring of `algorithm`'s source, cached.
-    fn highlighted(&mut self, source: &Arc<str>) -> &highlight::Highlighted {
-        if self
-            .highlighted
-            .as_ref()
-            .is_some_and(|(s, _)| !Arc::ptr_eq(s, source))
-        {
-            self.highlighted = None;
-        }
-        &self
-            .highlighted
-            .get_or_insert_with(|| (Arc::clone(source), highlight::Highlighted::new(source)))
-            .1
     }
 }

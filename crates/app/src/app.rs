@@ -14,7 +14,7 @@ use crate::{
     algorithm::{Algorithms, Run},
     document::Document,
     files::FileState,
-    obj_editor::{EDITOR_FILE, MAX_EDITOR_BYTES, ObjEditor},
+    obj_editor::{EDITOR_FILE, MAX_EDITOR_BYTES},
     paint::Paint,
     samples::{self, SampleData},
     selection::Role,
@@ -22,16 +22,14 @@ use crate::{
     state::{AppState, Counts, DialogState, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{
-        DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, View3d, ViewOptions,
-    },
+    view3d::{DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, ViewOptions},
 };
 
 pub mod algorithm_ui;
 pub mod course;
 pub mod embed;
 pub mod settings_ui;
-mod tabs;
+pub(crate) mod tabs;
 mod twin;
 
 /// What the algorithm panel shows.
@@ -48,20 +46,11 @@ pub struct EdgewiseApp {
     backend: GraphicsBackend,
     frames: u64,
     theme: Theme,
-    pub(crate) document: Option<Document>,
-    /// The last failed load or command, shown until dismissed.
-    error: Option<String>,
-    view: View3d,
+    /// Every open mesh; never empty. Commands and drawing act on
+    /// `tabs[active_tab]`.
+    tabs: Vec<tabs::Tab>,
+    active_tab: usize,
     view_options: ViewOptions,
-    styles: SceneStyles,
-    /// What the views colour: the selection, or the trace's current step.
-    paint: Paint,
-    /// (document generation, algorithm generation, theme key) `paint` and
-    /// `styles` were derived from.
-    paint_key: Option<(u64, u64, u64)>,
-    /// Table rows to bring into view once: where the selection or the
-    /// trace's current operation moved to.
-    table_scroll: Vec<(ElementKind, u32)>,
     /// The algorithm library, the run and its trace.
     pub(crate) algorithms: Algorithms,
     show_algorithm_panel: bool,
@@ -77,24 +66,14 @@ pub struct EdgewiseApp {
     zoom_before_presenting: f32,
     /// For making more views (tabs, side by side); None in headless tests.
     render_state: Option<eframe::egui_wgpu::RenderState>,
-    /// Every tab; the active one's slot is empty because its contents are
-    /// the app's own fields.
-    tabs: Vec<Option<tabs::ParkedTab>>,
-    active_tab: usize,
     side_by_side: bool,
-    twin: Option<twin::Twin>,
     /// Embedded in an iframe (`?embed=1`): no menu bar.
     embed: Option<embed::Embed>,
     show_share: bool,
     share_status: Option<String>,
     /// Whether "Copy embed code" includes the tables.
     share_embed_tables: bool,
-    /// The structure new PLY and OBJ loads are built into.
-    pub(crate) structure: Structure,
-    obj_editor: ObjEditor,
     show_obj_editor: bool,
-    /// The element under the pointer in the 3D view, for the message line.
-    hovered: Option<Pick>,
     /// Kept so commands from JavaScript can ask for a new frame.
     ctx: Option<egui::Context>,
     /// Opening and saving files (see `files.rs`).
@@ -126,14 +105,9 @@ impl EdgewiseApp {
             backend,
             frames: 0,
             theme: Theme::light(),
-            document: None,
-            error: None,
-            view: View3d::new(render_state),
+            tabs: vec![tabs::Tab::new(render_state, Structure::WingedEdge)],
+            active_tab: 0,
             view_options: ViewOptions::default(),
-            styles: SceneStyles::default(),
-            paint: Paint::default(),
-            paint_key: None,
-            table_scroll: Vec::new(),
             algorithms: Algorithms::default(),
             show_algorithm_panel: false,
             algorithm_tab: AlgorithmTab::Run,
@@ -145,18 +119,12 @@ impl EdgewiseApp {
             presentation_choice: settings_ui::Presentation::default(),
             zoom_before_presenting: 1.0,
             render_state: render_state.cloned(),
-            tabs: vec![None],
-            active_tab: 0,
             side_by_side: false,
-            twin: None,
             embed: None,
             show_share: false,
             share_status: None,
             share_embed_tables: false,
-            structure: Structure::WingedEdge,
-            obj_editor: ObjEditor::default(),
             show_obj_editor: false,
-            hovered: None,
             ctx: None,
             files: FileState::default(),
         }
@@ -194,7 +162,7 @@ impl EdgewiseApp {
             SampleData::File { file_name, .. } => {
                 structure.unwrap_or_else(|| self.default_structure_for(file_name))
             }
-            SampleData::Torus { .. } => structure.unwrap_or(self.structure),
+            SampleData::Torus { .. } => structure.unwrap_or(self.tab().structure),
         };
         let loaded = match &sample.data {
             SampleData::File { file_name, bytes } => Document::load(bytes, file_name, structure),
@@ -214,7 +182,7 @@ impl EdgewiseApp {
     fn default_structure_for(&self, name: &str) -> Structure {
         Format::from_name(name)
             .and_then(Format::native_structure)
-            .unwrap_or(self.structure)
+            .unwrap_or(self.tab().structure)
     }
 
     /// Shows a newly loaded document, or keeps the current one and reports why not.
@@ -223,13 +191,14 @@ impl EdgewiseApp {
     fn open(&mut self, loaded: Result<Document, String>, frame: bool) -> Result<(), String> {
         match loaded {
             Ok(document) => {
-                self.structure = document.structure();
-                self.view
+                self.tab_mut().structure = document.structure();
+                self.tab_mut()
+                    .view
                     .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
-                self.document = Some(document);
-                self.algorithms.mesh_changed();
-                self.paint_key = None;
-                self.error = None;
+                self.tab_mut().document = Some(document);
+                self.tab_mut().run.mesh_changed();
+                self.tab_mut().paint_key = None;
+                self.tab_mut().error = None;
                 Ok(())
             }
             Err(message) => Err(self.fail(message)),
@@ -238,7 +207,7 @@ impl EdgewiseApp {
 
     /// Selects an element by kind and id, or clears with `None`.
     pub fn select(&mut self, element: Option<ElementRef>) -> Result<(), String> {
-        let Some(document) = &mut self.document else {
+        let Some(document) = &mut self.tab_mut().document else {
             return match element {
                 Some(_) => Err(self.fail("no mesh is open".to_owned())),
                 None => Ok(()),
@@ -251,8 +220,9 @@ impl EdgewiseApp {
 
     /// Converts the open mesh to the other structure, keeping the selection.
     pub fn switch_structure(&mut self, structure: Structure) -> Result<(), String> {
-        self.structure = structure;
-        let Some(document) = &mut self.document else {
+        let tab = &mut self.tabs[self.active_tab];
+        tab.structure = structure;
+        let Some(document) = &mut tab.document else {
             return Ok(());
         };
         if document.structure() == structure {
@@ -260,10 +230,10 @@ impl EdgewiseApp {
         }
         match document.switch_structure(structure) {
             Ok(()) => {
-                self.view
+                tab.view
                     .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-                self.algorithms.mesh_changed();
-                self.paint_key = None;
+                tab.run.mesh_changed();
+                tab.paint_key = None;
                 Ok(())
             }
             Err(message) => Err(self.fail(message)),
@@ -282,19 +252,20 @@ impl EdgewiseApp {
     fn toggle_obj_editor(&mut self) {
         self.show_obj_editor = !self.show_obj_editor;
         if self.show_obj_editor
-            && self.obj_editor.text.is_empty()
-            && let Some(document) = &self.document
+            && self.tab().obj_editor.text.is_empty()
+            && let Some(document) = &self.tab().document
             && let Ok(bytes) = formats::save(document.mesh(), Format::Obj, &SaveOptions::default())
         {
             if bytes.len() > MAX_EDITOR_BYTES {
-                self.obj_editor.refused = Some(format!(
+                self.tab_mut().obj_editor.refused = Some(format!(
                     "{} is {} bytes as OBJ, too large to edit here: this editor holds at most \
                      {MAX_EDITOR_BYTES} bytes",
                     document.name,
                     bytes.len()
                 ));
             } else {
-                self.obj_editor
+                self.tab_mut()
+                    .obj_editor
                     .set_text(String::from_utf8_lossy(&bytes).into_owned());
             }
         }
@@ -303,14 +274,14 @@ impl EdgewiseApp {
     fn obj_editor_ui(&mut self, ui: &mut egui::Ui) {
         ui.strong("OBJ");
         ui.weak("Edit the text: the mesh and its tables follow.");
-        if let Some(text) = self.obj_editor.ui(ui) {
-            let loaded = Document::parse(text.as_bytes(), EDITOR_FILE, self.structure);
-            self.obj_editor.set_error(loaded.as_ref().err());
-            let first = self.document.is_none();
+        if let Some(text) = self.tab_mut().obj_editor.ui(ui) {
+            let loaded = Document::parse(text.as_bytes(), EDITOR_FILE, self.tab_mut().structure);
+            self.tab_mut().obj_editor.set_error(loaded.as_ref().err());
+            let first = self.tab().document.is_none();
             let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
             // The editor marks its own problems; the view keeps the last good mesh.
             if self.open(loaded, first).is_err() {
-                self.error = None;
+                self.tab_mut().error = None;
             }
         }
     }
@@ -321,7 +292,7 @@ impl EdgewiseApp {
         if ctx.egui_wants_keyboard_input() {
             return;
         }
-        let Some(document) = &self.document else {
+        let Some(document) = &self.tab().document else {
             return;
         };
         if !matches!(document.mesh(), Mesh::Half(_)) {
@@ -353,13 +324,13 @@ impl EdgewiseApp {
 
     /// Records a failure for the error panel and `state().error`.
     pub(crate) fn fail(&mut self, message: String) -> String {
-        self.error = Some(message.clone());
+        self.tab_mut().error = Some(message.clone());
         message
     }
 
     /// A snapshot of the observable state.
     pub fn state(&self) -> AppState {
-        let doc = self.document.as_ref();
+        let doc = self.tab().document.as_ref();
         let counts = doc.map_or_else(Counts::default, |d| counts(d.mesh()));
         // The frame derives the paint too; deriving it here lets commands
         // from JavaScript read their effect before the next frame.
@@ -382,14 +353,14 @@ impl EdgewiseApp {
                     colour: crate::settings::to_hex(p.colour),
                 })
                 .collect(),
-            error: self.error.clone(),
+            error: self.tab().error.clone(),
             trace: self.trace_state(),
             pending: self.pending_state(),
             tabs: self.tab_states(),
             side_by_side: self.side_by_side,
             twin_selection: self.twin_selection(),
             embed: self.embed.is_some(),
-            diagnostics: self.obj_editor.diagnostics.clone(),
+            diagnostics: self.tab().obj_editor.diagnostics.clone(),
             dialog: self
                 .structure_dialog()
                 .map(|(file, structure)| DialogState {
@@ -401,13 +372,13 @@ impl EdgewiseApp {
     }
 
     fn trace_state(&self) -> Option<TraceState> {
-        let session = self.algorithms.session()?;
-        let frame = self.algorithms.current_frame(&self.theme)?;
+        let session = self.tab().run.session()?;
+        let frame = self.tab().run.current_frame(&self.theme)?;
         Some(TraceState::new(session.trace.algorithm(), &frame))
     }
 
     fn pending_state(&self) -> Option<PendingState> {
-        let Run::Picking(pending) = &self.algorithms.run else {
+        let Run::Picking(pending) = &self.tab().run.run else {
             return None;
         };
         Some(PendingState {
@@ -420,10 +391,10 @@ impl EdgewiseApp {
 
     /// The selection's paint, or the current trace step's.
     fn current_paint(&self) -> Paint {
-        if let Some(frame) = self.algorithms.current_frame(&self.theme) {
+        if let Some(frame) = self.tab().run.current_frame(&self.theme) {
             return frame.into_owned().paint;
         }
-        match &self.document {
+        match &self.tab().document {
             Some(document) => Paint::from_selection(document.highlights(), &self.theme),
             None => Paint::default(),
         }
@@ -432,32 +403,30 @@ impl EdgewiseApp {
     /// Re-derives colours and labels when the selection, the trace step or
     /// the theme changed.
     fn refresh_styles(&mut self) {
-        let Some(document) = &self.document else {
+        let theme = &self.theme;
+        let tab = &mut self.tabs[self.active_tab];
+        let Some(document) = &tab.document else {
             return;
         };
-        let key = (
-            document.generation(),
-            self.algorithms.generation(),
-            self.theme.key(),
-        );
-        if self.paint_key == Some(key) {
+        let key = (document.generation(), tab.run.generation(), theme.key());
+        if tab.paint_key == Some(key) {
             return;
         }
-        let paint = match self.algorithms.frame(&self.theme) {
+        let paint = match tab.run.frame(theme) {
             Some(frame) => frame.paint.clone(),
-            None => Paint::from_selection(document.highlights(), &self.theme),
+            None => Paint::from_selection(document.highlights(), theme),
         };
-        let styles = scene_styles(document.mesh(), &paint, self.styles.generation + 1);
-        self.table_scroll = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]
+        let styles = scene_styles(document.mesh(), &paint, tab.styles.generation + 1);
+        tab.table_scroll = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]
             .into_iter()
             .filter_map(|kind| {
                 let focus = paint.focus(kind)?;
-                (self.paint.focus(kind) != Some(focus)).then_some((kind, focus))
+                (tab.paint.focus(kind) != Some(focus)).then_some((kind, focus))
             })
             .collect();
-        self.styles = styles;
-        self.paint = paint;
-        self.paint_key = Some(key);
+        tab.styles = styles;
+        tab.paint = paint;
+        tab.paint_key = Some(key);
     }
 
     fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
@@ -477,10 +446,10 @@ impl EdgewiseApp {
                 self.load_sample(name, None).ok();
             }
             ui.separator();
-            let mut structure = self.structure;
+            let mut structure = self.tab().structure;
             ui.selectable_value(&mut structure, Structure::WingedEdge, "Winged-edge");
             ui.selectable_value(&mut structure, Structure::HalfEdge, "Half-edge");
-            if structure != self.structure {
+            if structure != self.tab().structure {
                 self.switch_structure(structure).ok();
             }
             ui.separator();
@@ -495,14 +464,14 @@ impl EdgewiseApp {
             self.view_options_menu_ui(ui);
             help_menu_ui(ui);
             if ui
-                .add_enabled(self.document.is_some(), egui::Button::new("Share…"))
+                .add_enabled(self.tab().document.is_some(), egui::Button::new("Share…"))
                 .on_hover_text("A link to this view, or code to embed it in lecture notes")
                 .clicked()
             {
                 self.show_share = true;
             }
             ui.separator();
-            if let Some(doc) = &self.document {
+            if let Some(doc) = &self.tab().document {
                 let mesh = doc.mesh();
                 let summary = format!(
                     "{}: {} vertices, {} edges, {} faces",
@@ -531,7 +500,7 @@ impl EdgewiseApp {
             ui.checkbox(&mut options.show_orientation, "Face orientation");
             ui.checkbox(&mut options.solid_faces, "Solid faces");
             if ui.button("Frame the mesh").clicked() {
-                self.view.frame_all();
+                self.tab_mut().view.frame_all();
             }
             let mut side_by_side = self.side_by_side;
             if ui
@@ -566,7 +535,7 @@ impl EdgewiseApp {
     /// The message line along the bottom of the 3D view: what is under the
     /// pointer or selected, or what the loader noticed.
     fn message_line_ui(&self, ui: &mut egui::Ui, hovered: Option<Pick>) {
-        let Some(document) = &self.document else {
+        let Some(document) = &self.tab().document else {
             return;
         };
         let text = if let Some(text) = self.algorithm_message() {
@@ -594,7 +563,7 @@ impl EdgewiseApp {
     }
 
     fn error_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(error) = &self.error else {
+        let Some(error) = &self.tab().error else {
             return;
         };
         let mut dismiss = false;
@@ -617,21 +586,25 @@ impl EdgewiseApp {
                 dismiss = ui.button("Dismiss").clicked();
             });
         if dismiss {
-            self.error = None;
+            self.tab_mut().error = None;
         }
     }
 
     /// The face, edge and vertex tables side by side; the panel's top edge
     /// moves the split between them and the 3D view.
     fn tables_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(document) = &self.document else {
+        if self.tab().document.is_none() {
             ui.weak("Open a mesh to see its tables.");
             // Keep the panel's size for when a mesh arrives.
             ui.allocate_space(ui.available_size());
             return;
-        };
+        }
         let mut response = TablesResponse::default();
-        let scroll = std::mem::take(&mut self.table_scroll);
+        let scroll = std::mem::take(&mut self.tab_mut().table_scroll);
+        let tab = &self.tabs[self.active_tab];
+        let Some(document) = &tab.document else {
+            return;
+        };
         let mut table = |ui: &mut egui::Ui, kind: ElementKind, title: &str| {
             let scroll_to = scroll.iter().find(|(k, _)| *k == kind).map(|&(_, id)| id);
             ui.strong(title);
@@ -643,7 +616,7 @@ impl EdgewiseApp {
                         ui,
                         document.mesh(),
                         kind,
-                        &self.paint,
+                        &tab.paint,
                         scroll_to,
                         &mut response,
                     );
@@ -668,7 +641,7 @@ impl EdgewiseApp {
     }
 
     fn view_ui(&mut self, ui: &mut egui::Ui) {
-        if self.document.is_none() {
+        if self.tab().document.is_none() {
             ui.centered_and_justified(|ui| {
                 ui.weak("Open a mesh, pick a sample, or paste OBJ text.");
             });
@@ -681,16 +654,17 @@ impl EdgewiseApp {
         let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
         let (view_rect, line_rect) =
             rect.split_top_bottom_at_y((rect.bottom() - line_height).max(rect.top()));
-        let hovered = self.hovered;
+        let hovered = self.tab().hovered;
         ui.scope_builder(egui::UiBuilder::new().max_rect(line_rect), |ui| {
             self.message_line_ui(ui, hovered);
         });
         let response = ui
             .scope_builder(egui::UiBuilder::new().max_rect(view_rect), |ui| {
-                self.view.ui(ui, &self.styles, &self.view_options)
+                let tab = &mut self.tabs[self.active_tab];
+                tab.view.ui(ui, &tab.styles, &self.view_options)
             })
             .inner;
-        self.hovered = response.hovered;
+        self.tab_mut().hovered = response.hovered;
         if let Some(pick) = response.clicked {
             self.element_clicked(Some(element_of(pick)));
         } else if response.background_clicked {
@@ -744,7 +718,7 @@ impl eframe::App for EdgewiseApp {
         self.settings_window_ui(ui.ctx());
         self.share_window_ui(ui.ctx());
         self.presentation_hint_ui(ui.ctx());
-        if (self.show_algorithm_panel || self.algorithms.is_active())
+        if (self.show_algorithm_panel || self.tab().run.is_active())
             && presenting.is_none_or(|p| p.algorithm)
         {
             egui::Panel::right("algorithm")
@@ -768,7 +742,7 @@ impl eframe::App for EdgewiseApp {
         }
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
-            if self.side_by_side && self.document.is_some() {
+            if self.side_by_side && self.tab().document.is_some() {
                 StripBuilder::new(ui)
                     .sizes(Size::remainder(), 2)
                     .horizontal(|mut strip| {

@@ -149,7 +149,7 @@ impl EdgewiseApp {
     /// (`cube.htb` saved as OBJ is `cube.obj`). Table formats convert a mesh
     /// of the other structure.
     pub fn export(&self, format: SaveFormat) -> Result<SavedFile, String> {
-        let document = self.document.as_ref().ok_or("no mesh is open")?;
+        let document = self.tab().document.as_ref().ok_or("no mesh is open")?;
         let bytes = formats::save(document.mesh(), format.format(), &format.options())
             .map_err(|err| format!("cannot save as {}: {err}", format.label()))?;
         Ok(SavedFile {
@@ -177,7 +177,7 @@ impl EdgewiseApp {
         match format.native_structure() {
             Some(structure) => self.load_mesh(&bytes, name, Some(structure)),
             None => {
-                self.files.dialog = Some(StructureDialog::new(name, bytes, self.structure));
+                self.files.dialog = Some(StructureDialog::new(name, bytes, self.tab().structure));
                 Ok(())
             }
         }
@@ -220,7 +220,7 @@ impl EdgewiseApp {
     pub(crate) fn files_menu_ui(&mut self, ui: &mut egui::Ui) {
         self.open_button_ui(ui);
         let mut chosen = None;
-        ui.add_enabled_ui(self.document.is_some(), |ui| {
+        ui.add_enabled_ui(self.tab().document.is_some(), |ui| {
             ui.menu_button("Save as…", |ui| {
                 for format in SaveFormat::ALL {
                     if ui.button(format.label()).clicked() {

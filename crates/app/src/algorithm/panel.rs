@@ -14,7 +14,7 @@ use edgewise_core::{
 use egui::{Align, Color32, RichText, Sense, vec2};
 
 use super::{
-    Algorithms, Run, TraceFrame,
+    AlgorithmRun, Algorithms, Run, TraceFrame,
     highlight::{CodeStyle, Mark},
 };
 use crate::theme::Theme;
@@ -23,15 +23,16 @@ impl Algorithms {
     /// Draws the algorithm view. Returns a message when a command failed.
     pub fn panel_ui(
         &mut self,
+        run: &mut AlgorithmRun,
         ui: &mut egui::Ui,
         theme: &Theme,
         mesh: Option<&Mesh>,
     ) -> Option<String> {
-        match &self.run {
-            Run::Idle => self.library_ui(ui, mesh),
-            Run::Picking(_) => self.picking_ui(ui, mesh),
+        match &run.run {
+            Run::Idle => self.library_ui(run, ui, mesh),
+            Run::Picking(_) => picking_ui(run, ui, mesh),
             Run::Tracing(_) => {
-                self.tracing_ui(ui, theme);
+                self.tracing_ui(run, ui, theme);
                 None
             }
         }
@@ -39,7 +40,12 @@ impl Algorithms {
 
     /// With nothing running: the algorithms for the mesh's structure, one
     /// click from running.
-    fn library_ui(&mut self, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
+    fn library_ui(
+        &self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+        mesh: Option<&Mesh>,
+    ) -> Option<String> {
         let Some(mesh) = mesh else {
             ui.weak("Open a mesh, then choose an algorithm to run on it.");
             return None;
@@ -68,101 +74,48 @@ impl Algorithms {
                 }
             });
         let algorithm = chosen?;
-        self.begin(algorithm, &[], mesh).err()
+        run.begin(algorithm, &[], mesh).err()
     }
 
-    /// While inputs are being picked: the prompt, fields for Integer and
-    /// Boolean parameters, Start and Cancel.
-    fn picking_ui(&mut self, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
-        let Run::Picking(pending) = &mut self.run else {
-            return None;
-        };
-        let algorithm = Arc::clone(&pending.algorithm);
-        header_ui(ui, &algorithm);
-        ui.add_space(6.0);
-        match pending.prompt() {
-            Some(prompt) => {
-                ui.label(RichText::new(prompt).strong().size(16.0));
-                ui.weak("Click it in the 3D view or in its table; only that kind can be picked.");
-            }
-            None => {
-                ui.label("Every input is given.");
-            }
-        }
-        let mut edited = false;
-        for param in algorithm.params() {
-            let Some(slot) = pending.inputs.iter_mut().find(|(n, _)| *n == param.name) else {
-                continue;
-            };
-            ui.horizontal(|ui| {
-                ui.monospace(format!("{} : {}", param.name, param.ty));
-                match (param.ty, &mut slot.1) {
-                    (Type::Integer, Value::Integer(n)) => {
-                        edited |= ui.add(egui::DragValue::new(n)).changed();
-                    }
-                    (Type::Boolean, Value::Boolean(b)) => {
-                        edited |= ui.checkbox(b, "").changed();
-                    }
-                    (_, value) => {
-                        ui.label(super::frame::value_text(*value));
-                    }
-                }
-            });
-        }
-        let ready = pending.missing().is_none();
-        let mut start = false;
-        let mut cancel = false;
-        ui.horizontal(|ui| {
-            start = ui
-                .add_enabled(ready, egui::Button::new("Start"))
-                .on_disabled_hover_text("pick the remaining inputs first")
-                .clicked();
-            cancel = ui.button("Cancel").clicked();
-        });
-        if edited {
-            self.changed();
-        }
-        if cancel {
-            return self.abort().err();
-        }
-        if start && let Some(mesh) = mesh {
-            return self.start(mesh).err();
-        }
-        None
-    }
-
-    fn tracing_ui(&mut self, ui: &mut egui::Ui, theme: &Theme) {
-        let Some(session) = self.session() else {
+    fn tracing_ui(&mut self, run: &mut AlgorithmRun, ui: &mut egui::Ui, theme: &Theme) {
+        let Some(session) = run.session() else {
             return;
         };
         let algorithm = Arc::clone(session.trace.algorithm());
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
         header_ui(ui, &algorithm);
-        self.controls_ui(ui, step, steps, playing);
-        let breakpoints = self.breakpoints();
-        let Some(frame) = self.frame(theme).cloned() else {
+        self.controls_ui(run, ui, step, steps, playing);
+        let breakpoints = self.breakpoints(run.algorithm());
+        let Some(frame) = run.frame(theme).cloned() else {
             return;
         };
         status_ui(ui, &frame, theme);
         ui.add_space(4.0);
         variables_ui(ui, &frame, theme);
         ui.separator();
-        self.source_ui(ui, &algorithm, &frame, &breakpoints, theme);
+        self.source_ui(run, ui, &algorithm, &frame, &breakpoints, theme);
         ui.separator();
         legend_ui(ui, theme);
     }
 
     /// The step buttons, the step slider and the delay, for the panel and for
     /// embedded views.
-    pub fn trace_controls_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(session) = self.session() else {
+    pub fn trace_controls_ui(&mut self, run: &mut AlgorithmRun, ui: &mut egui::Ui) {
+        let Some(session) = run.session() else {
             return;
         };
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
-        self.controls_ui(ui, step, steps, playing);
+        self.controls_ui(run, ui, step, steps, playing);
     }
 
-    fn controls_ui(&mut self, ui: &mut egui::Ui, step: usize, steps: usize, playing: bool) {
+    fn controls_ui(
+        &mut self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+        step: usize,
+        steps: usize,
+        playing: bool,
+    ) {
         let now = ui.input(|i| i.time);
         ui.horizontal_wrapped(|ui| {
             if ui
@@ -170,28 +123,28 @@ impl Algorithms {
                 .on_hover_text("Go to the start (Home)")
                 .clicked()
             {
-                self.goto(0).ok();
+                run.goto(0).ok();
             }
             if ui
                 .add_enabled(step > 0, egui::Button::new("◀ Back"))
                 .on_hover_text("Step back (←)")
                 .clicked()
             {
-                self.back(1).ok();
+                run.back(1).ok();
             }
             if ui
                 .add_enabled(step < steps, egui::Button::new("Step ▶"))
                 .on_hover_text("Step forward (Space or →)")
                 .clicked()
             {
-                self.step(1).ok();
+                run.step(1).ok();
             }
             if ui
                 .add_enabled(step < steps, egui::Button::new("▶|"))
                 .on_hover_text("Go to the end (End)")
                 .clicked()
             {
-                self.goto(steps).ok();
+                run.goto(steps).ok();
             }
             let play_label = if playing { "❚❚ Pause" } else { "▶ Play" };
             if ui
@@ -199,22 +152,22 @@ impl Algorithms {
                 .on_hover_text("Step automatically; stops at breakpoints (P)")
                 .clicked()
             {
-                self.set_playing(!playing, now);
+                run.set_playing(!playing, now);
             }
-            if !self.breakpoints().is_empty()
+            if !self.breakpoints(run.algorithm()).is_empty()
                 && ui
                     .add_enabled(step < steps, egui::Button::new("▶▶ Breakpoint"))
                     .on_hover_text("Go to the next step on a breakpoint line")
                     .clicked()
             {
-                self.continue_to_breakpoint().ok();
+                self.continue_to_breakpoint(run).ok();
             }
             if ui
                 .button("✖ Abort")
                 .on_hover_text("Stop the algorithm")
                 .clicked()
             {
-                self.abort().ok();
+                run.abort().ok();
             }
         });
         ui.horizontal(|ui| {
@@ -223,7 +176,7 @@ impl Algorithms {
                 .show_value(false)
                 .text(format!("step {step} of {steps}"));
             if ui.add(slider).changed() {
-                self.goto(k).ok();
+                run.goto(k).ok();
             }
         });
         ui.add(
@@ -236,6 +189,7 @@ impl Algorithms {
 
     fn source_ui(
         &mut self,
+        run: &mut AlgorithmRun,
         ui: &mut egui::Ui,
         algorithm: &Arc<Algorithm>,
         frame: &TraceFrame,
@@ -265,7 +219,7 @@ impl Algorithms {
         let row_height = ui.fonts_mut(|f| f.row_height(&style.font)) + 2.0;
         let gutter = ui.fonts_mut(|f| f.glyph_width(&style.font, '0')) * 4.0 + 18.0;
         let scroll_key = frame.line;
-        let needs_scroll = self.scrolled_to.map(|(_, line)| line) != Some(scroll_key as usize);
+        let needs_scroll = run.scrolled_to.map(|(_, line)| line) != Some(scroll_key as usize);
         let highlighted = self.highlighted(&source).clone();
         let mut toggled = None;
         let mut scrolled = false;
@@ -337,12 +291,72 @@ impl Algorithms {
                 }
             });
         if scrolled || frame.step == 0 {
-            self.scrolled_to = Some((0, scroll_key as usize));
+            run.scrolled_to = Some((0, scroll_key as usize));
         }
         if let Some(line) = toggled {
-            self.toggle_breakpoint(line);
+            self.toggle_breakpoint(run, line);
         }
     }
+}
+
+/// While inputs are being picked: the prompt, fields for Integer and
+/// Boolean parameters, Start and Cancel.
+fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
+    let Run::Picking(pending) = &mut run.run else {
+        return None;
+    };
+    let algorithm = Arc::clone(&pending.algorithm);
+    header_ui(ui, &algorithm);
+    ui.add_space(6.0);
+    match pending.prompt() {
+        Some(prompt) => {
+            ui.label(RichText::new(prompt).strong().size(16.0));
+            ui.weak("Click it in the 3D view or in its table; only that kind can be picked.");
+        }
+        None => {
+            ui.label("Every input is given.");
+        }
+    }
+    let mut edited = false;
+    for param in algorithm.params() {
+        let Some(slot) = pending.inputs.iter_mut().find(|(n, _)| *n == param.name) else {
+            continue;
+        };
+        ui.horizontal(|ui| {
+            ui.monospace(format!("{} : {}", param.name, param.ty));
+            match (param.ty, &mut slot.1) {
+                (Type::Integer, Value::Integer(n)) => {
+                    edited |= ui.add(egui::DragValue::new(n)).changed();
+                }
+                (Type::Boolean, Value::Boolean(b)) => {
+                    edited |= ui.checkbox(b, "").changed();
+                }
+                (_, value) => {
+                    ui.label(super::frame::value_text(*value));
+                }
+            }
+        });
+    }
+    let ready = pending.missing().is_none();
+    let mut start = false;
+    let mut cancel = false;
+    ui.horizontal(|ui| {
+        start = ui
+            .add_enabled(ready, egui::Button::new("Start"))
+            .on_disabled_hover_text("pick the remaining inputs first")
+            .clicked();
+        cancel = ui.button("Cancel").clicked();
+    });
+    if edited {
+        run.changed();
+    }
+    if cancel {
+        return run.abort().err();
+    }
+    if start && let Some(mesh) = mesh {
+        return run.start(mesh).err();
+    }
+    None
 }
 
 /// The algorithm's name, signature and description.

@@ -33,7 +33,7 @@ impl EdgewiseApp {
     /// Starts the algorithm `name` for the open mesh's structure with the
     /// given inputs; missing element inputs are then picked by clicking.
     pub fn run_algorithm(&mut self, name: &str, args: &[(String, Argument)]) -> Result<(), String> {
-        let Some(document) = &self.document else {
+        let Some(document) = &self.tab().document else {
             return Err(self.fail("open a mesh before running an algorithm".to_owned()));
         };
         let structure = document.structure();
@@ -71,11 +71,11 @@ impl EdgewiseApp {
         self.select(None).ok();
         self.show_algorithm_panel = true;
         self.algorithm_tab = AlgorithmTab::Run;
-        let result = match &self.document {
-            Some(document) => {
-                self.algorithms
-                    .begin(Arc::clone(&algorithm), &inputs, document.mesh())
-            }
+        let tab = &mut self.tabs[self.active_tab];
+        let result = match &tab.document {
+            Some(document) => tab
+                .run
+                .begin(Arc::clone(&algorithm), &inputs, document.mesh()),
             None => Ok(()),
         };
         result.map_err(|message| self.fail(message))
@@ -108,40 +108,42 @@ impl EdgewiseApp {
 
     /// Steps the trace forward `n` operations.
     pub fn trace_step(&mut self, n: usize) -> Result<(), String> {
-        let result = self.algorithms.step(n);
+        let result = self.tab_mut().run.step(n);
         result.map_err(|message| self.fail(message))
     }
 
     /// Steps the trace back `n` operations.
     pub fn trace_back(&mut self, n: usize) -> Result<(), String> {
-        let result = self.algorithms.back(n);
+        let result = self.tab_mut().run.back(n);
         result.map_err(|message| self.fail(message))
     }
 
     /// Goes to step `k` (clamped to the trace).
     pub fn trace_goto(&mut self, k: usize) -> Result<(), String> {
-        let result = self.algorithms.goto(k);
+        let result = self.tab_mut().run.goto(k);
         result.map_err(|message| self.fail(message))
     }
 
     /// Stops the running algorithm.
     pub fn abort_algorithm(&mut self) -> Result<(), String> {
-        let result = self.algorithms.abort();
+        let result = self.tab_mut().run.abort();
         result.map_err(|message| self.fail(message))
     }
 
     /// Toggles a breakpoint on a source line of the running algorithm.
     pub fn toggle_breakpoint(&mut self, line: u32) {
-        self.algorithms.toggle_breakpoint(line);
+        self.algorithms
+            .toggle_breakpoint(&mut self.tabs[self.active_tab].run, line);
     }
 
     /// A click on an element in the view or the tables: an input for a
     /// waiting algorithm, nothing while a trace is shown, else a selection.
     pub(super) fn element_clicked(&mut self, element: Option<ElementRef>) {
-        match (&self.algorithms.run, element) {
+        match (&self.tab().run.run, element) {
             (Run::Picking(_), Some(element)) => {
-                let result = match &self.document {
-                    Some(document) => self.algorithms.pick(element, document.mesh()),
+                let tab = &mut self.tabs[self.active_tab];
+                let result = match &tab.document {
+                    Some(document) => tab.run.pick(element, document.mesh()),
                     None => Ok(()),
                 };
                 if let Err(message) = result {
@@ -157,7 +159,7 @@ impl EdgewiseApp {
 
     /// Only the kind of element a waiting algorithm needs can be picked.
     pub(super) fn pick_filter(&self) -> PickFilter {
-        match &self.algorithms.run {
+        match &self.tab().run.run {
             Run::Picking(pending) => match pending.wanted_kind() {
                 Some(ElementKind::Vertex) => PickFilter::Only(PickKind::Vertex),
                 Some(ElementKind::Edge) => PickFilter::Only(PickKind::Edge),
@@ -170,7 +172,7 @@ impl EdgewiseApp {
 
     /// The message line while an algorithm runs: its prompt or the step.
     pub(super) fn algorithm_message(&self) -> Option<String> {
-        match &self.algorithms.run {
+        match &self.tab().run.run {
             Run::Idle => None,
             Run::Picking(pending) => Some(pending.prompt().unwrap_or_else(|| {
                 format!(
@@ -179,7 +181,7 @@ impl EdgewiseApp {
                 )
             })),
             Run::Tracing(_) => {
-                let frame = self.algorithms.current_frame(&self.theme)?;
+                let frame = self.tab().run.current_frame(&self.theme)?;
                 Some(format!(
                     "Step {} of {}: {}",
                     frame.step, frame.steps, frame.message
@@ -191,14 +193,17 @@ impl EdgewiseApp {
     /// Advances a playing trace and schedules the next frame for it.
     pub(super) fn play_tick(&mut self, ctx: &egui::Context) {
         let now = ctx.input(|i| i.time);
-        if let Some(wait) = self.algorithms.tick(now) {
+        if let Some(wait) = self
+            .algorithms
+            .tick(&mut self.tabs[self.active_tab].run, now)
+        {
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait.max(0.0)));
         }
     }
 
     /// Space or → steps, ← steps back, Home and End jump, P plays or pauses.
     pub(super) fn trace_keys(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() || self.algorithms.session().is_none() {
+        if ctx.egui_wants_keyboard_input() || self.tab().run.session().is_none() {
             return;
         }
         let (forward, back, home, end, play, now) = ctx.input(|i| {
@@ -212,27 +217,27 @@ impl EdgewiseApp {
             )
         });
         if forward {
-            self.algorithms.step(1).ok();
+            self.tab_mut().run.step(1).ok();
         }
         if back {
-            self.algorithms.back(1).ok();
+            self.tab_mut().run.back(1).ok();
         }
         if home {
-            self.algorithms.goto(0).ok();
+            self.tab_mut().run.goto(0).ok();
         }
         if end {
-            self.algorithms.goto(usize::MAX).ok();
+            self.tab_mut().run.goto(usize::MAX).ok();
         }
         if play {
-            let playing = self.algorithms.session().is_some_and(|s| s.playing);
-            self.algorithms.set_playing(!playing, now);
+            let playing = self.tab_mut().run.session().is_some_and(|s| s.playing);
+            self.tab_mut().run.set_playing(!playing, now);
         }
     }
 
     /// The Algorithm menu: the library for the mesh's structure, the other
     /// structure's algorithms greyed with a hint, and the editor.
     pub(super) fn algorithm_menu_ui(&mut self, ui: &mut egui::Ui) {
-        let structure = self
+        let structure = self.tabs[self.active_tab]
             .document
             .as_ref()
             .map(crate::document::Document::structure);
@@ -290,15 +295,19 @@ impl EdgewiseApp {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if ui.button("✖").on_hover_text("Close the panel").clicked() {
                     self.show_algorithm_panel = false;
-                    self.algorithms.abort().ok();
+                    self.tab_mut().run.abort().ok();
                 }
             });
         });
         ui.separator();
         match self.algorithm_tab {
             AlgorithmTab::Run => {
-                let mesh = self.document.as_ref().map(crate::document::Document::mesh);
-                if let Some(message) = self.algorithms.panel_ui(ui, &self.theme, mesh) {
+                let tab = &mut self.tabs[self.active_tab];
+                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
+                if let Some(message) = self
+                    .algorithms
+                    .panel_ui(&mut tab.run, ui, &self.theme, mesh)
+                {
                     self.fail(message);
                 }
             }

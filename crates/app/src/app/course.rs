@@ -89,18 +89,18 @@ impl EdgewiseApp {
             messages.push("step= needs an algorithm= to step through".to_owned());
         }
         if let Some(selection) = link.selection {
-            if self.algorithms.is_active() {
+            if self.tab().run.is_active() {
                 messages.push("select= is ignored while an algorithm runs".to_owned());
             } else if let Err(message) = self.select(Some(selection)) {
                 messages.push(format!("select=: {message}"));
             }
         }
         if let Some(camera) = link.camera {
-            self.view.set_camera(camera.sanitized());
+            self.tab_mut().view.set_camera(camera.sanitized());
         }
         link.apply_view_options(&mut self.view_options);
 
-        self.error = (!messages.is_empty()).then(|| {
+        self.tab_mut().error = (!messages.is_empty()).then(|| {
             format!(
                 "Some of this link could not be followed; the rest is shown.\n{}",
                 messages.join("\n")
@@ -134,7 +134,7 @@ impl EdgewiseApp {
             self.theme = settings.theme();
             self.algorithms.code_size = settings.code_size;
             self.settings = settings;
-            self.paint_key = None;
+            self.tab_mut().paint_key = None;
         }
         if link.embed {
             self.set_embed(Some(Embed {
@@ -165,7 +165,7 @@ impl EdgewiseApp {
     /// differs from the defaults.
     pub fn course_link(&self) -> CourseLink {
         let mut link = CourseLink::default();
-        if let Some(document) = &self.document {
+        if let Some(document) = &self.tab().document {
             link.structure = Some(document.structure());
             link.mesh = Some(match &document.sample {
                 Some(name) => MeshSource::Sample(name.clone()),
@@ -185,8 +185,8 @@ impl EdgewiseApp {
             });
             link.selection = document.selection();
         }
-        let run = self.algorithms.algorithm().map(|algorithm| {
-            let inputs: Vec<(String, Value)> = match &self.algorithms.run {
+        let run = self.tab().run.algorithm().map(|algorithm| {
+            let inputs: Vec<(String, Value)> = match &self.tab().run.run {
                 crate::algorithm::Run::Tracing(session) => algorithm
                     .params()
                     .zip(session.trace.initial_variables())
@@ -209,13 +209,13 @@ impl EdgewiseApp {
                 .into_iter()
                 .filter_map(|(name, value)| Some((name, argument_of(value)?)))
                 .collect();
-            link.step = self
-                .algorithms
+            link.step = self.tabs[self.active_tab]
+                .run
                 .session()
                 .map(crate::algorithm::TraceSession::step);
             link.selection = None;
         }
-        link.camera = Some(self.view.camera());
+        link.camera = Some(self.tab().view.camera());
         link.set_view_options(&self.view_options);
         let defaults = Settings::default();
         if self.settings.dark != defaults.dark {

@@ -23,14 +23,15 @@ impl EdgewiseApp {
     /// The embedded layout: step controls under the view when a trace runs,
     /// the tables if asked for, and the view filling the rest.
     pub(super) fn embed_ui(&mut self, ui: &mut egui::Ui, embed: Embed) {
-        if self.algorithms.session().is_some() {
+        if self.tab().run.session().is_some() {
             egui::Panel::bottom("embed_controls").show(ui, |ui| {
                 ui.horizontal(|ui| {
-                    if let Some(algorithm) = self.algorithms.algorithm() {
+                    if let Some(algorithm) = self.tab().run.algorithm() {
                         ui.strong(egui::RichText::new(&algorithm.name).monospace());
                     }
                 });
-                self.algorithms.trace_controls_ui(ui);
+                self.algorithms
+                    .trace_controls_ui(&mut self.tabs[self.active_tab].run, ui);
             });
         }
         if embed.tables {

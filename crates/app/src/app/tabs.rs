@@ -1,38 +1,85 @@
-//! Several meshes at once, in tabs. The active tab's mesh, view and run
-//! live in the app's own fields, so everything else works on "the" mesh; a
-//! tab switch parks them and unparks the other tab's.
+//! Several meshes at once, in tabs. Each [`Tab`] owns everything that
+//! belongs to one mesh; the app draws and commands the active one, so a tab
+//! switch only changes which one that is.
 
 use edgewise_core::mesh::Structure;
+use edgewise_core::schema::ElementKind;
 
-use super::EdgewiseApp;
+use super::{EdgewiseApp, twin::Twin};
 use crate::{
-    algorithm::Run,
+    algorithm::AlgorithmRun,
     document::Document,
+    obj_editor::ObjEditor,
+    paint::Paint,
     state::TabState,
-    view3d::{SceneStyles, View3d},
+    view3d::{Pick, SceneStyles, View3d},
 };
 
-/// An inactive tab's mesh, view and algorithm run.
-pub(super) struct ParkedTab {
-    document: Option<Document>,
-    view: View3d,
-    styles: SceneStyles,
-    run: Run,
-    structure: Structure,
+/// One open mesh and everything shown for it: its document, 3D view and
+/// camera, colours, algorithm run, OBJ editor text, table scroll, error
+/// and side-by-side twin.
+pub(crate) struct Tab {
+    pub(crate) document: Option<Document>,
+    pub(crate) view: View3d,
+    pub(crate) styles: SceneStyles,
+    /// What the views colour: the selection, or the trace's current step.
+    pub(crate) paint: Paint,
+    /// (document generation, run generation, theme key) `paint` and
+    /// `styles` were derived from.
+    pub(crate) paint_key: Option<(u64, u64, u64)>,
+    /// Table rows to bring into view once: where the selection or the
+    /// trace's current operation moved to.
+    pub(crate) table_scroll: Vec<(ElementKind, u32)>,
+    pub(crate) run: AlgorithmRun,
+    /// The structure new PLY and OBJ loads are built into.
+    pub(crate) structure: Structure,
+    pub(crate) obj_editor: ObjEditor,
+    /// The last failed load or command, shown until dismissed.
+    pub(crate) error: Option<String>,
+    pub(crate) twin: Option<Twin>,
+    /// The element under the pointer in the 3D view, for the message line.
+    pub(crate) hovered: Option<Pick>,
+}
+
+impl Tab {
+    /// An empty tab drawing with `render_state` (none in headless tests).
+    pub(crate) fn new(
+        render_state: Option<&eframe::egui_wgpu::RenderState>,
+        structure: Structure,
+    ) -> Self {
+        Self {
+            document: None,
+            view: View3d::new(render_state),
+            styles: SceneStyles::default(),
+            paint: Paint::default(),
+            paint_key: None,
+            table_scroll: Vec::new(),
+            run: AlgorithmRun::default(),
+            structure,
+            obj_editor: ObjEditor::default(),
+            error: None,
+            twin: None,
+            hovered: None,
+        }
+    }
 }
 
 impl EdgewiseApp {
+    /// The tab the app shows and commands act on.
+    pub(crate) fn tab(&self) -> &Tab {
+        // `tabs` is never empty and `active_tab` is kept in range.
+        &self.tabs[self.active_tab]
+    }
+
+    pub(crate) fn tab_mut(&mut self) -> &mut Tab {
+        &mut self.tabs[self.active_tab]
+    }
+
     /// Opens an empty tab and switches to it; returns its index.
     pub fn new_tab(&mut self) -> usize {
-        let view = View3d::new(self.render_state.as_ref());
-        let parked = ParkedTab {
-            document: None,
-            view,
-            styles: SceneStyles::default(),
-            run: Run::Idle,
-            structure: self.structure,
-        };
-        self.tabs.push(Some(parked));
+        let structure = self.tab().structure;
+        self.tabs
+            .push(Tab::new(self.render_state.as_ref(), structure));
         let index = self.tabs.len() - 1;
         self.switch_tab(index).ok();
         index
@@ -40,24 +87,13 @@ impl EdgewiseApp {
 
     /// Makes tab `index` the active one.
     pub fn switch_tab(&mut self, index: usize) -> Result<(), String> {
-        if index == self.active_tab {
-            return Ok(());
-        }
-        let Some(slot) = self.tabs.get_mut(index) else {
+        if index >= self.tabs.len() {
             return Err(self.fail(format!(
                 "there is no tab {index} (there are {}, numbered from 0)",
                 self.tabs.len()
             )));
-        };
-        let Some(incoming) = slot.take() else {
-            return Ok(());
-        };
-        let outgoing = self.park(incoming);
-        if let Some(old) = self.tabs.get_mut(self.active_tab) {
-            *old = Some(outgoing);
         }
         self.active_tab = index;
-        self.twin = None;
         Ok(())
     }
 
@@ -84,21 +120,6 @@ impl EdgewiseApp {
         Ok(())
     }
 
-    /// Swaps the active tab's contents for `incoming`'s and returns them.
-    fn park(&mut self, incoming: ParkedTab) -> ParkedTab {
-        let run = self.algorithms.replace_run(incoming.run);
-        let outgoing = ParkedTab {
-            document: std::mem::replace(&mut self.document, incoming.document),
-            view: std::mem::replace(&mut self.view, incoming.view),
-            styles: std::mem::replace(&mut self.styles, incoming.styles),
-            run,
-            structure: std::mem::replace(&mut self.structure, incoming.structure),
-        };
-        self.paint_key = None;
-        self.hovered = None;
-        outgoing
-    }
-
     /// The tabs for `state().tabs`.
     pub(super) fn tab_states(&self) -> Vec<TabState> {
         (0..self.tabs.len())
@@ -110,15 +131,10 @@ impl EdgewiseApp {
     }
 
     fn tab_title(&self, index: usize) -> String {
-        let document = if index == self.active_tab {
-            self.document.as_ref()
-        } else {
-            self.tabs
-                .get(index)
-                .and_then(Option::as_ref)
-                .and_then(|t| t.document.as_ref())
-        };
-        document.map_or_else(|| "New tab".to_owned(), |d| d.name.clone())
+        self.tabs
+            .get(index)
+            .and_then(|tab| tab.document.as_ref())
+            .map_or_else(|| "New tab".to_owned(), |d| d.name.clone())
     }
 
     /// The tab strip; shown when there is more than one tab.

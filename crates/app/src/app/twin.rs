@@ -14,7 +14,7 @@ use crate::{
 };
 
 /// The other structure's copy of the open mesh and its view.
-pub(super) struct Twin {
+pub(crate) struct Twin {
     document: Document,
     correspondence: EdgeCorrespondence,
     view: View3d,
@@ -32,7 +32,7 @@ impl EdgewiseApp {
     pub fn set_side_by_side(&mut self, on: bool) -> Result<(), String> {
         self.side_by_side = on;
         if !on {
-            self.twin = None;
+            self.tab_mut().twin = None;
             return Ok(());
         }
         self.sync_twin()
@@ -44,16 +44,20 @@ impl EdgewiseApp {
 
     /// The twin's selection, for `state().twin`.
     pub(super) fn twin_selection(&self) -> Option<ElementRef> {
-        self.twin.as_ref().and_then(|t| t.document.selection())
+        self.tab()
+            .twin
+            .as_ref()
+            .and_then(|t| t.document.selection())
     }
 
     /// Rebuilds the twin when the mesh changed and copies the selection over.
     fn sync_twin(&mut self) -> Result<(), String> {
-        let Some(document) = &self.document else {
-            self.twin = None;
+        let tab = &mut self.tabs[self.active_tab];
+        let Some(document) = &tab.document else {
+            tab.twin = None;
             return Ok(());
         };
-        let stale = self
+        let stale = tab
             .twin
             .as_ref()
             .is_none_or(|t| t.source_mesh != document.mesh_id());
@@ -61,15 +65,15 @@ impl EdgewiseApp {
             let (twin_document, correspondence) = match document.twin() {
                 Ok(made) => made,
                 Err(message) => {
+                    tab.twin = None;
                     self.side_by_side = false;
-                    self.twin = None;
                     return Err(self.fail(format!("side by side: {message}")));
                 }
             };
             let mut view = View3d::new(self.render_state.as_ref());
             view.set_geometry(MeshGeometry::from_mesh(twin_document.mesh()), false);
-            view.set_camera(self.view.camera());
-            self.twin = Some(Twin {
+            view.set_camera(tab.view.camera());
+            tab.twin = Some(Twin {
                 document: twin_document,
                 correspondence,
                 view,
@@ -80,7 +84,7 @@ impl EdgewiseApp {
             });
             return Ok(());
         }
-        if let Some(twin) = &mut self.twin
+        if let Some(twin) = &mut tab.twin
             && twin.synced != document.generation()
         {
             let mapped = document
@@ -98,7 +102,7 @@ impl EdgewiseApp {
             return;
         }
         let theme_key = self.theme.key();
-        let Some(twin) = &mut self.twin else {
+        let Some(twin) = &mut self.tabs[self.active_tab].twin else {
             return;
         };
         let key = (twin.document.generation(), theme_key);
