@@ -1,6 +1,7 @@
 //! The top-level eframe application: a mesh document, the 3D view, the
 //! tables, and the commands the JavaScript API and the UI share.
 
+use crate::app::command::{Command, CommandError};
 use edgewise_core::schema::{Column, ElementKind, ElementRef};
 use egui_extras::{Size, StripBuilder};
 
@@ -26,6 +27,7 @@ use crate::{
 };
 
 pub mod algorithm_ui;
+pub mod command;
 pub mod course;
 pub mod embed;
 pub mod settings_ui;
@@ -91,7 +93,7 @@ impl EdgewiseApp {
         let (settings, message) = crate::settings::load_stored();
         app.set_settings(settings);
         if let Some(message) = message {
-            app.fail(message);
+            app.report(message);
         }
         app
     }
@@ -135,28 +137,32 @@ impl EdgewiseApp {
         self.backend
     }
 
-    /// Loads mesh text or bytes; `name` gives the format by its extension
-    /// (or the content does). On failure the current mesh stays and the
-    /// message is kept in `state().error`.
-    pub fn load_mesh(
+    /// [`Command::LoadMesh`]: `name` gives the format by its extension (or
+    /// the content does); on failure the current mesh stays.
+    pub(crate) fn open_bytes(
         &mut self,
         bytes: &[u8],
         name: &str,
         structure: Option<Structure>,
-    ) -> Result<(), String> {
+    ) -> Result<(), CommandError> {
         let structure = structure.unwrap_or_else(|| self.default_structure_for(name));
         let loaded = Document::load(bytes, name, structure);
         self.open(loaded, true)
     }
 
-    /// Opens a built-in sample by name (a file stem in meshes/).
-    pub fn load_sample(&mut self, name: &str, structure: Option<Structure>) -> Result<(), String> {
+    /// [`Command::LoadSample`].
+    fn open_sample(
+        &mut self,
+        name: &str,
+        structure: Option<Structure>,
+    ) -> Result<(), CommandError> {
         let Some(sample) = samples::find(name) else {
             let names: Vec<&str> = samples::SAMPLES.iter().map(|s| s.name).collect();
-            return Err(self.fail(format!(
+            return Err(format!(
                 "there is no sample called '{name}'; the samples are: {}",
                 names.join(", ")
-            )));
+            )
+            .into());
         };
         let structure = match &sample.data {
             SampleData::File { file_name, .. } => {
@@ -188,7 +194,7 @@ impl EdgewiseApp {
     /// Shows a newly loaded document, or keeps the current one and reports why not.
     /// `frame` points the camera at the new mesh; the OBJ editor keeps the
     /// student's view while they type.
-    fn open(&mut self, loaded: Result<Document, String>, frame: bool) -> Result<(), String> {
+    fn open(&mut self, loaded: Result<Document, String>, frame: bool) -> Result<(), CommandError> {
         match loaded {
             Ok(document) => {
                 self.tab_mut().structure = document.structure();
@@ -201,25 +207,24 @@ impl EdgewiseApp {
                 self.tab_mut().error = None;
                 Ok(())
             }
-            Err(message) => Err(self.fail(message)),
+            Err(message) => Err(message.into()),
         }
     }
 
-    /// Selects an element by kind and id, or clears with `None`.
-    pub fn select(&mut self, element: Option<ElementRef>) -> Result<(), String> {
+    /// [`Command::Select`].
+    fn set_selection(&mut self, element: Option<ElementRef>) -> Result<(), CommandError> {
         let Some(document) = &mut self.tab_mut().document else {
             return match element {
-                Some(_) => Err(self.fail("no mesh is open".to_owned())),
+                Some(_) => Err("no mesh is open".into()),
                 None => Ok(()),
             };
         };
-        document
-            .select(element)
-            .map_err(|message| self.fail(message))
+        document.select(element).map_err(CommandError::from)
     }
 
-    /// Converts the open mesh to the other structure, keeping the selection.
-    pub fn switch_structure(&mut self, structure: Structure) -> Result<(), String> {
+    /// [`Command::SetStructure`]: converts the open mesh, keeping the
+    /// selection.
+    fn convert_to(&mut self, structure: Structure) -> Result<(), CommandError> {
         let tab = &mut self.tabs[self.active_tab];
         tab.structure = structure;
         let Some(document) = &mut tab.document else {
@@ -236,7 +241,7 @@ impl EdgewiseApp {
                 tab.paint_key = None;
                 Ok(())
             }
-            Err(message) => Err(self.fail(message)),
+            Err(message) => Err(message.into()),
         }
     }
 
@@ -280,9 +285,7 @@ impl EdgewiseApp {
             let first = self.tab().document.is_none();
             let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
             // The editor marks its own problems; the view keeps the last good mesh.
-            if self.open(loaded, first).is_err() {
-                self.tab_mut().error = None;
-            }
+            let _marked_in_the_editor = self.open(loaded, first);
         }
     }
 
@@ -318,14 +321,16 @@ impl EdgewiseApp {
                 .map(|h| h.element)
         });
         if let Some(target) = target {
-            self.select(Some(target)).ok();
+            self.issue(Command::Select(Some(target)));
         }
     }
 
-    /// Records a failure for the error panel and `state().error`.
-    pub(crate) fn fail(&mut self, message: String) -> String {
-        self.tab_mut().error = Some(message.clone());
-        message
+    /// Records a failure for the error panel and `state().error`: what
+    /// [`Self::execute`] does with a refused command, and what happens to
+    /// failures that come from no command (a settings file, a dropped file
+    /// that cannot be read).
+    pub(crate) fn report(&mut self, message: String) {
+        self.tab_mut().error = Some(message);
     }
 
     /// A snapshot of the observable state.
@@ -443,14 +448,17 @@ impl EdgewiseApp {
                 }
             });
             if let Some(name) = chosen {
-                self.load_sample(name, None).ok();
+                self.issue(Command::LoadSample {
+                    name: name.to_owned(),
+                    structure: None,
+                });
             }
             ui.separator();
             let mut structure = self.tab().structure;
             ui.selectable_value(&mut structure, Structure::WingedEdge, "Winged-edge");
             ui.selectable_value(&mut structure, Structure::HalfEdge, "Half-edge");
             if structure != self.tab().structure {
-                self.switch_structure(structure).ok();
+                self.issue(Command::SetStructure(structure));
             }
             ui.separator();
             if ui
@@ -507,7 +515,7 @@ impl EdgewiseApp {
                 .checkbox(&mut side_by_side, "Winged-edge and half-edge side by side")
                 .changed()
             {
-                self.set_side_by_side(side_by_side).ok();
+                self.issue(Command::SetSideBySide(side_by_side));
             }
             ui.separator();
             let theme_label = if self.theme.dark {

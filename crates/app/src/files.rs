@@ -12,6 +12,7 @@ use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
 
 use crate::{
     EdgewiseApp,
+    app::command::{Command, CommandError},
     open_dialog::StructureDialog,
     platform::{FileIo, PendingFile},
 };
@@ -162,20 +163,25 @@ impl EdgewiseApp {
         })
     }
 
-    /// Opens a file read from disk. A table file opens as the structure it
+    /// [`Command::OpenFile`]: a table file opens as the structure it
     /// stores; for PLY and OBJ the structure dialog asks first. Unknown
     /// extensions are refused with the current mesh kept.
-    pub fn open_file(&mut self, name: &str, bytes: Vec<u8>) -> Result<(), String> {
+    pub(crate) fn open_named_file(
+        &mut self,
+        name: &str,
+        bytes: Vec<u8>,
+    ) -> Result<(), CommandError> {
         if is_algorithm_file(name) {
             return self.open_algorithm_file(name, &bytes);
         }
         let Some(format) = Format::from_name(name) else {
-            return Err(self.fail(format!(
+            return Err(format!(
                 "{name}: Edgewise opens {OPEN_EXTENSIONS} files; the extension says which"
-            )));
+            )
+            .into());
         };
         match format.native_structure() {
-            Some(structure) => self.load_mesh(&bytes, name, Some(structure)),
+            Some(structure) => self.open_bytes(&bytes, name, Some(structure)),
             None => {
                 self.files.dialog = Some(StructureDialog::new(name, bytes, self.tab().structure));
                 Ok(())
@@ -183,14 +189,12 @@ impl EdgewiseApp {
         }
     }
 
-    /// Saves the open mesh: a download in the browser, a file in the current
-    /// directory natively.
-    fn save_as(&mut self, format: SaveFormat) -> Result<(), String> {
-        let saved = self.export(format).map_err(|err| self.fail(err))?;
-        match self.files.io.write(&saved.name, &saved.bytes) {
-            Ok(_) => Ok(()),
-            Err(err) => Err(self.fail(err)),
-        }
+    /// [`Command::SaveAs`]: a download in the browser, a file in the
+    /// current directory natively.
+    pub(crate) fn save_as(&mut self, format: SaveFormat) -> Result<(), CommandError> {
+        let saved = self.export(format)?;
+        self.files.io.write(&saved.name, &saved.bytes)?;
+        Ok(())
     }
 
     /// Takes files dropped on the window this frame (the first one, if
@@ -203,15 +207,15 @@ impl EdgewiseApp {
             .is_some_and(|opening| opening.frames_shown >= FRAMES_TO_SHOW)
             && let Some(Opening { file, .. }) = self.files.opening.take()
         {
-            // open_file reports its own failures.
-            self.open_file(&file.name, file.bytes).ok();
+            self.issue(Command::OpenFile {
+                name: file.name,
+                bytes: file.bytes,
+            });
         }
         for file in self.files.io.receive(ctx) {
             match file {
                 Ok(file) => self.open_or_announce(ctx, file),
-                Err(message) => {
-                    self.fail(message);
-                }
+                Err(message) => self.report(message),
             }
         }
     }
@@ -233,7 +237,7 @@ impl EdgewiseApp {
             .on_disabled_hover_text("Open a mesh first");
         });
         if let Some(format) = chosen {
-            self.save_as(format).ok();
+            self.issue(Command::SaveAs(format));
         }
     }
 
@@ -241,9 +245,7 @@ impl EdgewiseApp {
     fn open_button_ui(&mut self, ui: &mut egui::Ui) {
         match self.files.io.open_ui(ui, OPEN_EXTENSIONS) {
             Some(Ok(file)) => self.open_or_announce(ui.ctx(), file),
-            Some(Err(message)) => {
-                self.fail(message);
-            }
+            Some(Err(message)) => self.report(message),
             None => {}
         }
     }
@@ -258,8 +260,10 @@ impl EdgewiseApp {
             });
             ctx.request_repaint();
         } else {
-            // open_file reports its own failures.
-            self.open_file(&file.name, file.bytes).ok();
+            self.issue(Command::OpenFile {
+                name: file.name,
+                bytes: file.bytes,
+            });
         }
     }
 

@@ -28,6 +28,7 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
+pub use app::command::{Command, CommandError, Reply};
 pub use app::{
     EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed,
     settings_ui::Presentation,

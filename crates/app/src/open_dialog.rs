@@ -3,7 +3,10 @@
 
 use edgewise_core::mesh::Structure;
 
-use crate::EdgewiseApp;
+use crate::{
+    EdgewiseApp,
+    app::command::{Command, CommandError},
+};
 
 /// A polygon file waiting for the student to choose a structure.
 pub struct StructureDialog {
@@ -81,8 +84,8 @@ impl EdgewiseApp {
         };
         match dialog.ui(ctx) {
             Some(Answer::Open(structure)) => {
-                // A failed load is reported by load_mesh; the dialog closes either way.
-                self.answer_structure_dialog(Some(structure)).ok();
+                // The dialog closes either way; a failed load is reported.
+                self.issue(Command::ChooseStructure(Some(structure)));
             }
             Some(Answer::Cancel) => {
                 self.files.dialog = None;
@@ -91,15 +94,17 @@ impl EdgewiseApp {
         }
     }
 
-    /// Answers the structure dialog: builds the waiting file as `structure`,
-    /// or with `None` cancels and keeps the current mesh. For the dialog's
-    /// buttons, the JavaScript API and tests.
-    pub fn answer_structure_dialog(&mut self, structure: Option<Structure>) -> Result<(), String> {
+    /// [`Command::ChooseStructure`]: builds the waiting file as
+    /// `structure`, or with `None` cancels and keeps the current mesh.
+    pub(crate) fn resolve_structure_dialog(
+        &mut self,
+        structure: Option<Structure>,
+    ) -> Result<(), CommandError> {
         let Some(dialog) = self.files.dialog.take() else {
-            return Err("no file is waiting for a structure".to_owned());
+            return Err("no file is waiting for a structure".into());
         };
         match structure {
-            Some(structure) => self.load_mesh(&dialog.bytes, &dialog.name, Some(structure)),
+            Some(structure) => self.open_bytes(&dialog.bytes, &dialog.name, Some(structure)),
             None => Ok(()),
         }
     }

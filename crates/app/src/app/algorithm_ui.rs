@@ -1,6 +1,7 @@
 //! The app's algorithm commands (shared by the UI and the JavaScript API),
 //! the Algorithm menu, the algorithm panel and the stepping keys.
 
+use crate::app::command::{Command, CommandError};
 use crate::platform::ALGORITHM_FILES;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::sync::Arc;
@@ -22,34 +23,41 @@ pub enum Argument {
 }
 
 impl EdgewiseApp {
-    /// Compiles `source` and adds its algorithms to the menu, replacing
-    /// same-named ones of the same structure. Returns their names.
-    pub fn load_algorithms(&mut self, source: &str, file: &str) -> Result<Vec<String>, String> {
+    /// [`Command::LoadAlgorithms`]: adds the algorithms of `source` to the
+    /// menu, replacing same-named ones of the same structure. Returns their
+    /// names.
+    pub(crate) fn add_algorithms(
+        &mut self,
+        source: &str,
+        file: &str,
+    ) -> Result<Vec<String>, CommandError> {
         let result = self.algorithms.library.load(source, file);
         self.show_algorithm_panel = true;
-        result.map_err(|message| self.fail(message))
+        Ok(result?)
     }
 
-    /// Starts the algorithm `name` for the open mesh's structure with the
-    /// given inputs; missing element inputs are then picked by clicking.
-    pub fn run_algorithm(&mut self, name: &str, args: &[(String, Argument)]) -> Result<(), String> {
+    /// [`Command::RunAlgorithm`]: starts `name` for the open mesh's
+    /// structure with the given inputs.
+    pub(crate) fn start_algorithm(
+        &mut self,
+        name: &str,
+        args: &[(String, Argument)],
+    ) -> Result<(), CommandError> {
         let Some(document) = &self.tab().document else {
-            return Err(self.fail("open a mesh before running an algorithm".to_owned()));
+            return Err("open a mesh before running an algorithm".into());
         };
         let structure = document.structure();
-        let algorithm = match self.algorithms.find(name, structure) {
-            Ok(algorithm) => algorithm,
-            Err(message) => return Err(self.fail(message)),
-        };
+        let algorithm = self.algorithms.find(name, structure)?;
         let mut inputs = Vec::with_capacity(args.len());
         for (arg_name, arg) in args {
             let Some(param) = algorithm.params().find(|p| p.name == *arg_name) else {
                 let names: Vec<&str> = algorithm.params().map(|p| p.name.as_str()).collect();
-                return Err(self.fail(format!(
+                return Err(format!(
                     "{} has no parameter `{arg_name}` (its parameters: {})",
                     algorithm.name,
                     names.join(", ")
-                )));
+                )
+                .into());
             };
             let (number, boolean) = match arg {
                 Argument::Number(n) => (Some(*n), None),
@@ -60,15 +68,16 @@ impl EdgewiseApp {
                     Argument::Number(n) => n.to_string(),
                     Argument::Boolean(b) => b.to_string(),
                 };
-                return Err(self.fail(format!(
+                return Err(format!(
                     "parameter `{arg_name}` of {} is {}, which `{what}` is not",
                     algorithm.name,
                     type_phrase(param.ty)
-                )));
+                )
+                .into());
             };
             inputs.push((arg_name.clone(), value));
         }
-        self.select(None).ok();
+        self.set_selection(None)?;
         self.show_algorithm_panel = true;
         self.algorithm_tab = AlgorithmTab::Run;
         let tab = &mut self.tabs[self.active_tab];
@@ -78,7 +87,7 @@ impl EdgewiseApp {
                 .begin(Arc::clone(&algorithm), &inputs, document.mesh()),
             None => Ok(()),
         };
-        result.map_err(|message| self.fail(message))
+        Ok(result?)
     }
 
     /// Every algorithm known, for `window.edgewise.algorithms()`.
@@ -106,54 +115,13 @@ impl EdgewiseApp {
             .collect()
     }
 
-    /// Steps the trace forward `n` operations.
-    pub fn trace_step(&mut self, n: usize) -> Result<(), String> {
-        let result = self.tab_mut().run.step(n);
-        result.map_err(|message| self.fail(message))
-    }
-
-    /// Steps the trace back `n` operations.
-    pub fn trace_back(&mut self, n: usize) -> Result<(), String> {
-        let result = self.tab_mut().run.back(n);
-        result.map_err(|message| self.fail(message))
-    }
-
-    /// Goes to step `k` (clamped to the trace).
-    pub fn trace_goto(&mut self, k: usize) -> Result<(), String> {
-        let result = self.tab_mut().run.goto(k);
-        result.map_err(|message| self.fail(message))
-    }
-
-    /// Stops the running algorithm.
-    pub fn abort_algorithm(&mut self) -> Result<(), String> {
-        let result = self.tab_mut().run.abort();
-        result.map_err(|message| self.fail(message))
-    }
-
-    /// Toggles a breakpoint on a source line of the running algorithm.
-    pub fn toggle_breakpoint(&mut self, line: u32) {
-        self.algorithms
-            .toggle_breakpoint(&mut self.tabs[self.active_tab].run, line);
-    }
-
     /// A click on an element in the view or the tables: an input for a
     /// waiting algorithm, nothing while a trace is shown, else a selection.
     pub(super) fn element_clicked(&mut self, element: Option<ElementRef>) {
         match (&self.tab().run.run, element) {
-            (Run::Picking(_), Some(element)) => {
-                let tab = &mut self.tabs[self.active_tab];
-                let result = match &tab.document {
-                    Some(document) => tab.run.pick(element, document.mesh()),
-                    None => Ok(()),
-                };
-                if let Err(message) = result {
-                    self.fail(message);
-                }
-            }
+            (Run::Picking(_), Some(element)) => self.issue(Command::Pick(element)),
             (Run::Picking(_) | Run::Tracing(_), _) => {}
-            (Run::Idle, element) => {
-                self.select(element).ok();
-            }
+            (Run::Idle, element) => self.issue(Command::Select(element)),
         }
     }
 
@@ -216,17 +184,16 @@ impl EdgewiseApp {
                 i.time,
             )
         });
-        if forward {
-            self.tab_mut().run.step(1).ok();
-        }
-        if back {
-            self.tab_mut().run.back(1).ok();
-        }
-        if home {
-            self.tab_mut().run.goto(0).ok();
-        }
-        if end {
-            self.tab_mut().run.goto(usize::MAX).ok();
+        let commands = [
+            (forward, Command::Step(1)),
+            (back, Command::Back(1)),
+            (home, Command::Goto(0)),
+            (end, Command::Goto(usize::MAX)),
+        ];
+        for (pressed, command) in commands {
+            if pressed {
+                self.issue(command);
+            }
         }
         if play {
             let playing = self.tab_mut().run.session().is_some_and(|s| s.playing);
@@ -279,7 +246,10 @@ impl EdgewiseApp {
             }
         });
         if let Some(name) = chosen {
-            self.run_algorithm(&name, &[]).ok();
+            self.issue(Command::RunAlgorithm {
+                name,
+                args: Vec::new(),
+            });
         }
         if write {
             self.show_algorithm_panel = true;
@@ -295,7 +265,8 @@ impl EdgewiseApp {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if ui.button("✖").on_hover_text("Close the panel").clicked() {
                     self.show_algorithm_panel = false;
-                    self.tab_mut().run.abort().ok();
+                    // Closing the panel with nothing running is fine.
+                    let _idle = self.tab_mut().run.abort();
                 }
             });
         });
@@ -308,7 +279,7 @@ impl EdgewiseApp {
                     .algorithms
                     .panel_ui(&mut tab.run, ui, &self.theme, mesh)
                 {
-                    self.fail(message);
+                    self.report(message);
                 }
             }
             AlgorithmTab::Write => {
@@ -325,9 +296,7 @@ impl EdgewiseApp {
                             .write(&editor.file_name, editor.text.as_bytes())
                         {
                             Ok(said) => editor.status = Some(said),
-                            Err(message) => {
-                                self.fail(message);
-                            }
+                            Err(message) => self.report(message),
                         }
                     }
                     None => {}
@@ -340,10 +309,14 @@ impl EdgewiseApp {
 impl EdgewiseApp {
     /// Puts an opened `.alg` file in the algorithm editor and compiles it:
     /// its algorithms join the menu, or its errors are marked at their lines.
-    pub(crate) fn open_algorithm_file(&mut self, name: &str, bytes: &[u8]) -> Result<(), String> {
+    pub(crate) fn open_algorithm_file(
+        &mut self,
+        name: &str,
+        bytes: &[u8],
+    ) -> Result<(), CommandError> {
         let text = match edgewise_core::lang::source_text(bytes, Some(name)) {
             Ok(text) => text,
-            Err(rendered) => return Err(self.fail(rendered.trim_end().to_owned())),
+            Err(rendered) => return Err(rendered.trim_end().into()),
         };
         let editor = &mut self.algorithms.editor;
         editor.file_name = name.to_owned();
@@ -359,9 +332,7 @@ impl EdgewiseApp {
         match self.files.io.pick(ctx, ALGORITHM_FILES) {
             Ok(None) => {}
             Ok(Some(hint)) => self.algorithms.editor.status = Some(hint.to_owned()),
-            Err(message) => {
-                self.fail(message);
-            }
+            Err(message) => self.report(message),
         }
     }
 }

@@ -56,23 +56,23 @@ impl EdgewiseApp {
                 }) => self.load_mesh(&bytes, &name, structure),
                 Some(FetchedMesh {
                     bytes: Err(err), ..
-                }) => Err(format!("mesh={path}: {err}")),
-                None => Err(format!("mesh={path}: the file was not fetched")),
+                }) => Err(format!("mesh={path}: {err}").into()),
+                None => Err(format!("mesh={path}: the file was not fetched").into()),
             },
         };
         if let Err(message) = opened {
-            messages.push(message);
+            messages.push(message.into());
         } else if link.mesh.is_none()
             && let Some(structure) = structure
             && let Err(message) = self.switch_structure(structure)
         {
-            messages.push(message);
+            messages.push(message.into());
         }
 
         if let Some(source) = &link.algorithm_source
             && let Err(message) = self.load_algorithms(source, "link.alg")
         {
-            messages.push(message);
+            messages.push(message.into());
         }
         if let Some(name) = &link.algorithm {
             match self.run_algorithm(name, &link.args) {
@@ -129,7 +129,7 @@ impl EdgewiseApp {
         if settings != self.settings {
             let (settings, message) = settings.sanitized();
             if let Some(message) = message {
-                self.fail(message);
+                self.report(message);
             }
             self.theme = settings.theme();
             self.algorithms.code_size = settings.code_size;

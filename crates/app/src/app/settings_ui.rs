@@ -34,7 +34,7 @@ impl EdgewiseApp {
     pub fn set_settings(&mut self, settings: Settings) {
         let (settings, message) = settings.sanitized();
         if let Some(message) = message {
-            self.fail(message);
+            self.report(message);
         }
         self.theme = settings.theme();
         self.algorithms.code_size = settings.code_size;

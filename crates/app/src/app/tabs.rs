@@ -6,6 +6,7 @@ use edgewise_core::mesh::Structure;
 use edgewise_core::schema::ElementKind;
 
 use super::{EdgewiseApp, twin::Twin};
+use crate::app::command::{Command, CommandError};
 use crate::{
     algorithm::AlgorithmRun,
     document::Document,
@@ -75,35 +76,36 @@ impl EdgewiseApp {
         &mut self.tabs[self.active_tab]
     }
 
-    /// Opens an empty tab and switches to it; returns its index.
-    pub fn new_tab(&mut self) -> usize {
+    /// [`Command::NewTab`]: opens an empty tab and switches to it; returns
+    /// its index.
+    pub(crate) fn open_tab(&mut self) -> usize {
         let structure = self.tab().structure;
         self.tabs
             .push(Tab::new(self.render_state.as_ref(), structure));
-        let index = self.tabs.len() - 1;
-        self.switch_tab(index).ok();
-        index
+        self.active_tab = self.tabs.len() - 1;
+        self.active_tab
     }
 
-    /// Makes tab `index` the active one.
-    pub fn switch_tab(&mut self, index: usize) -> Result<(), String> {
+    /// [`Command::SwitchTab`].
+    pub(crate) fn activate_tab(&mut self, index: usize) -> Result<(), CommandError> {
         if index >= self.tabs.len() {
-            return Err(self.fail(format!(
+            return Err(format!(
                 "there is no tab {index} (there are {}, numbered from 0)",
                 self.tabs.len()
-            )));
+            )
+            .into());
         }
         self.active_tab = index;
         Ok(())
     }
 
-    /// Closes tab `index`; the last tab cannot be closed.
-    pub fn close_tab(&mut self, index: usize) -> Result<(), String> {
+    /// [`Command::CloseTab`]: the last tab cannot be closed.
+    pub(crate) fn remove_tab(&mut self, index: usize) -> Result<(), CommandError> {
         if self.tabs.len() <= 1 {
-            return Err(self.fail("the last tab cannot be closed".to_owned()));
+            return Err("the last tab cannot be closed".into());
         }
         if index >= self.tabs.len() {
-            return Err(self.fail(format!("there is no tab {index}")));
+            return Err(format!("there is no tab {index}").into());
         }
         if index == self.active_tab {
             let neighbour = if index + 1 < self.tabs.len() {
@@ -111,7 +113,7 @@ impl EdgewiseApp {
             } else {
                 index - 1
             };
-            self.switch_tab(neighbour)?;
+            self.activate_tab(neighbour)?;
         }
         self.tabs.remove(index);
         if index < self.active_tab {
@@ -161,14 +163,14 @@ impl EdgewiseApp {
             new = ui.button("+").on_hover_text("A new tab").clicked();
         });
         if new {
-            self.new_tab();
+            self.issue(Command::NewTab);
             return;
         }
         if let Some(i) = switch {
-            self.switch_tab(i).ok();
+            self.issue(Command::SwitchTab(i));
         }
         if let Some(i) = close {
-            self.close_tab(i).ok();
+            self.issue(Command::CloseTab(i));
         }
     }
 }

@@ -7,6 +7,7 @@ use edgewise_core::mesh::EdgeCorrespondence;
 use edgewise_core::schema::ElementRef;
 
 use super::{EdgewiseApp, element_of};
+use crate::app::command::CommandError;
 use crate::{
     document::{Document, map_element},
     paint::Paint,
@@ -28,8 +29,8 @@ pub(crate) struct Twin {
 }
 
 impl EdgewiseApp {
-    /// Turns the side-by-side view on or off.
-    pub fn set_side_by_side(&mut self, on: bool) -> Result<(), String> {
+    /// [`Command::SetSideBySide`].
+    pub(crate) fn show_twin(&mut self, on: bool) -> Result<(), CommandError> {
         self.side_by_side = on;
         if !on {
             self.tab_mut().twin = None;
@@ -51,7 +52,7 @@ impl EdgewiseApp {
     }
 
     /// Rebuilds the twin when the mesh changed and copies the selection over.
-    fn sync_twin(&mut self) -> Result<(), String> {
+    fn sync_twin(&mut self) -> Result<(), CommandError> {
         let tab = &mut self.tabs[self.active_tab];
         let Some(document) = &tab.document else {
             tab.twin = None;
@@ -67,7 +68,7 @@ impl EdgewiseApp {
                 Err(message) => {
                     tab.twin = None;
                     self.side_by_side = false;
-                    return Err(self.fail(format!("side by side: {message}")));
+                    return Err(format!("side by side: {message}").into());
                 }
             };
             let mut view = View3d::new(self.render_state.as_ref());
@@ -98,7 +99,8 @@ impl EdgewiseApp {
 
     /// The twin's view, beside the main one; a click there selects in both.
     pub(super) fn twin_view_ui(&mut self, ui: &mut egui::Ui) {
-        if self.sync_twin().is_err() {
+        if let Err(error) = self.sync_twin() {
+            self.report(error.to_string());
             return;
         }
         let theme_key = self.theme.key();

@@ -1,0 +1,318 @@
+//! One way in for everything a user can ask of the app. Menus, keys, the
+//! JavaScript API and course links all build a [`Command`] and hand it to
+//! [`EdgewiseApp::execute`], which carries it out on the active tab and, if
+//! it is refused, records why in one place: the tab's error panel and
+//! `state().error`.
+
+use std::fmt;
+
+use edgewise_core::{mesh::Structure, schema::ElementRef};
+
+use crate::{Argument, EdgewiseApp, files::SaveFormat};
+
+/// Something the user asked the app to do.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Opens mesh text or bytes; `name`'s extension (or the content) gives
+    /// the format, and `structure` the structure to build PLY and OBJ as.
+    LoadMesh {
+        bytes: Vec<u8>,
+        name: String,
+        structure: Option<Structure>,
+    },
+    /// Opens a built-in sample by name (a file stem in meshes/).
+    LoadSample {
+        name: String,
+        structure: Option<Structure>,
+    },
+    /// A file from disk, a drop or the picker: `.alg` files go to the
+    /// algorithm editor, table files open as their structure, PLY and OBJ
+    /// ask which structure to build.
+    OpenFile {
+        name: String,
+        bytes: Vec<u8>,
+    },
+    /// Answers the structure dialog; `None` cancels it.
+    ChooseStructure(Option<Structure>),
+    /// Selects an element, or clears the selection.
+    Select(Option<ElementRef>),
+    /// Converts the open mesh, and builds later PLY and OBJ loads, as
+    /// `structure`.
+    SetStructure(Structure),
+    /// Compiles algorithms and adds them to the menu.
+    LoadAlgorithms {
+        source: String,
+        file: String,
+    },
+    /// Starts an algorithm with the given inputs; missing element inputs
+    /// are then picked by clicking.
+    RunAlgorithm {
+        name: String,
+        args: Vec<(String, Argument)>,
+    },
+    /// Gives the algorithm waiting for inputs a picked element.
+    Pick(ElementRef),
+    /// Steps the trace forward.
+    Step(usize),
+    /// Steps the trace back.
+    Back(usize),
+    /// Goes to a step (clamped to the trace).
+    Goto(usize),
+    /// Stops the running algorithm.
+    Abort,
+    /// Sets or clears a breakpoint on a source line of the running algorithm.
+    ToggleBreakpoint(u32),
+    NewTab,
+    SwitchTab(usize),
+    /// Closes a tab; the last one stays.
+    CloseTab(usize),
+    /// Shows the mesh as both structures side by side, or one.
+    SetSideBySide(bool),
+    /// Saves the open mesh in a format: a download in the browser, a file
+    /// natively.
+    SaveAs(SaveFormat),
+}
+
+/// What a command that succeeded has to say.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reply {
+    Done,
+    /// The names of the algorithms loaded.
+    Algorithms(Vec<String>),
+    /// The index of the tab opened.
+    Tab(usize),
+}
+
+/// Why a command was refused, in one or more sentences that name the place
+/// (`file:line:column`, the element, the parameter).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CommandError(String);
+
+impl CommandError {
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl fmt::Display for CommandError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for CommandError {}
+
+impl std::ops::Deref for CommandError {
+    type Target = str;
+
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl From<String> for CommandError {
+    fn from(message: String) -> Self {
+        Self(message)
+    }
+}
+
+impl From<&str> for CommandError {
+    fn from(message: &str) -> Self {
+        Self(message.to_owned())
+    }
+}
+
+impl From<CommandError> for String {
+    fn from(error: CommandError) -> Self {
+        error.0
+    }
+}
+
+impl EdgewiseApp {
+    /// Carries out `command` on the active tab and asks for a frame to show
+    /// it. A refusal is recorded as the tab's error, then returned.
+    pub fn execute(&mut self, command: Command) -> Result<Reply, CommandError> {
+        let result = self.dispatch(command);
+        if let Err(error) = &result {
+            self.report(error.to_string());
+        }
+        self.request_repaint();
+        result
+    }
+
+    /// [`Self::execute`] for menus and keys, whose refusals the error panel
+    /// shows.
+    pub(crate) fn issue(&mut self, command: Command) {
+        // Recorded by execute; nothing else to do with it here.
+        let _reported = self.execute(command);
+    }
+
+    fn dispatch(&mut self, command: Command) -> Result<Reply, CommandError> {
+        let done = |result: Result<(), CommandError>| result.map(|()| Reply::Done);
+        match command {
+            Command::LoadMesh {
+                bytes,
+                name,
+                structure,
+            } => done(self.open_bytes(&bytes, &name, structure)),
+            Command::LoadSample { name, structure } => done(self.open_sample(&name, structure)),
+            Command::OpenFile { name, bytes } => done(self.open_named_file(&name, bytes)),
+            Command::ChooseStructure(structure) => done(self.resolve_structure_dialog(structure)),
+            Command::Select(element) => done(self.set_selection(element)),
+            Command::SetStructure(structure) => done(self.convert_to(structure)),
+            Command::LoadAlgorithms { source, file } => {
+                self.add_algorithms(&source, &file).map(Reply::Algorithms)
+            }
+            Command::RunAlgorithm { name, args } => done(self.start_algorithm(&name, &args)),
+            Command::Pick(element) => {
+                let tab = &mut self.tabs[self.active_tab];
+                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
+                let Some(mesh) = mesh else {
+                    return Err("no mesh is open".into());
+                };
+                done(tab.run.pick(element, mesh).map_err(CommandError::from))
+            }
+            Command::Step(n) => done(self.tab_mut().run.step(n).map_err(CommandError::from)),
+            Command::Back(n) => done(self.tab_mut().run.back(n).map_err(CommandError::from)),
+            Command::Goto(k) => done(self.tab_mut().run.goto(k).map_err(CommandError::from)),
+            Command::Abort => done(self.tab_mut().run.abort().map_err(CommandError::from)),
+            Command::ToggleBreakpoint(line) => {
+                let run = &mut self.tabs[self.active_tab].run;
+                self.algorithms.toggle_breakpoint(run, line);
+                Ok(Reply::Done)
+            }
+            Command::NewTab => Ok(Reply::Tab(self.open_tab())),
+            Command::SwitchTab(index) => done(self.activate_tab(index)),
+            Command::CloseTab(index) => done(self.remove_tab(index)),
+            Command::SetSideBySide(on) => done(self.show_twin(on)),
+            Command::SaveAs(format) => done(self.save_as(format)),
+        }
+    }
+
+    /// Shorthand for [`Command::LoadMesh`]. On failure the current mesh
+    /// stays and the message is kept in `state().error`.
+    pub fn load_mesh(
+        &mut self,
+        bytes: &[u8],
+        name: &str,
+        structure: Option<Structure>,
+    ) -> Result<(), CommandError> {
+        self.execute(Command::LoadMesh {
+            bytes: bytes.to_vec(),
+            name: name.to_owned(),
+            structure,
+        })
+        .map(drop)
+    }
+
+    /// Shorthand for [`Command::LoadSample`].
+    pub fn load_sample(
+        &mut self,
+        name: &str,
+        structure: Option<Structure>,
+    ) -> Result<(), CommandError> {
+        self.execute(Command::LoadSample {
+            name: name.to_owned(),
+            structure,
+        })
+        .map(drop)
+    }
+
+    /// Shorthand for [`Command::OpenFile`].
+    pub fn open_file(&mut self, name: &str, bytes: Vec<u8>) -> Result<(), CommandError> {
+        self.execute(Command::OpenFile {
+            name: name.to_owned(),
+            bytes,
+        })
+        .map(drop)
+    }
+
+    /// Shorthand for [`Command::ChooseStructure`].
+    pub fn answer_structure_dialog(
+        &mut self,
+        structure: Option<Structure>,
+    ) -> Result<(), CommandError> {
+        self.execute(Command::ChooseStructure(structure)).map(drop)
+    }
+
+    /// Shorthand for [`Command::Select`].
+    pub fn select(&mut self, element: Option<ElementRef>) -> Result<(), CommandError> {
+        self.execute(Command::Select(element)).map(drop)
+    }
+
+    /// Shorthand for [`Command::SetStructure`].
+    pub fn switch_structure(&mut self, structure: Structure) -> Result<(), CommandError> {
+        self.execute(Command::SetStructure(structure)).map(drop)
+    }
+
+    /// Shorthand for [`Command::LoadAlgorithms`]; returns the names loaded.
+    pub fn load_algorithms(
+        &mut self,
+        source: &str,
+        file: &str,
+    ) -> Result<Vec<String>, CommandError> {
+        match self.execute(Command::LoadAlgorithms {
+            source: source.to_owned(),
+            file: file.to_owned(),
+        })? {
+            Reply::Algorithms(names) => Ok(names),
+            _ => Ok(Vec::new()),
+        }
+    }
+
+    /// Shorthand for [`Command::RunAlgorithm`].
+    pub fn run_algorithm(
+        &mut self,
+        name: &str,
+        args: &[(String, Argument)],
+    ) -> Result<(), CommandError> {
+        self.execute(Command::RunAlgorithm {
+            name: name.to_owned(),
+            args: args.to_vec(),
+        })
+        .map(drop)
+    }
+
+    /// Shorthand for [`Command::Step`].
+    pub fn trace_step(&mut self, n: usize) -> Result<(), CommandError> {
+        self.execute(Command::Step(n)).map(drop)
+    }
+
+    /// Shorthand for [`Command::Back`].
+    pub fn trace_back(&mut self, n: usize) -> Result<(), CommandError> {
+        self.execute(Command::Back(n)).map(drop)
+    }
+
+    /// Shorthand for [`Command::Goto`].
+    pub fn trace_goto(&mut self, k: usize) -> Result<(), CommandError> {
+        self.execute(Command::Goto(k)).map(drop)
+    }
+
+    /// Shorthand for [`Command::Abort`].
+    pub fn abort_algorithm(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::Abort).map(drop)
+    }
+
+    /// Shorthand for [`Command::NewTab`]; returns the new tab's index.
+    pub fn new_tab(&mut self) -> usize {
+        match self.execute(Command::NewTab) {
+            Ok(Reply::Tab(index)) => index,
+            _ => self.active_tab,
+        }
+    }
+
+    /// Shorthand for [`Command::SwitchTab`].
+    pub fn switch_tab(&mut self, index: usize) -> Result<(), CommandError> {
+        self.execute(Command::SwitchTab(index)).map(drop)
+    }
+
+    /// Shorthand for [`Command::CloseTab`].
+    pub fn close_tab(&mut self, index: usize) -> Result<(), CommandError> {
+        self.execute(Command::CloseTab(index)).map(drop)
+    }
+
+    /// Shorthand for [`Command::SetSideBySide`].
+    pub fn set_side_by_side(&mut self, on: bool) -> Result<(), CommandError> {
+        self.execute(Command::SetSideBySide(on)).map(drop)
+    }
+}

@@ -1,0 +1,388 @@
+//! `window.edgewise`, generated from two tables.
+//!
+//! - [`COMMANDS`]: each entry reads its JavaScript arguments into a
+//!   [`Command`]; every command returns a Promise that resolves to `null`
+//!   when done and rejects with an `Error` whose message says what went
+//!   wrong (a bad argument names the call, the argument and what was
+//!   expected, before anything is read or changed).
+//! - [`QUERIES`]: each entry returns a value (`state`, `algorithms`,
+//!   `shareUrl`) or, for `exportMesh`, a Promise of one.
+
+use eframe::wasm_bindgen::{JsValue, closure::Closure};
+
+use edgewise_core::{
+    formats::{Format, MAX_FILE_BYTES},
+    lang::MAX_SOURCE_BYTES,
+    mesh::Structure,
+    schema::{ElementKind, ElementRef},
+};
+
+use super::arguments::{
+    MAX_NAME_CHARS, arguments, check_options, expected, option_string, shown, structure_option,
+    text_argument, whole_number,
+};
+use super::{after_a_paint, with_app};
+use crate::{
+    Command, EdgewiseApp,
+    files::{ANNOUNCE_BYTES, SaveFormat, SavedFile, opening_label},
+    platform::js_error_text,
+};
+
+/// A command of the API: its name, the call as messages show it, and how
+/// its (at most two) arguments become a [`Command`].
+struct CommandEntry {
+    name: &'static str,
+    call: &'static str,
+    read: fn(&'static str, &JsValue, &JsValue) -> Result<Command, String>,
+}
+
+/// Every command, in the order docs/embedding.md lists them.
+const COMMANDS: &[CommandEntry] = &[
+    CommandEntry {
+        name: "loadMesh",
+        call: "loadMesh(text, options)",
+        read: read_load_mesh,
+    },
+    CommandEntry {
+        name: "loadSample",
+        call: "loadSample(name, options)",
+        read: |call, name, options| {
+            let name = text_argument(call, "name", name, MAX_NAME_CHARS)?;
+            check_options(call, options, &["structure"])?;
+            let structure = structure_option(call, options)?;
+            Ok(Command::LoadSample { name, structure })
+        },
+    },
+    CommandEntry {
+        name: "select",
+        call: "select(kind, id)",
+        read: |call, kind, id| {
+            let kind = kind
+                .as_string()
+                .and_then(|k| ElementKind::parse(&k))
+                .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
+            let id = whole_number(call, "id", id)?;
+            let id = u32::try_from(id)
+                .map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
+            Ok(Command::Select(Some(ElementRef::new(kind, id))))
+        },
+    },
+    CommandEntry {
+        name: "clearSelection",
+        call: "clearSelection()",
+        read: |_, _, _| Ok(Command::Select(None)),
+    },
+    CommandEntry {
+        name: "setStructure",
+        call: "setStructure(name)",
+        read: |call, name, _| {
+            let structure = structure_name(name)
+                .ok_or_else(|| expected(call, "name", "'winged' or 'half'", name))?;
+            Ok(Command::SetStructure(structure))
+        },
+    },
+    CommandEntry {
+        name: "chooseStructure",
+        call: "chooseStructure(name)",
+        read: |call, name, _| {
+            if name.is_null() {
+                return Ok(Command::ChooseStructure(None));
+            }
+            let structure = structure_name(name)
+                .ok_or_else(|| expected(call, "name", "'winged', 'half' or null", name))?;
+            Ok(Command::ChooseStructure(Some(structure)))
+        },
+    },
+    CommandEntry {
+        name: "loadAlgorithms",
+        call: "loadAlgorithms(source, file)",
+        read: |call, source, file| {
+            let source = text_argument(call, "source", source, MAX_SOURCE_BYTES)?;
+            let file = if file.is_undefined() {
+                "page.alg".to_owned()
+            } else {
+                text_argument(call, "file", file, MAX_NAME_CHARS)?
+            };
+            Ok(Command::LoadAlgorithms { source, file })
+        },
+    },
+    CommandEntry {
+        name: "run",
+        call: "run(name, args)",
+        read: |call, name, args| {
+            let name = text_argument(call, "name", name, MAX_NAME_CHARS)?;
+            let args = arguments(call, args)?;
+            Ok(Command::RunAlgorithm { name, args })
+        },
+    },
+    CommandEntry {
+        name: "step",
+        call: "step(n)",
+        read: |call, n, _| Ok(Command::Step(count(call, "n", n, Some(1))?)),
+    },
+    CommandEntry {
+        name: "back",
+        call: "back(n)",
+        read: |call, n, _| Ok(Command::Back(count(call, "n", n, Some(1))?)),
+    },
+    CommandEntry {
+        name: "goto",
+        call: "goto(k)",
+        read: |call, k, _| Ok(Command::Goto(count(call, "k", k, None)?)),
+    },
+    CommandEntry {
+        name: "abort",
+        call: "abort()",
+        read: |_, _, _| Ok(Command::Abort),
+    },
+    CommandEntry {
+        name: "newTab",
+        call: "newTab()",
+        read: |_, _, _| Ok(Command::NewTab),
+    },
+    CommandEntry {
+        name: "switchTab",
+        call: "switchTab(index)",
+        read: |call, index, _| Ok(Command::SwitchTab(count(call, "index", index, None)?)),
+    },
+    CommandEntry {
+        name: "closeTab",
+        call: "closeTab(index)",
+        read: |call, index, _| Ok(Command::CloseTab(count(call, "index", index, None)?)),
+    },
+    CommandEntry {
+        name: "setSideBySide",
+        call: "setSideBySide(on)",
+        read: |call, on, _| {
+            let on = on
+                .as_bool()
+                .ok_or_else(|| expected(call, "on", "true or false", on))?;
+            Ok(Command::SetSideBySide(on))
+        },
+    },
+];
+
+/// A query of the API: its name and how it answers.
+struct QueryEntry {
+    name: &'static str,
+    answer: fn(&eframe::WebRunner, &JsValue) -> Result<JsValue, JsValue>,
+}
+
+/// Every query.
+const QUERIES: &[QueryEntry] = &[
+    QueryEntry {
+        name: "state",
+        answer: |runner, _| json(runner, |app| serde_json::to_string(&app.state())),
+    },
+    QueryEntry {
+        name: "algorithms",
+        answer: |runner, _| json(runner, |app| serde_json::to_string(&app.algorithm_list())),
+    },
+    QueryEntry {
+        name: "shareUrl",
+        answer: |runner, _| {
+            let base = crate::platform::page_base();
+            with_app(runner, |app| app.share_url(&base))?
+                .map(|url| JsValue::from_str(&url))
+                .map_err(|message| JsValue::from(js_sys::Error::new(&message)))
+        },
+    },
+    QueryEntry {
+        name: "exportMesh",
+        answer: |runner, format| Ok(export(runner, format).into()),
+    },
+];
+
+/// `loadMesh(text, options)`: the text and how to read it.
+fn read_load_mesh(
+    call: &'static str,
+    text: &JsValue,
+    options: &JsValue,
+) -> Result<Command, String> {
+    let text = text_argument(call, "text", text, MAX_FILE_BYTES)?;
+    check_options(call, options, &["format", "structure"])?;
+    let format = option_string(call, options, "format")?;
+    if let Some(format) = &format
+        && Format::from_name(&format!("x.{format}")).is_none()
+    {
+        return Err(format!(
+            "{call}: options.format must be 'obj', 'ply', 'wtb' or 'htb', not '{}'",
+            shown(format)
+        ));
+    }
+    let structure = structure_option(call, options)?;
+    // Without a format the content decides (a pasted file has no name).
+    let name = format.map_or_else(|| "pasted".to_owned(), |f| format!("pasted.{f}"));
+    Ok(Command::LoadMesh {
+        bytes: text.into_bytes(),
+        name,
+        structure,
+    })
+}
+
+/// A structure's link name (`'winged'`, `'half'`, …), if `value` is one.
+fn structure_name(value: &JsValue) -> Option<Structure> {
+    value
+        .as_string()
+        .and_then(|name| Structure::parse_link_name(&name))
+}
+
+/// A count or index argument; `default` when it is left out, if it may be.
+fn count(
+    call: &str,
+    argument: &str,
+    value: &JsValue,
+    default: Option<u64>,
+) -> Result<usize, String> {
+    let n = match default {
+        Some(default) if value.is_undefined() => default,
+        _ => whole_number(call, argument, value)?,
+    };
+    Ok(usize::try_from(n).unwrap_or(usize::MAX))
+}
+
+/// Defines `window.edgewise` from [`COMMANDS`] and [`QUERIES`].
+pub(super) fn install(runner: &eframe::WebRunner) -> Result<(), JsValue> {
+    let window = web_sys::window().ok_or("no window")?;
+    let api = js_sys::Object::new();
+    let backend = with_app(runner, |app| app.backend().as_str())?;
+    js_sys::Reflect::set(&api, &"version".into(), &edgewise_core::VERSION.into())?;
+    js_sys::Reflect::set(&api, &"backend".into(), &backend.into())?;
+    for entry in COMMANDS {
+        let runner = runner.clone();
+        let function = Closure::<dyn Fn(JsValue, JsValue) -> js_sys::Promise>::new(
+            move |first: JsValue, second: JsValue| match (entry.read)(entry.call, &first, &second) {
+                Ok(command) => perform(&runner, command),
+                Err(message) => settle(Err(message)),
+            },
+        );
+        set_fn(&api, entry.name, &function.into_js_value())?;
+    }
+    for entry in QUERIES {
+        let runner = runner.clone();
+        let function = Closure::<dyn Fn(JsValue) -> Result<JsValue, JsValue>>::new(
+            move |argument: JsValue| (entry.answer)(&runner, &argument),
+        );
+        set_fn(&api, entry.name, &function.into_js_value())?;
+    }
+    js_sys::Reflect::set(&window, &"edgewise".into(), &api)?;
+    Ok(())
+}
+
+/// Carries out a command and settles its Promise. A large `loadMesh` text
+/// first shows that it is being opened, and is read once that has been
+/// painted, since reading it blocks the page.
+fn perform(runner: &eframe::WebRunner, command: Command) -> js_sys::Promise {
+    let large = matches!(&command, Command::LoadMesh { bytes, .. } if bytes.len() > ANNOUNCE_BYTES);
+    if !large {
+        return settle(execute(runner, command));
+    }
+    let label = match &command {
+        Command::LoadMesh { bytes, .. } => opening_label("the text", bytes.len()),
+        _ => String::new(),
+    };
+    if let Err(message) = with_app(runner, |app| app.set_busy(Some(label))) {
+        return settle(Err(js_error_text(&message)));
+    }
+    let runner = runner.clone();
+    wasm_bindgen_futures::future_to_promise(async move {
+        after_a_paint().await;
+        let _shown = with_app(&runner, |app| app.set_busy(None));
+        execute(&runner, command)
+            .map(|()| JsValue::NULL)
+            .map_err(|message| js_sys::Error::new(&message).into())
+    })
+}
+
+/// Runs a command on the app; the app records a refusal and asks for a frame.
+fn execute(runner: &eframe::WebRunner, command: Command) -> Result<(), String> {
+    with_app(runner, |app| app.execute(command))
+        .map_err(|err| js_error_text(&err))?
+        .map(drop)
+        .map_err(String::from)
+}
+
+/// A query's answer serialized by the app, as a JavaScript value.
+fn json(
+    runner: &eframe::WebRunner,
+    serialize: impl FnOnce(&EdgewiseApp) -> serde_json::Result<String>,
+) -> Result<JsValue, JsValue> {
+    let text = with_app(runner, |app| serialize(app))?
+        .map_err(|err| JsValue::from_str(&err.to_string()))?;
+    js_sys::JSON::parse(&text)
+}
+
+/// `exportMesh(format)`: the open mesh written as `format`.
+fn export(runner: &eframe::WebRunner, format: &JsValue) -> js_sys::Promise {
+    let result = (|| {
+        let format = format
+            .as_string()
+            .and_then(|f| SaveFormat::parse(&f))
+            .ok_or_else(|| {
+                expected(
+                    "exportMesh(format)",
+                    "format",
+                    "'wtb', 'htb', 'ply', 'ply-binary' or 'obj'",
+                    format,
+                )
+            })?;
+        let saved =
+            with_app(runner, |app| app.export(format)).map_err(|err| js_error_text(&err))??;
+        exported_object(&saved, format.is_binary()).map_err(|err| js_error_text(&err))
+    })();
+    settle_with(result)
+}
+
+/// Puts a function on the API object. The API lives as long as the page, so
+/// closures are handed to JavaScript for good.
+fn set_fn(api: &js_sys::Object, name: &str, function: &JsValue) -> Result<(), JsValue> {
+    js_sys::Reflect::set(api, &name.into(), function).map(|_| ())
+}
+
+/// A command's Promise: resolves to null on success, rejects with an Error.
+fn settle(result: Result<(), String>) -> js_sys::Promise {
+    settle_with(result.map(|()| JsValue::NULL))
+}
+
+/// A command's Promise: resolves to the value, or rejects with an Error.
+fn settle_with(result: Result<JsValue, String>) -> js_sys::Promise {
+    match result {
+        Ok(value) => js_sys::Promise::resolve(&value),
+        Err(message) => js_sys::Promise::reject(&js_sys::Error::new(&message)),
+    }
+}
+
+/// `exportMesh`'s answer: `{name, text}`, or `{name, base64}` for binary output.
+fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> {
+    let object = js_sys::Object::new();
+    js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
+    let (key, value) = if binary {
+        ("base64", base64(&saved.bytes))
+    } else {
+        ("text", String::from_utf8_lossy(&saved.bytes).into_owned())
+    };
+    js_sys::Reflect::set(&object, &key.into(), &value.into())?;
+    Ok(object.into())
+}
+
+/// Standard base64 with padding, so binary files cross the JSON boundary.
+fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
+        let n = u32::from(b[0]) << 16 | u32::from(b[1]) << 8 | u32::from(b[2]);
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(char::from(ALPHABET[(n >> (18 - 6 * i)) as usize & 63]));
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}

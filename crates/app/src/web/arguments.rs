@@ -1,0 +1,166 @@
+//! Reading the JavaScript API's arguments: every value is checked before
+//! anything is read or changed, and a bad one is refused with a message
+//! that names the call, the argument and what was expected
+//! ("select(kind, id): id must be a whole number from 0, not 'abc'").
+
+use eframe::wasm_bindgen::{JsCast as _, JsValue};
+
+use edgewise_core::mesh::Structure;
+
+use crate::Argument;
+
+/// The longest name, file name or option value the API takes.
+pub(super) const MAX_NAME_CHARS: usize = 256;
+
+/// "select(kind, id): id must be a whole number from 0, not 'abc'".
+pub(super) fn expected(call: &str, argument: &str, what: &str, value: &JsValue) -> String {
+    format!(
+        "{call}: {argument} must be {what}, not {}",
+        described(value)
+    )
+}
+
+/// A JavaScript value as a message shows it: short, and typed.
+pub(super) fn described(value: &JsValue) -> String {
+    if value.is_undefined() {
+        "undefined (it is missing)".to_owned()
+    } else if value.is_null() {
+        "null".to_owned()
+    } else if let Some(text) = value.as_string() {
+        format!("the string '{}'", shown(&text))
+    } else if let Some(n) = value.as_f64() {
+        format!("{n}")
+    } else if let Some(b) = value.as_bool() {
+        format!("{b}")
+    } else if js_sys::Array::is_array(value) {
+        "an array".to_owned()
+    } else if value.is_function() {
+        "a function".to_owned()
+    } else {
+        "an object".to_owned()
+    }
+}
+
+/// User text quoted in a message: at most 40 characters, escaped.
+pub(super) fn shown(text: &str) -> String {
+    edgewise_core::lang::diagnostic::shorten(text, 40)
+        .chars()
+        .flat_map(char::escape_debug)
+        .collect()
+}
+
+/// A whole number from 0 that a JavaScript number holds exactly.
+pub(super) fn whole_number(call: &str, argument: &str, value: &JsValue) -> Result<u64, String> {
+    const MAX_EXACT: f64 = 9_007_199_254_740_991.0; // Number.MAX_SAFE_INTEGER
+    value
+        .as_f64()
+        .filter(|n| n.fract() == 0.0 && (0.0..=MAX_EXACT).contains(n))
+        .map(|n| n as u64)
+        .ok_or_else(|| expected(call, argument, "a whole number from 0", value))
+}
+
+/// A string argument, refused before it is copied out of JavaScript when it
+/// holds more than `limit` UTF-16 units (a lower bound on its UTF-8 bytes).
+pub(super) fn text_argument(
+    call: &str,
+    argument: &str,
+    value: &JsValue,
+    limit: usize,
+) -> Result<String, String> {
+    let Some(text) = value.dyn_ref::<js_sys::JsString>() else {
+        return Err(expected(call, argument, "a string", value));
+    };
+    let units = text.length() as usize;
+    if units > limit {
+        return Err(format!(
+            "{call}: {argument} is {units} characters long; it may hold at most {limit}"
+        ));
+    }
+    Ok(String::from(text))
+}
+
+/// Refuses an options object that is not an object or has unknown keys, so a
+/// misspelled option is named instead of silently ignored.
+pub(super) fn check_options(call: &str, options: &JsValue, known: &[&str]) -> Result<(), String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(());
+    }
+    if !options.is_object() || js_sys::Array::is_array(options) {
+        return Err(expected(call, "options", "an object", options));
+    }
+    let keys = js_sys::Object::keys(options.unchecked_ref::<js_sys::Object>());
+    for key in keys.iter() {
+        let key = key.as_string().unwrap_or_default();
+        if !known.contains(&key.as_str()) {
+            return Err(format!(
+                "{call}: there is no option '{}'; the options are {}",
+                shown(&key),
+                known.join(" and ")
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `options[key]` as a string, if present.
+pub(super) fn option_string(
+    call: &str,
+    options: &JsValue,
+    key: &str,
+) -> Result<Option<String>, String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(None);
+    }
+    let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
+    if value.is_undefined() {
+        return Ok(None);
+    }
+    text_argument(call, &format!("options.{key}"), &value, MAX_NAME_CHARS).map(Some)
+}
+
+pub(super) fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
+    option_string(call, options, "structure")?
+        .map(|name| {
+            Structure::parse_link_name(&name).ok_or_else(|| {
+                format!(
+                    "{call}: options.structure must be 'winged' or 'half', not '{}'",
+                    shown(&name)
+                )
+            })
+        })
+        .transpose()
+}
+
+/// `run`'s arguments object: parameter names to ids, integers or booleans.
+pub(super) fn arguments(call: &str, args: &JsValue) -> Result<Vec<(String, Argument)>, String> {
+    if args.is_undefined() || args.is_null() {
+        return Ok(Vec::new());
+    }
+    // Not `dyn_ref`: an object made by the page around an iframe belongs to
+    // another realm, and fails an `instanceof Object` check.
+    if !args.is_object() || js_sys::Array::is_array(args) {
+        return Err(expected(call, "args", "an object such as {v: 0}", args));
+    }
+    let object: &js_sys::Object = args.unchecked_ref();
+    let mut out = Vec::new();
+    for entry in js_sys::Object::entries(object).iter() {
+        let pair = js_sys::Array::from(&entry);
+        let key = pair.get(0).as_string().unwrap_or_default();
+        let value = pair.get(1);
+        let what = format!("args.{}", shown(&key));
+        let argument = if let Some(b) = value.as_bool() {
+            Argument::Boolean(b)
+        } else if value.as_f64().is_some() {
+            Argument::Number(whole_number(call, &what, &value)? as f64)
+        } else {
+            return Err(expected(
+                call,
+                &what,
+                "a whole number (an id) or a boolean",
+                &value,
+            ));
+        };
+        out.push((key, argument));
+    }
+    Ok(out)
+}
