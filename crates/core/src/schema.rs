@@ -9,7 +9,7 @@
 //! - [`ElementKind`] and [`ElementRef`]: a vertex, edge or face row. In a
 //!   half-edge structure an edge row is a half-edge.
 //! - [`Column`]: one table column, its names, whether the structure stores or
-//!   derives it, and [`Column::reference`] to read it from a mesh.
+//!   derives it, and [`Records::reference`] to read it from a mesh.
 
 mod column;
 mod element;

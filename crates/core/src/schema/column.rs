@@ -327,64 +327,59 @@ impl Column {
     }
 }
 
-/// Every name the language accepts for a lookup, the canonical one of each
-/// column first: (name, column, the structure it is limited to or `None`
-/// for both). Names ignore case.
-const LANGUAGE_NAMES: &[(&str, Column, Option<Structure>)] = &[
-    ("incidentEdge", Column::IncidentEdge, None),
-    ("startVertex", Column::StartVertex, None),
-    ("endVertex", Column::EndVertex, None),
-    ("leftFace", Column::LeftFace, Some(Structure::WingedEdge)),
-    ("rightFace", Column::RightFace, Some(Structure::WingedEdge)),
+/// Lookup names and the columns they read.
+type LookupNames = &'static [(&'static str, Column)];
+
+/// Every name the language accepts for a lookup, by the structure it is
+/// limited to (`None`: both), the canonical name of each column first.
+/// Names ignore case.
+const LANGUAGE_NAMES: &[(Option<Structure>, LookupNames)] = &[
     (
-        "leftPredecessor",
-        Column::LeftPredecessor,
+        None,
+        &[
+            ("incidentEdge", Column::IncidentEdge),
+            ("startVertex", Column::StartVertex),
+            ("endVertex", Column::EndVertex),
+        ],
+    ),
+    (
         Some(Structure::WingedEdge),
+        &[
+            ("leftFace", Column::LeftFace),
+            ("rightFace", Column::RightFace),
+            ("leftPredecessor", Column::LeftPredecessor),
+            ("leftSuccessor", Column::LeftSuccessor),
+            ("rightPredecessor", Column::RightPredecessor),
+            ("rightSuccessor", Column::RightSuccessor),
+        ],
     ),
     (
-        "leftSuccessor",
-        Column::LeftSuccessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "rightPredecessor",
-        Column::RightPredecessor,
-        Some(Structure::WingedEdge),
-    ),
-    (
-        "rightSuccessor",
-        Column::RightSuccessor,
-        Some(Structure::WingedEdge),
-    ),
-    ("adjacentFace", Column::Face, Some(Structure::HalfEdge)),
-    ("face", Column::Face, Some(Structure::HalfEdge)),
-    ("vertex", Column::EndVertex, Some(Structure::HalfEdge)),
-    ("pairEdge", Column::PairEdge, Some(Structure::HalfEdge)),
-    ("pair", Column::PairEdge, Some(Structure::HalfEdge)),
-    ("twin", Column::PairEdge, Some(Structure::HalfEdge)),
-    (
-        "successorEdge",
-        Column::SuccessorEdge,
         Some(Structure::HalfEdge),
+        &[
+            ("adjacentFace", Column::Face),
+            ("face", Column::Face),
+            ("vertex", Column::EndVertex),
+            ("pairEdge", Column::PairEdge),
+            ("pair", Column::PairEdge),
+            ("twin", Column::PairEdge),
+            ("successorEdge", Column::SuccessorEdge),
+            ("successor", Column::SuccessorEdge),
+            ("next", Column::SuccessorEdge),
+            ("predecessorEdge", Column::PredecessorEdge),
+            ("predecessor", Column::PredecessorEdge),
+            ("prev", Column::PredecessorEdge),
+        ],
     ),
-    (
-        "successor",
-        Column::SuccessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    ("next", Column::SuccessorEdge, Some(Structure::HalfEdge)),
-    (
-        "predecessorEdge",
-        Column::PredecessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    (
-        "predecessor",
-        Column::PredecessorEdge,
-        Some(Structure::HalfEdge),
-    ),
-    ("prev", Column::PredecessorEdge, Some(Structure::HalfEdge)),
 ];
+
+/// [`LANGUAGE_NAMES`] one name at a time: (name, column, limited to).
+fn language_names() -> impl Iterator<Item = (&'static str, Column, Option<Structure>)> {
+    LANGUAGE_NAMES.iter().flat_map(|&(only_in, names)| {
+        names
+            .iter()
+            .map(move |&(name, column)| (name, column, only_in))
+    })
+}
 
 /// Why a lookup name was refused, for the checker's message.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -401,17 +396,16 @@ impl Column {
     /// The canonical lookup name in the language (`leftPredecessor`), or
     /// `None` for the position, which is not a lookup.
     pub fn language_name(self) -> Option<&'static str> {
-        LANGUAGE_NAMES
-            .iter()
-            .find(|&&(_, column, _)| column == self)
-            .map(|&(name, _, _)| name)
+        language_names()
+            .find(|&(_, column, _)| column == self)
+            .map(|(name, _, _)| name)
     }
 
     /// Resolves a lookup name (any case, any alias) on an element of `kind`
     /// in `structure`.
     pub fn resolve(structure: Structure, kind: ElementKind, name: &str) -> Result<Self, NameError> {
         let mut found_elsewhere = None;
-        for &(candidate, column, only_in) in LANGUAGE_NAMES {
+        for (candidate, column, only_in) in language_names() {
             if !candidate.eq_ignore_ascii_case(name) {
                 continue;
             }
@@ -433,17 +427,16 @@ impl Column {
         structure: Structure,
         kind: ElementKind,
     ) -> impl Iterator<Item = &'static str> {
-        LANGUAGE_NAMES
-            .iter()
-            .filter(move |&&(_, column, only_in)| {
+        language_names()
+            .filter(move |&(_, column, only_in)| {
                 only_in.is_none_or(|s| s == structure) && column.applies_to(kind)
             })
-            .map(|&(name, _, _)| name)
+            .map(|(name, _, _)| name)
     }
 
     /// Every lookup name of either structure.
     pub fn all_language_names() -> impl Iterator<Item = &'static str> {
-        LANGUAGE_NAMES.iter().map(|&(name, _, _)| name)
+        language_names().map(|(name, _, _)| name)
     }
 }
 

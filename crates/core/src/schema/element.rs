@@ -88,29 +88,18 @@ impl ElementRef {
     }
 }
 
-impl From<VertexId> for ElementRef {
-    fn from(v: VertexId) -> Self {
-        Self::vertex(v)
-    }
+/// A typed id is a reference to its row.
+macro_rules! from_id {
+    ($($id:ty => $make:ident),*) => {$(
+        impl From<$id> for ElementRef {
+            fn from(id: $id) -> Self {
+                Self::$make(id)
+            }
+        }
+    )*};
 }
 
-impl From<EdgeId> for ElementRef {
-    fn from(e: EdgeId) -> Self {
-        Self::edge(e)
-    }
-}
-
-impl From<HalfEdgeId> for ElementRef {
-    fn from(h: HalfEdgeId) -> Self {
-        Self::half_edge(h)
-    }
-}
-
-impl From<FaceId> for ElementRef {
-    fn from(f: FaceId) -> Self {
-        Self::face(f)
-    }
-}
+from_id!(VertexId => vertex, EdgeId => edge, HalfEdgeId => half_edge, FaceId => face);
 
 /// "vertex 3", "edge 7", "face 0".
 impl fmt::Display for ElementRef {
