@@ -3,10 +3,12 @@
 //! - Vertices are spheres, edges arrows pointing at their end vertex (a
 //!   half-edge mesh shows each edge as two arrows, each inset into its own
 //!   face), faces are filled and mostly see-through.
-//! - Drawing goes through an egui paint callback ([`gpu::ViewCallback`]):
+//! - Drawing goes through an egui paint callback ([`renderer::ViewCallback`]):
 //!   instanced, one draw per element kind; geometry buffers are rebuilt only
 //!   when the mesh changes and style buffers only when the styles'
-//!   generation changes.
+//!   generation changes. Each drawable file (spheres, arrows, faces,
+//!   orientation) owns its instance type, pipeline, buffers and draw call;
+//!   `gpu` is the plumbing they share.
 //! - Labels, pointers and the hover preview are egui shapes painted over it.
 //! - Camera, picking and labels work without a GPU (headless UI tests).
 //!
@@ -21,6 +23,7 @@ mod gpu;
 mod labels;
 mod orientation;
 mod picking;
+mod renderer;
 mod scene;
 mod spheres;
 mod style;
@@ -37,10 +40,9 @@ pub use camera::{Camera, Ray, ViewTransforms};
 pub use gpu::DEPTH_BITS;
 pub use style::Palette;
 
-use gpu::{
-    DrawFlags, FrameUniform, GeometryUpload, Pipelines, StyleUpload, UploadState, ViewCallback,
-};
+use gpu::FrameUniform;
 use picking::{PickAccel, PickQuery};
+use renderer::{DrawFlags, GeometryUpload, Renderers, StyleUpload, UploadState, ViewCallback};
 use scene::Scene;
 
 /// The mesh as the view draws it.
@@ -270,11 +272,11 @@ pub struct View3d {
 }
 
 impl View3d {
-    /// Creates pipelines if a wgpu render state exists (None in headless UI
-    /// tests).
+    /// Creates the renderers if a wgpu render state exists (None in
+    /// headless UI tests).
     pub fn new(render_state: Option<&egui_wgpu::RenderState>) -> Self {
         let gpu = render_state.map(|render_state| {
-            Pipelines::install(render_state);
+            Renderers::install(render_state);
             GpuLink {
                 renderer: render_state.renderer.clone(),
                 uploaded: Arc::new(UploadState::default()),
@@ -628,7 +630,7 @@ impl Drop for View3d {
     fn drop(&mut self) {
         if let Some(gpu) = &self.gpu {
             let mut renderer = gpu.renderer.write();
-            Pipelines::remove_view(&mut renderer.callback_resources, self.id);
+            Renderers::remove_view(&mut renderer.callback_resources, self.id);
         }
     }
 }

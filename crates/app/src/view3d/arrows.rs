@@ -1,17 +1,33 @@
 //! Edges drawn as arrows (a shaft and a cone head pointing at the end
-//! vertex): one instanced template per edge or half-edge.
+//! vertex): one instanced template per edge or half-edge. The world axes are
+//! drawn with the same renderer.
 
 use std::f32::consts::TAU;
 
 use bytemuck::{Pod, Zeroable};
 
-use super::gpu::{ArrowInstance, PipelineFactory, PipelineSpec, Template, style_layout};
+use super::gpu::{
+    PipelineFactory, PipelineSpec, StyleVertex, Template, TemplateBuffer, VertexData,
+    draw_instanced, style_layout,
+};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
     include_str!("shaders/arrows.wgsl")
 );
+
+/// Instance count above which arrows use their coarse template (36 triangles
+/// instead of 120): many edges are thin on screen.
+const ARROW_DETAIL_LIMIT: u32 = 30_000;
+
+/// An arrow instance: start and end in world space.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct ArrowInstance {
+    pub start: [f32; 3],
+    pub end: [f32; 3],
+}
 
 /// A template vertex: see `vs_arrow` in shaders/arrows.wgsl for what the
 /// selectors mean.
@@ -81,7 +97,93 @@ pub fn instances(scene: &Scene) -> Vec<ArrowInstance> {
         .collect()
 }
 
-pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
+/// The arrow pipeline and templates, shared by every view.
+pub struct ArrowRenderer {
+    pipeline: wgpu::RenderPipeline,
+    /// Fine (with the base disc) and coarse; see [`ARROW_DETAIL_LIMIT`].
+    templates_by_detail: [TemplateBuffer; 2],
+}
+
+impl ArrowRenderer {
+    pub fn new(factory: &PipelineFactory<'_>) -> Self {
+        Self {
+            pipeline: pipeline(factory),
+            templates_by_detail: [
+                TemplateBuffer::new(factory.device, "view3d arrow", &template(10, true)),
+                TemplateBuffer::new(factory.device, "view3d arrow coarse", &template(6, false)),
+            ],
+        }
+    }
+
+    /// Draws one set of arrows once both instances and styles are uploaded.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &ArrowBuffers) {
+        let (Some(instances), Some(styles)) = (&buffers.instances, &buffers.styles) else {
+            return;
+        };
+        let count = instances.count.min(styles.count);
+        let detail = usize::from(count > ARROW_DETAIL_LIMIT);
+        draw_instanced(
+            pass,
+            &self.pipeline,
+            &self.templates_by_detail[detail],
+            &[&instances.buffer, &styles.buffer],
+            count,
+        );
+    }
+}
+
+/// One view's arrow instances and their styles: the mesh's edges, or the
+/// axes.
+pub struct ArrowBuffers {
+    /// Buffer labels: instances, styles.
+    labels: [&'static str; 2],
+    instances: Option<VertexData>,
+    styles: Option<VertexData>,
+}
+
+impl ArrowBuffers {
+    pub fn new(instances_label: &'static str, styles_label: &'static str) -> Self {
+        Self {
+            labels: [instances_label, styles_label],
+            instances: None,
+            styles: None,
+        }
+    }
+
+    /// Replaces the instances (a new mesh, usually of another size).
+    pub fn replace_instances(&mut self, device: &wgpu::Device, instances: &[ArrowInstance]) {
+        self.instances = Some(VertexData::new(device, self.labels[0], instances));
+    }
+
+    /// Rewrites the instances, in place while their count stays (the axes,
+    /// every frame).
+    pub fn write_instances(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        instances: &[ArrowInstance],
+    ) {
+        VertexData::update(
+            &mut self.instances,
+            device,
+            queue,
+            self.labels[0],
+            instances,
+        );
+    }
+
+    /// Rewrites the styles, in place while their count stays.
+    pub fn write_styles(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        styles: &[StyleVertex],
+    ) {
+        VertexData::update(&mut self.styles, device, queue, self.labels[1], styles);
+    }
+}
+
+fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
     let shader = factory.shader("view3d arrows", SHADER);
     let template = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32];
     let instance = wgpu::vertex_attr_array![2 => Float32x3, 3 => Float32x3];

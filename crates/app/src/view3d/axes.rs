@@ -3,7 +3,8 @@
 
 use glam::Vec3;
 
-use super::gpu::{ArrowInstance, StyleVertex};
+use super::arrows::ArrowInstance;
+use super::gpu::StyleVertex;
 use super::scene::{Scene, Sizes};
 use super::style::Palette;
 

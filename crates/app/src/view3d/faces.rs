@@ -1,7 +1,7 @@
 //! Faces: filled, mostly transparent so the whole structure shows (or solid
 //! as an option). Triangles are drawn non-indexed, three corners each.
 
-use super::gpu::{PipelineFactory, PipelineSpec, StyleVertex, style_layout};
+use super::gpu::{PipelineFactory, PipelineSpec, StyleVertex, VertexData, style_layout};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
@@ -29,8 +29,69 @@ pub fn corner_styles(scene: &Scene, face_style: impl Fn(usize) -> StyleVertex) -
     out
 }
 
-/// The see-through and the solid face pipelines.
-pub fn pipelines(factory: &PipelineFactory<'_>) -> (wgpu::RenderPipeline, wgpu::RenderPipeline) {
+/// The see-through and solid face pipelines, shared by every view.
+pub struct FaceRenderer {
+    transparent: wgpu::RenderPipeline,
+    solid: wgpu::RenderPipeline,
+}
+
+impl FaceRenderer {
+    pub fn new(factory: &PipelineFactory<'_>) -> Self {
+        let (transparent, solid) = pipelines(factory);
+        Self { transparent, solid }
+    }
+
+    /// Draws one view's faces once both corners and styles are uploaded.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &FaceBuffers, solid: bool) {
+        let (Some(corners), Some(styles)) = (&buffers.corners, &buffers.styles) else {
+            return;
+        };
+        let count = corners.count.min(styles.count);
+        if count == 0 {
+            return;
+        }
+        pass.set_pipeline(if solid {
+            &self.solid
+        } else {
+            &self.transparent
+        });
+        pass.set_vertex_buffer(0, corners.buffer.slice(..));
+        pass.set_vertex_buffer(1, styles.buffer.slice(..));
+        pass.draw(0..count, 0..1);
+    }
+}
+
+/// One view's triangle corners and their styles.
+#[derive(Default)]
+pub struct FaceBuffers {
+    corners: Option<VertexData>,
+    styles: Option<VertexData>,
+}
+
+impl FaceBuffers {
+    /// Replaces the corners (a new mesh, usually of another size).
+    pub fn replace_corners(&mut self, device: &wgpu::Device, corners: &[[f32; 3]]) {
+        self.corners = Some(VertexData::new(device, "view3d faces", corners));
+    }
+
+    /// Rewrites the styles, in place while the corner count stays.
+    pub fn write_styles(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        styles: &[StyleVertex],
+    ) {
+        VertexData::update(
+            &mut self.styles,
+            device,
+            queue,
+            "view3d face styles",
+            styles,
+        );
+    }
+}
+
+fn pipelines(factory: &PipelineFactory<'_>) -> (wgpu::RenderPipeline, wgpu::RenderPipeline) {
     let shader = factory.shader("view3d faces", SHADER);
     let position = wgpu::vertex_attr_array![0 => Float32x3];
     let style = wgpu::vertex_attr_array![1 => Unorm8x4, 2 => Unorm8x4];

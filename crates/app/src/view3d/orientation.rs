@@ -3,7 +3,11 @@
 
 use std::f32::consts::{PI, TAU};
 
-use super::gpu::{MarkInstance, PipelineFactory, PipelineSpec, Template};
+use bytemuck::{Pod, Zeroable};
+
+use super::gpu::{
+    PipelineFactory, PipelineSpec, Template, TemplateBuffer, VertexData, draw_instanced,
+};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
@@ -18,6 +22,15 @@ const ARC_SPAN: f32 = 1.45 * PI;
 const WIDTH: f32 = 0.16;
 const HEAD_WIDTH: f32 = 0.42;
 const HEAD_LENGTH: f32 = 0.5;
+
+/// An orientation mark instance: center and the two scaled in-plane axes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct MarkInstance {
+    pub center: [f32; 3],
+    pub u: [f32; 3],
+    pub v: [f32; 3],
+}
 
 /// The unit mark (radius 1) as a triangle list in its own plane.
 pub fn template() -> Template<[f32; 2]> {
@@ -82,7 +95,50 @@ pub fn instances(scene: &Scene) -> Vec<MarkInstance> {
     out
 }
 
-pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
+/// The orientation mark pipeline and template, shared by every view.
+pub struct OrientationRenderer {
+    pipeline: wgpu::RenderPipeline,
+    template: TemplateBuffer,
+}
+
+impl OrientationRenderer {
+    pub fn new(factory: &PipelineFactory<'_>) -> Self {
+        Self {
+            pipeline: pipeline(factory),
+            template: TemplateBuffer::new(factory.device, "view3d mark", &template()),
+        }
+    }
+
+    /// Draws one view's marks once they are uploaded (they take their colour
+    /// from the frame uniform, so they have no style buffer).
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &OrientationBuffers) {
+        let Some(marks) = &buffers.marks else {
+            return;
+        };
+        draw_instanced(
+            pass,
+            &self.pipeline,
+            &self.template,
+            &[&marks.buffer],
+            marks.count,
+        );
+    }
+}
+
+/// One view's mark instances.
+#[derive(Default)]
+pub struct OrientationBuffers {
+    marks: Option<VertexData>,
+}
+
+impl OrientationBuffers {
+    /// Replaces the marks (a new mesh).
+    pub fn replace_marks(&mut self, device: &wgpu::Device, marks: &[MarkInstance]) {
+        self.marks = Some(VertexData::new(device, "view3d marks", marks));
+    }
+}
+
+fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
     let shader = factory.shader("view3d orientation", SHADER);
     let template = wgpu::vertex_attr_array![0 => Float32x2];
     let instance = wgpu::vertex_attr_array![1 => Float32x3, 2 => Float32x3, 3 => Float32x3];

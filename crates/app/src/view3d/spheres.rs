@@ -1,16 +1,31 @@
 //! Vertices drawn as small spheres: one instanced icosphere per vertex.
 
-use glam::Vec3;
-
 use std::collections::HashMap;
 
-use super::gpu::{PipelineFactory, PipelineSpec, Template, style_layout};
+use bytemuck::{Pod, Zeroable};
+use glam::Vec3;
+
+use super::gpu::{
+    PipelineFactory, PipelineSpec, StyleVertex, Template, TemplateBuffer, VertexData,
+    draw_instanced, style_layout,
+};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
     include_str!("shaders/spheres.wgsl")
 );
+
+/// Instance counts above which spheres use their second and third level of
+/// detail (320, 80, 20 triangles): many vertices are small on screen.
+const SPHERE_DETAIL_LIMITS: [u32; 2] = [5_000, 50_000];
+
+/// A sphere instance: the vertex's position.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct SphereInstance {
+    pub center: [f32; 3],
+}
 
 /// A unit icosphere, each triangle split in four `subdivisions` times
 /// (0: 20 triangles on 12 vertices, 1: 80 on 42, 2: 320 on 162). The vertex
@@ -80,18 +95,85 @@ pub fn icosphere(subdivisions: u32) -> Template<[f32; 3]> {
     }
 }
 
-/// One instance per vertex: its position.
-pub fn instances(scene: &Scene) -> Vec<[f32; 3]> {
+/// One instance per vertex.
+pub fn instances(scene: &Scene) -> Vec<SphereInstance> {
     (0..scene.vertex_count())
-        .map(|v| {
-            scene
+        .map(|v| SphereInstance {
+            center: scene
                 .position(u32::try_from(v).unwrap_or(u32::MAX))
-                .to_array()
+                .to_array(),
         })
         .collect()
 }
 
-pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
+/// The sphere pipeline and icosphere templates, shared by every view.
+pub struct SphereRenderer {
+    pipeline: wgpu::RenderPipeline,
+    /// Finest first; see [`SPHERE_DETAIL_LIMITS`].
+    templates_by_detail: [TemplateBuffer; 3],
+}
+
+impl SphereRenderer {
+    pub fn new(factory: &PipelineFactory<'_>) -> Self {
+        Self {
+            pipeline: pipeline(factory),
+            templates_by_detail: [2, 1, 0].map(|subdivisions| {
+                TemplateBuffer::new(factory.device, "view3d sphere", &icosphere(subdivisions))
+            }),
+        }
+    }
+
+    /// Draws one view's spheres once both instances and styles are uploaded.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &SphereBuffers) {
+        let (Some(instances), Some(styles)) = (&buffers.instances, &buffers.styles) else {
+            return;
+        };
+        let count = instances.count.min(styles.count);
+        let detail = SPHERE_DETAIL_LIMITS
+            .iter()
+            .filter(|&&limit| count > limit)
+            .count();
+        draw_instanced(
+            pass,
+            &self.pipeline,
+            &self.templates_by_detail[detail.min(2)],
+            &[&instances.buffer, &styles.buffer],
+            count,
+        );
+    }
+}
+
+/// One view's sphere instances and their styles.
+#[derive(Default)]
+pub struct SphereBuffers {
+    instances: Option<VertexData>,
+    styles: Option<VertexData>,
+}
+
+impl SphereBuffers {
+    /// Replaces the instances (a new mesh, usually of another size).
+    pub fn replace_instances(&mut self, device: &wgpu::Device, instances: &[SphereInstance]) {
+        self.instances = Some(VertexData::new(device, "view3d spheres", instances));
+    }
+
+    /// Rewrites the styles, in place while the vertex count stays.
+    pub fn write_styles(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        styles: &[StyleVertex],
+    ) {
+        VertexData::update(
+            &mut self.styles,
+            device,
+            queue,
+            "view3d vertex styles",
+            styles,
+        );
+    }
+}
+
+fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
     let shader = factory.shader("view3d spheres", SHADER);
     let template = wgpu::vertex_attr_array![0 => Float32x3];
     let instance = wgpu::vertex_attr_array![1 => Float32x3];
@@ -108,7 +190,7 @@ pub fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
                 attributes: &template,
             }),
             Some(wgpu::VertexBufferLayout {
-                array_stride: 12,
+                array_stride: size_of::<SphereInstance>() as u64,
                 step_mode: wgpu::VertexStepMode::Instance,
                 attributes: &instance,
             }),

@@ -4,7 +4,8 @@
 
 use egui::Color32;
 
-use super::gpu::{StyleUpload, StyleVertex};
+use super::gpu::StyleVertex;
+use super::renderer::StyleUpload;
 use super::scene::Scene;
 use super::{ElementStyle, SceneStyles, faces};
 

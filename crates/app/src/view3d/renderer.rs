@@ -1,0 +1,228 @@
+//! The paint callback: each view's buffers, and the order drawables upload
+//! and draw in. Apart from gpu.rs so that drawables depend on the plumbing
+//! and only this file depends on the drawables.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use eframe::egui_wgpu::{CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
+
+use super::arrows::{ArrowBuffers, ArrowInstance, ArrowRenderer};
+use super::faces::{FaceBuffers, FaceRenderer};
+use super::gpu::{
+    FrameBindGroup, FrameUniform, PipelineFactory, StyleVertex, frame_bind_group_layout,
+};
+use super::orientation::{MarkInstance, OrientationBuffers, OrientationRenderer};
+use super::spheres::{SphereBuffers, SphereInstance, SphereRenderer};
+
+/// Geometry buffers' contents, built on the CPU when the mesh changes and
+/// uploaded once.
+#[derive(Default)]
+pub struct GeometryUpload {
+    pub id: u64,
+    pub spheres: Vec<SphereInstance>,
+    pub arrows: Vec<ArrowInstance>,
+    /// Three corners per triangle.
+    pub faces: Vec<[f32; 3]>,
+    pub marks: Vec<MarkInstance>,
+}
+
+/// Style buffers' contents, rebuilt when the styles' generation changes.
+#[derive(Default)]
+pub struct StyleUpload {
+    pub id: u64,
+    pub vertices: Vec<StyleVertex>,
+    pub edges: Vec<StyleVertex>,
+    /// Three per triangle, like [`GeometryUpload::faces`].
+    pub faces: Vec<StyleVertex>,
+}
+
+/// Tells the view which uploads the GPU side has taken, so it can drop its
+/// CPU copies.
+#[derive(Default)]
+pub struct UploadState {
+    pub geometry: AtomicU64,
+    pub styles: AtomicU64,
+}
+
+/// What to draw this frame besides the mesh.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DrawFlags {
+    pub axes: bool,
+    pub orientation: bool,
+    pub solid_faces: bool,
+}
+
+/// Every drawable's renderer, shared by all views, and each view's buffers;
+/// kept in `egui_wgpu`'s callback resources.
+pub struct Renderers {
+    frame_layout: wgpu::BindGroupLayout,
+    spheres: SphereRenderer,
+    arrows: ArrowRenderer,
+    faces: FaceRenderer,
+    orientation: OrientationRenderer,
+    srgb_target: bool,
+    views: HashMap<u64, ViewBuffers>,
+}
+
+impl Renderers {
+    /// Creates the renderers for a render target format.
+    pub fn new(device: &wgpu::Device, target_format: wgpu::TextureFormat) -> Self {
+        let frame_layout = frame_bind_group_layout(device);
+        let factory = PipelineFactory::new(device, &frame_layout, target_format);
+        Self {
+            spheres: SphereRenderer::new(&factory),
+            arrows: ArrowRenderer::new(&factory),
+            faces: FaceRenderer::new(&factory),
+            orientation: OrientationRenderer::new(&factory),
+            frame_layout,
+            srgb_target: target_format.is_srgb(),
+            views: HashMap::new(),
+        }
+    }
+
+    /// Registers the renderers with an eframe render state (once).
+    pub fn install(render_state: &RenderState) {
+        let mut renderer = render_state.renderer.write();
+        if renderer.callback_resources.get::<Self>().is_none() {
+            let renderers = Self::new(&render_state.device, render_state.target_format);
+            renderer.callback_resources.insert(renderers);
+        }
+    }
+
+    /// Forgets a view's buffers.
+    pub fn remove_view(resources: &mut CallbackResources, view_id: u64) {
+        if let Some(renderers) = resources.get_mut::<Self>() {
+            renderers.views.remove(&view_id);
+        }
+    }
+}
+
+/// One view's buffers: its frame uniform and what each drawable uploaded.
+struct ViewBuffers {
+    frame: FrameBindGroup,
+    geometry_id: u64,
+    styles_id: u64,
+    spheres: SphereBuffers,
+    arrows: ArrowBuffers,
+    faces: FaceBuffers,
+    marks: OrientationBuffers,
+    axes: ArrowBuffers,
+}
+
+impl ViewBuffers {
+    fn new(device: &wgpu::Device, frame_layout: &wgpu::BindGroupLayout) -> Self {
+        Self {
+            frame: FrameBindGroup::new(device, frame_layout),
+            geometry_id: 0,
+            styles_id: 0,
+            spheres: SphereBuffers::default(),
+            arrows: ArrowBuffers::new("view3d arrows", "view3d edge styles"),
+            faces: FaceBuffers::default(),
+            marks: OrientationBuffers::default(),
+            axes: ArrowBuffers::new("view3d axes", "view3d axes styles"),
+        }
+    }
+}
+
+/// The paint callback of one view for one frame.
+pub struct ViewCallback {
+    pub view_id: u64,
+    pub frame: FrameUniform,
+    pub geometry_id: u64,
+    pub styles_id: u64,
+    /// Present until the GPU side has taken it.
+    pub geometry: Option<Arc<GeometryUpload>>,
+    pub styles: Option<Arc<StyleUpload>>,
+    pub axes: [ArrowInstance; 3],
+    pub axes_styles: [StyleVertex; 3],
+    pub flags: DrawFlags,
+    pub uploaded: Arc<UploadState>,
+}
+
+impl CallbackTrait for ViewCallback {
+    fn prepare(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        _screen_descriptor: &ScreenDescriptor,
+        _egui_encoder: &mut wgpu::CommandEncoder,
+        resources: &mut CallbackResources,
+    ) -> Vec<wgpu::CommandBuffer> {
+        let Some(renderers) = resources.get_mut::<Renderers>() else {
+            return Vec::new();
+        };
+        let srgb = renderers.srgb_target;
+        let frame_layout = &renderers.frame_layout;
+        let view = renderers
+            .views
+            .entry(self.view_id)
+            .or_insert_with(|| ViewBuffers::new(device, frame_layout));
+
+        // Uploads are skipped by id: each is taken once, then only drawn.
+        if let Some(geometry) = &self.geometry
+            && geometry.id != view.geometry_id
+        {
+            view.spheres.replace_instances(device, &geometry.spheres);
+            view.arrows.replace_instances(device, &geometry.arrows);
+            view.faces.replace_corners(device, &geometry.faces);
+            view.marks.replace_marks(device, &geometry.marks);
+            view.geometry_id = geometry.id;
+            self.uploaded.geometry.store(geometry.id, Ordering::Release);
+        }
+        if let Some(styles) = &self.styles
+            && styles.id != view.styles_id
+        {
+            view.spheres.write_styles(device, queue, &styles.vertices);
+            view.arrows.write_styles(device, queue, &styles.edges);
+            view.faces.write_styles(device, queue, &styles.faces);
+            view.styles_id = styles.id;
+            self.uploaded.styles.store(styles.id, Ordering::Release);
+        }
+        if self.flags.axes {
+            view.axes.write_instances(device, queue, &self.axes);
+            view.axes.write_styles(device, queue, &self.axes_styles);
+        }
+
+        let mut frame = self.frame;
+        frame.params[0] = if srgb { 1.0 } else { 0.0 };
+        view.frame.write(queue, &frame);
+        Vec::new()
+    }
+
+    fn paint(
+        &self,
+        _info: egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        resources: &CallbackResources,
+    ) {
+        let Some(renderers) = resources.get::<Renderers>() else {
+            return;
+        };
+        let Some(view) = renderers.views.get(&self.view_id) else {
+            return;
+        };
+        // Buffers of another mesh or styles generation would not match each
+        // other; draw nothing until both are current.
+        if view.geometry_id != self.geometry_id || view.styles_id != self.styles_id {
+            return;
+        }
+        view.frame.bind(pass);
+
+        // Opaque first: spheres, arrows, axes, orientation marks.
+        renderers.spheres.draw(pass, &view.spheres);
+        renderers.arrows.draw(pass, &view.arrows);
+        if self.flags.axes {
+            renderers.arrows.draw(pass, &view.axes);
+        }
+        if self.flags.orientation {
+            renderers.orientation.draw(pass, &view.marks);
+        }
+        // Faces last: see-through ones test depth against everything opaque
+        // without hiding what is behind them.
+        renderers
+            .faces
+            .draw(pass, &view.faces, self.flags.solid_faces);
+    }
+}
