@@ -10,6 +10,7 @@ use super::builder::{self, Boundary, Layout, NONE, Pairs};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
+use super::structure::tables;
 
 /// A row of the half-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -230,68 +231,11 @@ impl HalfEdgeMesh {
         })
     }
 
-    /// Gives the tables back, for editing.
-    pub fn into_raw_parts(self) -> (Vec<Vertex>, Vec<Face>, Vec<HalfEdge>) {
-        (self.vertices, self.faces, self.half_edges)
-    }
-
-    /// The vertex table.
-    pub fn vertices(&self) -> &[Vertex] {
-        &self.vertices
-    }
-
-    /// The face table.
-    pub fn faces(&self) -> &[Face] {
-        &self.faces
-    }
-
-    /// The half-edge table.
-    pub fn half_edges(&self) -> &[HalfEdge] {
-        &self.half_edges
-    }
-
-    /// Number of vertices.
-    pub fn vertex_count(&self) -> usize {
-        self.vertices.len()
-    }
-
-    /// Number of faces.
-    pub fn face_count(&self) -> usize {
-        self.faces.len()
-    }
-
-    /// Number of half-edges, interior and boundary.
-    pub fn half_edge_count(&self) -> usize {
-        self.half_edges.len()
-    }
+    tables!(Vertex, Face, half_edges: HalfEdge, "half-edge", half_edge(HalfEdgeId), half_edge_count);
 
     /// Number of edges (half-edge pairs).
     pub fn edge_count(&self) -> usize {
         self.half_edges.len() / 2
-    }
-
-    /// A vertex row.
-    #[inline]
-    pub fn vertex(&self, v: VertexId) -> Option<&Vertex> {
-        self.vertices.get(v.index())
-    }
-
-    /// A face row.
-    #[inline]
-    pub fn face(&self, f: FaceId) -> Option<&Face> {
-        self.faces.get(f.index())
-    }
-
-    /// A half-edge row.
-    #[inline]
-    pub fn half_edge(&self, h: HalfEdgeId) -> Option<&HalfEdge> {
-        self.half_edges.get(h.index())
-    }
-
-    /// The position of a vertex.
-    #[inline]
-    pub fn position(&self, v: VertexId) -> Option<Vec3> {
-        self.vertex(v).map(|vertex| vertex.position)
     }
 
     /// The start vertex of a half-edge: its pair's end vertex (derived).

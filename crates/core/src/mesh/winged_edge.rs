@@ -13,6 +13,7 @@ use super::builder::{self, Boundary, Layout, NONE};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
+use super::structure::tables;
 
 /// A row of the winged-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -268,64 +269,7 @@ impl WingedEdgeMesh {
         }
     }
 
-    /// Gives the tables back, for editing.
-    pub fn into_raw_parts(self) -> (Vec<Vertex>, Vec<Face>, Vec<WingedEdge>) {
-        (self.vertices, self.faces, self.edges)
-    }
-
-    /// The vertex table.
-    pub fn vertices(&self) -> &[Vertex] {
-        &self.vertices
-    }
-
-    /// The face table.
-    pub fn faces(&self) -> &[Face] {
-        &self.faces
-    }
-
-    /// The edge table.
-    pub fn edges(&self) -> &[WingedEdge] {
-        &self.edges
-    }
-
-    /// Number of vertices.
-    pub fn vertex_count(&self) -> usize {
-        self.vertices.len()
-    }
-
-    /// Number of faces.
-    pub fn face_count(&self) -> usize {
-        self.faces.len()
-    }
-
-    /// Number of edges.
-    pub fn edge_count(&self) -> usize {
-        self.edges.len()
-    }
-
-    /// A vertex row.
-    #[inline]
-    pub fn vertex(&self, v: VertexId) -> Option<&Vertex> {
-        self.vertices.get(v.index())
-    }
-
-    /// A face row.
-    #[inline]
-    pub fn face(&self, f: FaceId) -> Option<&Face> {
-        self.faces.get(f.index())
-    }
-
-    /// An edge row.
-    #[inline]
-    pub fn edge(&self, e: EdgeId) -> Option<&WingedEdge> {
-        self.edges.get(e.index())
-    }
-
-    /// The position of a vertex.
-    #[inline]
-    pub fn position(&self, v: VertexId) -> Option<Vec3> {
-        self.vertex(v).map(|vertex| vertex.position)
-    }
+    tables!(Vertex, Face, edges: WingedEdge, "edge", edge(EdgeId), edge_count);
 }
 
 /// One side of a winged edge: the left face's or the right face's.
