@@ -8,30 +8,34 @@
 //!   vertex where separate fans of faces meet is split, one vertex per fan.
 //! - [`HalfEdgeMesh::from_raw_parts`] / [`WingedEdgeMesh::from_raw_parts`] take
 //!   tables as written; `validate()` lists each [`Issue`] by element and field.
-//! - `stats()`, the navigation iterators and the conversions work on both.
+//! - `stats()`, the conversions and the walks of [`Navigation`] (one
+//!   [`Circulator`] over each structure's [`Ring`]s) work on both.
 
 mod builder;
+pub mod circulator;
 pub mod convert;
 pub mod error;
 pub mod generate;
 pub mod half_edge;
 pub mod ids;
+pub mod navigation;
 pub mod polygons;
 mod repair;
 pub mod stats;
 pub mod structure;
-pub mod traversal;
+mod traversal;
 pub mod validate;
 pub mod winged_edge;
 
 pub use crate::schema::Structure;
+pub use circulator::{Circulator, Ring};
 pub use convert::{ConvertError, EdgeCorrespondence};
 pub use error::{BuildError, BuildWarning, FaceRef};
 pub use half_edge::{HalfEdge, HalfEdgeMesh};
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+pub use navigation::{AroundFace, AroundVertex, Navigation};
 pub use polygons::Polygons;
 pub use stats::{ComponentStats, MeshStats};
 pub use structure::Mesh;
-pub use traversal::{FaceHalfEdges, FaceSides, VertexEdges, VertexHalfEdges};
 pub use validate::{Element, Issue};
 pub use winged_edge::{Side, WingedEdge, WingedEdgeMesh};

@@ -4,8 +4,8 @@
 use edgewise_core::mesh::half_edge::{self, HalfEdge};
 use edgewise_core::mesh::winged_edge;
 use edgewise_core::mesh::{
-    EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Mesh, Polygons, Side, Structure, VertexId,
-    WingedEdge, WingedEdgeMesh, generate,
+    EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Mesh, Navigation, Polygons, Side, Structure,
+    VertexId, WingedEdge, WingedEdgeMesh, generate,
 };
 use glam::Vec3;
 
@@ -180,7 +180,7 @@ fn tetrahedron_half_edges_follow_face_order() {
         .collect();
     assert_eq!(incident, [0, 3, 6, 9]);
     // The paper's loop around D visits each half-edge ending at D once.
-    let around_d = ids(he.vertex_half_edges(v(3)));
+    let around_d = ids(he.around_vertex(v(3)));
     assert_eq!(around_d, [2, 6, 4]);
     assert_round_trips(&polygons, &he, &we);
     let stats = he.stats();
@@ -225,11 +225,11 @@ fn cube_of_quads() {
     assert_eq!(stats.components[0].genus, Some(0));
     assert_eq!(he.stats(), stats);
     for i in 0..8 {
-        assert_eq!(we.vertex_edges(v(i)).count(), 3);
+        assert_eq!(we.around_vertex(v(i)).count(), 3);
         assert_eq!(he.vertex_faces(v(i)).count(), 3);
     }
     for i in 0..6 {
-        assert_eq!(we.face_edges(f(i)).count(), 4);
+        assert_eq!(we.around_face(f(i)).count(), 4);
         assert_eq!(he.face_neighbours(f(i)).count(), 4);
         let listed = ids(he.face_vertices(f(i)));
         let face = polygons.face(i as usize).expect("face");
@@ -304,7 +304,7 @@ fn open_square_half_edge_tables() {
     assert!(he.is_boundary(h(6)) && !he.is_boundary(h(5)));
     // Around vertex 0 the loop passes through the boundary gap: 2 (face 0),
     // 6 (boundary), 5 (face 1).
-    let around = ids(he.vertex_half_edges(v(0)));
+    let around = ids(he.around_vertex(v(0)));
     assert_eq!(around, [2, 6, 5]);
     let faces = ids(he.vertex_faces(v(0)));
     assert_eq!(faces, [0, 1]);
@@ -362,10 +362,10 @@ fn open_square_winged_edge_tables() {
     assert_eq!(stats.euler_characteristic, 1);
     assert_eq!(stats.components[0].genus, None);
     assert_eq!(he.stats(), stats);
-    let around = ids(we.vertex_edges(v(0)));
+    let around = ids(we.around_vertex(v(0)));
     assert_eq!(around, [0, 4, 2]);
     let sides: Vec<(u32, Side)> = we
-        .face_sides(f(1))
+        .around_face(f(1))
         .map(|(x, side)| (x.raw(), side))
         .collect();
     assert_eq!(sides, [(2, Side::Right), (3, Side::Left), (4, Side::Left)]);
@@ -461,5 +461,5 @@ fn two_components_and_an_isolated_vertex() {
     assert_eq!(stats.euler_characteristic, 3); // torus 0, sphere 2, point 1
     let he = we.to_half_edge().expect("convert");
     assert_eq!(he.stats(), stats);
-    assert_eq!(he.vertex_half_edges(v(13)).count(), 0);
+    assert_eq!(he.around_vertex(v(13)).count(), 0);
 }

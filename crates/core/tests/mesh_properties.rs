@@ -9,8 +9,8 @@
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use edgewise_core::mesh::{
-    BuildError, BuildWarning, EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Polygons, VertexId,
-    WingedEdgeMesh, generate,
+    BuildError, BuildWarning, EdgeId, FaceId, HalfEdgeId, HalfEdgeMesh, Navigation, Polygons,
+    VertexId, WingedEdgeMesh, generate,
 };
 use glam::Vec3;
 use proptest::prelude::*;
@@ -487,11 +487,11 @@ fn check_all(input: &Polygons) {
         let ending_here = (0..he.half_edge_count() as u32)
             .map(HalfEdgeId::new)
             .filter(|&h| he.half_edges()[h.index()].end_vertex == id);
-        assert_eq!(sorted(he.vertex_half_edges(id)), sorted(ending_here));
+        assert_eq!(sorted(he.around_vertex(id)), sorted(ending_here));
         let touching = (0..we.edge_count() as u32)
             .map(EdgeId::new)
             .filter(|&x| we.edges()[x.index()].other_vertex(id).is_some());
-        assert_eq!(sorted(we.vertex_edges(id)), sorted(touching));
+        assert_eq!(sorted(we.around_vertex(id)), sorted(touching));
         let faces: Vec<u32> = brute.faces_at[vertex].iter().copied().collect();
         assert_eq!(sorted(he.vertex_faces(id).map(FaceId::raw)), faces);
         assert_eq!(sorted(we.vertex_faces(id).map(FaceId::raw)), faces);
@@ -519,14 +519,14 @@ fn check_all(input: &Polygons) {
         let in_face = (0..he.half_edge_count() as u32)
             .map(HalfEdgeId::new)
             .filter(|&h| he.half_edges()[h.index()].face == Some(id));
-        assert_eq!(sorted(he.face_half_edges(id)), sorted(in_face));
+        assert_eq!(sorted(he.around_face(id)), sorted(in_face));
         let bordering = we
             .edges()
             .iter()
             .enumerate()
             .filter(|(_, x)| x.left_face == Some(id) || x.right_face == Some(id));
         assert_eq!(
-            sorted(we.face_edges(id)),
+            sorted(we.around_face(id).map(|(x, _)| x)),
             sorted(bordering.map(|(x, _)| EdgeId::new(x as u32)))
         );
         let across = brute.face_neighbours(polygons, face);
@@ -656,12 +656,12 @@ proptest! {
         let _ = mesh.stats();
         let _ = mesh.to_polygons();
         for v in 0..9 {
-            prop_assert!(mesh.vertex_half_edges(VertexId::new(v)).count() <= count);
+            prop_assert!(mesh.around_vertex(VertexId::new(v)).count() <= count);
             let _ = mesh.vertex_neighbours(VertexId::new(v)).count();
             let _ = mesh.vertex_faces(VertexId::new(v)).count();
         }
         for f in 0..5 {
-            prop_assert!(mesh.face_half_edges(FaceId::new(f)).count() <= count);
+            prop_assert!(mesh.around_face(FaceId::new(f)).count() <= count);
             let _ = mesh.face_neighbours(FaceId::new(f)).count();
         }
         for h in 0..count as u32 + 2 {
@@ -698,12 +698,12 @@ proptest! {
         let _ = mesh.stats();
         let _ = mesh.to_polygons();
         for v in 0..9 {
-            prop_assert!(mesh.vertex_edges(VertexId::new(v)).count() <= 2 * count);
+            prop_assert!(mesh.around_vertex(VertexId::new(v)).count() <= 2 * count);
             let _ = mesh.vertex_neighbours(VertexId::new(v)).count();
             let _ = mesh.vertex_faces(VertexId::new(v)).count();
         }
         for f in 0..5 {
-            prop_assert!(mesh.face_edges(FaceId::new(f)).count() <= 2 * count);
+            prop_assert!(mesh.around_face(FaceId::new(f)).count() <= 2 * count);
             let _ = mesh.face_vertices(FaceId::new(f)).count();
             let _ = mesh.face_neighbours(FaceId::new(f)).count();
         }

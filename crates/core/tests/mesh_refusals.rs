@@ -6,7 +6,7 @@ use edgewise_core::mesh::half_edge;
 use edgewise_core::mesh::winged_edge;
 use edgewise_core::mesh::{
     BuildError, BuildWarning, ConvertError, EdgeId, Element, FaceId, HalfEdgeId, HalfEdgeMesh,
-    Issue, Polygons, VertexId, WingedEdgeMesh, generate,
+    Issue, Navigation, Polygons, VertexId, WingedEdgeMesh, generate,
 };
 use edgewise_core::schema::Column;
 use glam::Vec3;
@@ -362,7 +362,7 @@ fn validate_names_the_half_edge_field_at_fault() {
     );
     // Nothing panics or loops on the broken tables.
     for v in 0..5 {
-        assert!(broken.vertex_half_edges(VertexId::new(v)).count() <= 12);
+        assert!(broken.around_vertex(VertexId::new(v)).count() <= 12);
         assert!(broken.vertex_neighbours(VertexId::new(v)).count() <= 12);
     }
     for f in 0..5 {
@@ -490,7 +490,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
         Column::IncidentEdge,
         "edge 99 does not exist"
     ));
-    assert_eq!(broken.face_edges(FaceId::new(2)).count(), 0);
+    assert_eq!(broken.around_face(FaceId::new(2)).count(), 0);
     assert!(matches!(
         broken.to_half_edge(),
         Err(ConvertError::Invalid(_))

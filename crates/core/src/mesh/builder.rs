@@ -1,6 +1,8 @@
 //! Topology construction shared by both structures, with the refusal checks.
 //!
-//! Both builds follow the same steps, all linear and without hashing:
+//! [`build`] drives the same steps for both structures, all linear and
+//! without hashing; an [`Assembly`] supplies what differs (the rows written,
+//! where pairs go, how to turn around a vertex, the final tables):
 //!
 //! 1. check every face (size, index range, repeated vertices), count the
 //!    corners at each vertex, and write the per-corner data;
@@ -10,8 +12,9 @@
 //!    uses of one edge side by side, which finds pairs, non-manifold edges and
 //!    orientation conflicts in one scan;
 //! 3. number the boundary half-edges and link them along the boundary loops;
-//! 4. walk once around every vertex to find non-manifold vertices (the builds
-//!    then split them in the polygon list and build again, see `repair`).
+//! 4. walk once around every vertex to find non-manifold vertices ([`build`]
+//!    then splits them in the polygon list and builds again, see `repair`);
+//! 5. finish the structure's tables.
 //!
 //! Interior half-edge `h` is corner `h` of the flat polygon list, so its start
 //! vertex is `indices[h]`. The half-edge build writes its rows in the first
@@ -21,6 +24,7 @@
 use super::error::{BuildError, BuildWarning, FaceRef};
 use super::ids::{FaceId, VertexId};
 use super::polygons::Polygons;
+use super::repair;
 
 /// "No element" in the builder's raw `u32` tables.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -37,6 +41,85 @@ const CHAIN_END: u32 = FORWARD - 2;
 /// below [`UNPAIRED`].
 const MAX_CORNERS: usize = CHAIN_END as usize;
 
+/// What one structure's build records and makes; [`build`] calls these hooks
+/// in step order, so numbering, refusals and warnings are the same for both.
+pub(crate) trait Assembly: Sized {
+    /// The structure built.
+    type Mesh;
+    /// Where steps 2 and 3 write each interior half-edge's pair.
+    type Pairs: Pairs;
+
+    /// Empty tables for `polygons`, which are not checked yet: sizes only.
+    fn new(polygons: &Polygons) -> Self;
+
+    /// Step 1, for interior half-edge `h` ending at vertex `end` in `face`,
+    /// called for `h = 0, 1, 2, ...` in turn: records it, storing `link` as
+    /// its pair (see [`scan_faces`]).
+    fn corner<L: Layout>(&mut self, layout: &L, h: u32, end: u32, face: u32, link: u32);
+
+    /// The pair storage, filled by [`corner`](Self::corner).
+    fn pairs(&mut self) -> &mut Self::Pairs;
+
+    /// After step 3: records the boundary half-edges if the structure keeps
+    /// rows for them.
+    fn boundary(&mut self, indices: &[u32], boundary: &Boundary);
+
+    /// The lowest-numbered half-edge ending at used vertex `v`.
+    fn first_incoming(&self, v: usize) -> u32;
+
+    /// One step of the paper's loop (successor, then pair) from half-edge
+    /// `h`, interior or boundary, once every pair and boundary link is known.
+    fn around<L: Layout>(&self, layout: &L, boundary: &Boundary, h: u32) -> u32;
+
+    /// Step 5: the structure's tables, once every check has passed.
+    fn finish<L: Layout>(self, polygons: &Polygons, layout: &L, boundary: Boundary) -> Self::Mesh;
+}
+
+/// Builds structure `A` from counter-clockwise polygons: refuses what the
+/// steps refuse and, if only a vertex joining separate fans stands in the
+/// way, splits it and builds again (see `repair`).
+pub(crate) fn build<A: Assembly>(
+    polygons: &Polygons,
+) -> Result<(A::Mesh, Vec<BuildWarning>), BuildError> {
+    repair::build_splitting_fans(polygons, |polygons| {
+        if all_triangles(polygons) {
+            assemble::<A, _>(polygons, &Triangles, true)
+        } else {
+            assemble::<A, _>(polygons, &General::new(polygons), false)
+        }
+    })
+}
+
+/// Steps 1 to 5 on the polygons as given; `triangles` must say whether
+/// `layout` is [`Triangles`].
+fn assemble<A: Assembly, L: Layout>(
+    polygons: &Polygons,
+    layout: &L,
+    triangles: bool,
+) -> Result<(A::Mesh, Vec<BuildWarning>), BuildError> {
+    let mut assembly = A::new(polygons);
+    let Scanned {
+        valence,
+        heads,
+        warnings,
+    } = scan_faces(polygons, triangles, |h, _, end, face, link| {
+        assembly.corner(layout, h, end, face, link);
+    })?;
+    let unpaired = pair_up(polygons, layout, &heads, assembly.pairs())?;
+    drop(heads);
+    let boundary = link_boundary(polygons, layout, &valence, unpaired, assembly.pairs())?;
+    assembly.boundary(polygons.indices(), &boundary);
+    check_fans(
+        polygons,
+        layout,
+        &valence,
+        |v| assembly.first_incoming(v),
+        |h| assembly.around(layout, &boundary, h),
+    )?;
+    drop(valence);
+    Ok((assembly.finish(polygons, layout, boundary), warnings))
+}
+
 /// How corners are grouped into faces: tells the successor, predecessor and
 /// face of an interior half-edge.
 pub(crate) trait Layout {
@@ -46,7 +129,7 @@ pub(crate) trait Layout {
 }
 
 /// Every face is a triangle: the links are arithmetic, with no table.
-pub(crate) struct Triangles;
+struct Triangles;
 
 impl Layout for Triangles {
     #[inline]
@@ -131,13 +214,13 @@ impl Pairs for Vec<u32> {
 }
 
 /// The result of the face scan.
-pub(crate) struct Scanned {
+struct Scanned {
     /// Corners at each vertex (= interior half-edges leaving it).
-    pub valence: Vec<u32>,
+    valence: Vec<u32>,
     /// The head of each vertex's bucket chain (see [`scan_faces`]).
-    pub heads: Vec<u32>,
+    heads: Vec<u32>,
     /// Unused vertices.
-    pub warnings: Vec<BuildWarning>,
+    warnings: Vec<BuildWarning>,
 }
 
 fn face_ref(polygons: &Polygons, face: usize) -> FaceRef {
@@ -148,7 +231,7 @@ fn face_ref(polygons: &Polygons, face: usize) -> FaceRef {
 }
 
 /// Whether every face has exactly three corners (then [`Triangles`] applies).
-pub(crate) fn all_triangles(polygons: &Polygons) -> bool {
+fn all_triangles(polygons: &Polygons) -> bool {
     polygons.corner_count() == 3 * polygons.face_count()
         && polygons
             .offsets()
@@ -166,7 +249,7 @@ pub(crate) fn all_triangles(polygons: &Polygons) -> bool {
 /// half-edge's pair until [`pair_up`] replaces it, so the buckets need no
 /// table of their own. It is the next half-edge of the chain (or
 /// [`CHAIN_END`]) plus the [`FORWARD`] bit when `a < b`.
-pub(crate) fn scan_faces(
+fn scan_faces(
     polygons: &Polygons,
     triangles: bool,
     mut corner: impl FnMut(u32, u32, u32, u32, u32),
@@ -292,7 +375,7 @@ pub(crate) fn scan_faces(
 /// [`scan_faces`]) is gathered and sorted by upper end, which puts the uses of
 /// one edge side by side. Replaces every link with the pair, or [`UNPAIRED`];
 /// returns the unpaired half-edges in increasing order.
-pub(crate) fn pair_up<L: Layout>(
+fn pair_up<L: Layout>(
     polygons: &Polygons,
     layout: &L,
     heads: &[u32],
@@ -380,7 +463,7 @@ pub(crate) struct Boundary {
 /// Step 3: numbers the boundary half-edges after the interior ones, in the
 /// order of their interior pair, records them as those pairs' pairs, and
 /// links them along the boundary loops.
-pub(crate) fn link_boundary<L: Layout>(
+fn link_boundary<L: Layout>(
     polygons: &Polygons,
     layout: &L,
     valence: &[u32],
@@ -425,7 +508,7 @@ pub(crate) fn link_boundary<L: Layout>(
 /// Step 4: the paper's loop (successor, then pair) from the first half-edge
 /// ending at each vertex must meet every corner at the vertex, or the vertex
 /// joins several fans. `rotate` is one step of the loop.
-pub(crate) fn check_fans<L: Layout>(
+fn check_fans<L: Layout>(
     polygons: &Polygons,
     layout: &L,
     valence: &[u32],

@@ -14,6 +14,7 @@ use super::builder::NONE;
 use super::error::BuildError;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use super::navigation::Navigation;
 use super::polygons::Polygons;
 use super::validate::Issue;
 use super::winged_edge::{self, Side, WingedEdge, WingedEdgeMesh};

@@ -6,11 +6,11 @@ use std::sync::OnceLock;
 
 use glam::Vec3;
 
-use super::builder::{self, General, Layout, NONE, Pairs, Triangles};
+use super::builder::{self, Boundary, Layout, NONE, Pairs};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
-use super::repair;
+use super::structure::tables;
 
 /// A row of the half-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -87,6 +87,88 @@ impl Pairs for Vec<HalfEdge> {
     }
 }
 
+/// The half-edge build assembles the mesh itself: the scan writes the final
+/// rows and the pairing step writes into them, so the peak stays near the
+/// final size. Faces are added last.
+impl builder::Assembly for HalfEdgeMesh {
+    type Mesh = Self;
+    type Pairs = Vec<HalfEdge>;
+
+    fn new(polygons: &Polygons) -> Self {
+        let vertices = polygons
+            .positions()
+            .iter()
+            .map(|&position| Vertex {
+                position,
+                incident_edge: None,
+            })
+            .collect();
+        Self {
+            vertices,
+            faces: Vec::new(),
+            half_edges: Vec::with_capacity(polygons.corner_count()),
+            predecessors: OnceLock::new(),
+        }
+    }
+
+    /// Writes the row, with the bucket link as pair for now; the first
+    /// half-edge to end at a vertex is its lowest-numbered one.
+    #[inline]
+    fn corner<L: Layout>(&mut self, layout: &L, h: u32, end: u32, face: u32, link: u32) {
+        self.half_edges.push(HalfEdge {
+            end_vertex: VertexId::new(end),
+            face: Some(FaceId::new(face)),
+            pair_edge: HalfEdgeId::new(link),
+            successor_edge: HalfEdgeId::new(layout.next(h)),
+        });
+        if let Some(vertex) = self.vertices.get_mut(end as usize)
+            && vertex.incident_edge.is_none()
+        {
+            vertex.incident_edge = Some(HalfEdgeId::new(h));
+        }
+    }
+
+    fn pairs(&mut self) -> &mut Vec<HalfEdge> {
+        &mut self.half_edges
+    }
+
+    fn boundary(&mut self, indices: &[u32], boundary: &Boundary) {
+        self.half_edges.reserve_exact(boundary.twin.len());
+        for (&twin, &next) in boundary.twin.iter().zip(&boundary.next) {
+            self.half_edges.push(HalfEdge {
+                end_vertex: VertexId::new(indices[twin as usize]),
+                face: None,
+                pair_edge: HalfEdgeId::new(twin),
+                successor_edge: HalfEdgeId::new(next),
+            });
+        }
+    }
+
+    fn first_incoming(&self, v: usize) -> u32 {
+        self.vertices[v].incident_edge.map_or(NONE, HalfEdgeId::raw)
+    }
+
+    /// Every row is written by now, boundary ones included.
+    fn around<L: Layout>(&self, _: &L, _: &Boundary, h: u32) -> u32 {
+        let successor = self.half_edges[h as usize].successor_edge;
+        self.half_edges[successor.index()].pair_edge.raw()
+    }
+
+    /// Each face's incident edge is its first half-edge.
+    fn finish<L: Layout>(mut self, polygons: &Polygons, _: &L, _: Boundary) -> Self {
+        self.faces = polygons
+            .offsets()
+            .split_last()
+            .map_or(&[][..], |(_, starts)| starts)
+            .iter()
+            .map(|&start| Face {
+                incident_edge: HalfEdgeId::new(start as u32),
+            })
+            .collect();
+        self
+    }
+}
+
 impl HalfEdgeMesh {
     /// Builds the structure from counter-clockwise polygons, refusing
     /// non-manifold edges and inconsistently oriented input. A vertex where
@@ -113,88 +195,7 @@ impl HalfEdgeMesh {
     /// # Ok::<(), edgewise_core::mesh::BuildError>(())
     /// ```
     pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        repair::build_splitting_fans(polygons, Self::build_as_given)
-    }
-
-    /// [`Self::build`] without the split: refuses non-manifold vertices.
-    fn build_as_given(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        if builder::all_triangles(polygons) {
-            Self::assemble(polygons, &Triangles, true)
-        } else {
-            Self::assemble(polygons, &General::new(polygons), false)
-        }
-    }
-
-    fn assemble<L: Layout>(
-        polygons: &Polygons,
-        layout: &L,
-        triangles: bool,
-    ) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        let indices = polygons.indices();
-        let mut vertices: Vec<Vertex> = polygons
-            .positions()
-            .iter()
-            .map(|&position| Vertex {
-                position,
-                incident_edge: None,
-            })
-            .collect();
-        // Interior rows in corner order, with the bucket link as pair for now;
-        // the first half-edge to end at a vertex is its lowest-numbered one.
-        let mut half_edges = Vec::with_capacity(indices.len());
-        let scanned = builder::scan_faces(polygons, triangles, |h, _, end, face, link| {
-            half_edges.push(HalfEdge {
-                end_vertex: VertexId::new(end),
-                face: Some(FaceId::new(face)),
-                pair_edge: HalfEdgeId::new(link),
-                successor_edge: HalfEdgeId::new(layout.next(h)),
-            });
-            if let Some(vertex) = vertices.get_mut(end as usize)
-                && vertex.incident_edge.is_none()
-            {
-                vertex.incident_edge = Some(HalfEdgeId::new(h));
-            }
-        })?;
-        let valence = &scanned.valence;
-        let unpaired = builder::pair_up(polygons, layout, &scanned.heads, &mut half_edges)?;
-        let boundary =
-            builder::link_boundary(polygons, layout, valence, unpaired, &mut half_edges)?;
-        half_edges.reserve_exact(boundary.twin.len());
-        for (&twin, &next) in boundary.twin.iter().zip(&boundary.next) {
-            half_edges.push(HalfEdge {
-                end_vertex: VertexId::new(indices[twin as usize]),
-                face: None,
-                pair_edge: HalfEdgeId::new(twin),
-                successor_edge: HalfEdgeId::new(next),
-            });
-        }
-        builder::check_fans(
-            polygons,
-            layout,
-            valence,
-            |v| vertices[v].incident_edge.map_or(NONE, HalfEdgeId::raw),
-            |h| {
-                half_edges[half_edges[h as usize].successor_edge.index()]
-                    .pair_edge
-                    .raw()
-            },
-        )?;
-        let faces = polygons
-            .offsets()
-            .split_last()
-            .map_or(&[][..], |(_, starts)| starts)
-            .iter()
-            .map(|&start| Face {
-                incident_edge: HalfEdgeId::new(start as u32),
-            })
-            .collect();
-        let mesh = Self {
-            vertices,
-            faces,
-            half_edges,
-            predecessors: OnceLock::new(),
-        };
-        Ok((mesh, scanned.warnings))
+        builder::build::<Self>(polygons)
     }
 
     /// Takes the three tables as written (for example from a `.htb` file)
@@ -230,68 +231,11 @@ impl HalfEdgeMesh {
         })
     }
 
-    /// Gives the tables back, for editing.
-    pub fn into_raw_parts(self) -> (Vec<Vertex>, Vec<Face>, Vec<HalfEdge>) {
-        (self.vertices, self.faces, self.half_edges)
-    }
-
-    /// The vertex table.
-    pub fn vertices(&self) -> &[Vertex] {
-        &self.vertices
-    }
-
-    /// The face table.
-    pub fn faces(&self) -> &[Face] {
-        &self.faces
-    }
-
-    /// The half-edge table.
-    pub fn half_edges(&self) -> &[HalfEdge] {
-        &self.half_edges
-    }
-
-    /// Number of vertices.
-    pub fn vertex_count(&self) -> usize {
-        self.vertices.len()
-    }
-
-    /// Number of faces.
-    pub fn face_count(&self) -> usize {
-        self.faces.len()
-    }
-
-    /// Number of half-edges, interior and boundary.
-    pub fn half_edge_count(&self) -> usize {
-        self.half_edges.len()
-    }
+    tables!(Vertex, Face, half_edges: HalfEdge, "half-edge", half_edge(HalfEdgeId), half_edge_count);
 
     /// Number of edges (half-edge pairs).
     pub fn edge_count(&self) -> usize {
         self.half_edges.len() / 2
-    }
-
-    /// A vertex row.
-    #[inline]
-    pub fn vertex(&self, v: VertexId) -> Option<&Vertex> {
-        self.vertices.get(v.index())
-    }
-
-    /// A face row.
-    #[inline]
-    pub fn face(&self, f: FaceId) -> Option<&Face> {
-        self.faces.get(f.index())
-    }
-
-    /// A half-edge row.
-    #[inline]
-    pub fn half_edge(&self, h: HalfEdgeId) -> Option<&HalfEdge> {
-        self.half_edges.get(h.index())
-    }
-
-    /// The position of a vertex.
-    #[inline]
-    pub fn position(&self, v: VertexId) -> Option<Vec3> {
-        self.vertex(v).map(|vertex| vertex.position)
     }
 
     /// The start vertex of a half-edge: its pair's end vertex (derived).

@@ -168,3 +168,72 @@ impl Mesh {
         }
     }
 }
+
+/// Writes a structure's table accessors inside its `impl`: the rows differ
+/// between the structures (each module's `Vertex` and `Face`, then the
+/// half-edge or edge rows), the way to read them does not. The structure
+/// needs `vertices`, `faces` and `$edges` fields, and its vertex rows a
+/// `position`.
+macro_rules! tables {
+    ($vertex:ty, $face:ty, $edges:ident: $edge:ty, $what:literal, $row:ident($id:ty), $count:ident) => {
+        /// Gives the tables back, for editing.
+        pub fn into_raw_parts(self) -> (Vec<$vertex>, Vec<$face>, Vec<$edge>) {
+            (self.vertices, self.faces, self.$edges)
+        }
+
+        /// The vertex table.
+        pub fn vertices(&self) -> &[$vertex] {
+            &self.vertices
+        }
+
+        /// The face table.
+        pub fn faces(&self) -> &[$face] {
+            &self.faces
+        }
+
+        #[doc = concat!("The ", $what, " table.")]
+        pub fn $edges(&self) -> &[$edge] {
+            &self.$edges
+        }
+
+        /// Number of vertices.
+        pub fn vertex_count(&self) -> usize {
+            self.vertices.len()
+        }
+
+        /// Number of faces.
+        pub fn face_count(&self) -> usize {
+            self.faces.len()
+        }
+
+        #[doc = concat!("Number of ", $what, "s (rows of the ", $what, " table).")]
+        pub fn $count(&self) -> usize {
+            self.$edges.len()
+        }
+
+        /// A vertex row.
+        #[inline]
+        pub fn vertex(&self, v: $crate::mesh::VertexId) -> Option<&$vertex> {
+            self.vertices.get(v.index())
+        }
+
+        /// A face row.
+        #[inline]
+        pub fn face(&self, f: $crate::mesh::FaceId) -> Option<&$face> {
+            self.faces.get(f.index())
+        }
+
+        #[doc = concat!("The ", $what, " row with this id.")]
+        #[inline]
+        pub fn $row(&self, id: $id) -> Option<&$edge> {
+            self.$edges.get(id.index())
+        }
+
+        /// The position of a vertex.
+        #[inline]
+        pub fn position(&self, v: $crate::mesh::VertexId) -> Option<::glam::Vec3> {
+            self.vertex(v).map(|vertex| vertex.position)
+        }
+    };
+}
+pub(crate) use tables;

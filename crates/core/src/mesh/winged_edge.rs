@@ -9,11 +9,11 @@
 
 use glam::Vec3;
 
-use super::builder::{self, General, Layout, NONE, Triangles};
+use super::builder::{self, Boundary, Layout, NONE};
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
-use super::repair;
+use super::structure::tables;
 
 /// A row of the winged-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -63,86 +63,79 @@ pub struct WingedEdgeMesh {
     pub(crate) edges: Vec<WingedEdge>,
 }
 
-impl WingedEdgeMesh {
-    /// Builds the structure from counter-clockwise polygons, refusing
-    /// non-manifold edges and inconsistently oriented input. A vertex where
-    /// separate fans of faces meet is split into one vertex per fan (new ids
-    /// after the input's), so the result is manifold. Returns the mesh and
-    /// warnings about what it kept or split (unused and split vertices).
-    ///
-    /// Vertices and faces keep their numbers; edges are numbered in order of
-    /// first appearance walking the faces in order and point the way they
-    /// first appear (so their first face is their left face). Incident edges
-    /// are the lowest-numbered candidates. Missing faces on the boundary are
-    /// `None`, and the wings on that side link along the boundary loop.
-    ///
-    /// ```
-    /// use edgewise_core::mesh::{EdgeId, FaceId, Polygons, VertexId, WingedEdgeMesh};
-    /// use glam::Vec3;
-    ///
-    /// let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
-    /// let (mesh, _) = WingedEdgeMesh::build(&Polygons::from_triangles(positions, &[[0, 1, 2]]))?;
-    /// let edge = mesh.edge(EdgeId::new(0)).expect("three edges");
-    /// assert_eq!((edge.start_vertex, edge.end_vertex), (VertexId::new(0), VertexId::new(1)));
-    /// assert_eq!((edge.left_face, edge.right_face), (Some(FaceId::new(0)), None));
-    /// assert_eq!(edge.left_predecessor, EdgeId::new(1)); // 1→2 comes before 0→1 clockwise
-    /// # Ok::<(), edgewise_core::mesh::BuildError>(())
-    /// ```
-    pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        repair::build_splitting_fans(polygons, Self::build_as_given)
-    }
+/// The winged-edge build's tables until the edges are numbered: the pair of
+/// each interior half-edge, and the lowest-numbered one ending at each vertex.
+struct WingedEdgeAssembly {
+    pair: Vec<u32>,
+    first_incoming: Vec<u32>,
+}
 
-    /// [`Self::build`] without the split: refuses non-manifold vertices.
-    fn build_as_given(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
-        if builder::all_triangles(polygons) {
-            Self::assemble(polygons, &Triangles, true)
-        } else {
-            Self::assemble(polygons, &General::new(polygons), false)
+impl builder::Assembly for WingedEdgeAssembly {
+    type Mesh = WingedEdgeMesh;
+    type Pairs = Vec<u32>;
+
+    fn new(polygons: &Polygons) -> Self {
+        Self {
+            pair: Vec::with_capacity(polygons.corner_count()),
+            first_incoming: vec![NONE; polygons.vertex_count()],
         }
     }
 
-    fn assemble<L: Layout>(
+    #[inline]
+    fn corner<L: Layout>(&mut self, _: &L, h: u32, end: u32, _: u32, link: u32) {
+        self.pair.push(link);
+        if let Some(slot) = self.first_incoming.get_mut(end as usize)
+            && *slot == NONE
+        {
+            *slot = h;
+        }
+    }
+
+    fn pairs(&mut self) -> &mut Vec<u32> {
+        &mut self.pair
+    }
+
+    /// Boundary half-edges get no rows: their links stay in `boundary`.
+    fn boundary(&mut self, _: &[u32], _: &Boundary) {}
+
+    fn first_incoming(&self, v: usize) -> u32 {
+        self.first_incoming[v]
+    }
+
+    /// Half-edge `h` is interior below `n`, the number of corners (one pair
+    /// entry each), and boundary half-edge `h - n` from there on.
+    fn around<L: Layout>(&self, layout: &L, boundary: &Boundary, h: u32) -> u32 {
+        let n = self.pair.len() as u32;
+        let s = if h < n {
+            layout.next(h)
+        } else {
+            boundary.next[(h - n) as usize]
+        };
+        if s < n {
+            self.pair[s as usize]
+        } else {
+            boundary.twin[(s - n) as usize]
+        }
+    }
+
+    /// Numbers the edges and writes the three tables.
+    fn finish<L: Layout>(
+        self,
         polygons: &Polygons,
         layout: &L,
-        triangles: bool,
-    ) -> Result<(Self, Vec<BuildWarning>), BuildError> {
+        boundary: Boundary,
+    ) -> WingedEdgeMesh {
+        let Self {
+            pair,
+            first_incoming,
+        } = self;
+        drop(first_incoming);
         let indices = polygons.indices();
         let n = indices.len() as u32;
-        // The pair of each interior half-edge (the bucket link for now), and the
-        // lowest-numbered half-edge ending at each vertex.
-        let mut pair = Vec::with_capacity(indices.len());
-        let mut first_incoming = vec![NONE; polygons.vertex_count()];
-        let scanned = builder::scan_faces(polygons, triangles, |h, _, end, _, link| {
-            pair.push(link);
-            if let Some(slot) = first_incoming.get_mut(end as usize)
-                && *slot == NONE
-            {
-                *slot = h;
-            }
-        })?;
-        let valence = &scanned.valence;
-        let unpaired = builder::pair_up(polygons, layout, &scanned.heads, &mut pair)?;
-        let boundary = builder::link_boundary(polygons, layout, valence, unpaired, &mut pair)?;
-        builder::check_fans(
-            polygons,
-            layout,
-            valence,
-            |v| first_incoming[v],
-            |h| {
-                let s = if h < n {
-                    layout.next(h)
-                } else {
-                    boundary.next[(h - n) as usize]
-                };
-                if s < n {
-                    pair[s as usize]
-                } else {
-                    boundary.twin[(s - n) as usize]
-                }
-            },
-        )?;
-        drop(first_incoming);
-        let (boundary_twin, boundary_next) = (boundary.twin, boundary.next);
+        let Boundary {
+            twin: boundary_twin,
+            next: boundary_next,
+        } = boundary;
         // Number the edges in place: an interior half-edge whose pair comes later
         // (or is a boundary half-edge) is the first appearance of its edge.
         let mut edge_of = pair;
@@ -228,14 +221,40 @@ impl WingedEdgeMesh {
                 incident_edge: (e != NONE).then_some(EdgeId::new(e)),
             })
             .collect();
-        Ok((
-            Self {
-                vertices,
-                faces,
-                edges,
-            },
-            scanned.warnings,
-        ))
+        WingedEdgeMesh {
+            vertices,
+            faces,
+            edges,
+        }
+    }
+}
+
+impl WingedEdgeMesh {
+    /// Builds the structure from counter-clockwise polygons, with the same
+    /// refusals, vertex splits and warnings as
+    /// [`HalfEdgeMesh::build`](super::HalfEdgeMesh::build): one driver builds
+    /// both.
+    ///
+    /// Vertices and faces keep their numbers; edges are numbered in order of
+    /// first appearance walking the faces in order and point the way they
+    /// first appear (so their first face is their left face). Incident edges
+    /// are the lowest-numbered candidates. Missing faces on the boundary are
+    /// `None`, and the wings on that side link along the boundary loop.
+    ///
+    /// ```
+    /// use edgewise_core::mesh::{EdgeId, FaceId, Polygons, VertexId, WingedEdgeMesh};
+    /// use glam::Vec3;
+    ///
+    /// let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
+    /// let (mesh, _) = WingedEdgeMesh::build(&Polygons::from_triangles(positions, &[[0, 1, 2]]))?;
+    /// let edge = mesh.edge(EdgeId::new(0)).expect("three edges");
+    /// assert_eq!((edge.start_vertex, edge.end_vertex), (VertexId::new(0), VertexId::new(1)));
+    /// assert_eq!((edge.left_face, edge.right_face), (Some(FaceId::new(0)), None));
+    /// assert_eq!(edge.left_predecessor, EdgeId::new(1)); // 1→2 comes before 0→1 clockwise
+    /// # Ok::<(), edgewise_core::mesh::BuildError>(())
+    /// ```
+    pub fn build(polygons: &Polygons) -> Result<(Self, Vec<BuildWarning>), BuildError> {
+        builder::build::<WingedEdgeAssembly>(polygons)
     }
 
     /// Takes the three tables as written (for example from a `.wtb` file)
@@ -250,64 +269,7 @@ impl WingedEdgeMesh {
         }
     }
 
-    /// Gives the tables back, for editing.
-    pub fn into_raw_parts(self) -> (Vec<Vertex>, Vec<Face>, Vec<WingedEdge>) {
-        (self.vertices, self.faces, self.edges)
-    }
-
-    /// The vertex table.
-    pub fn vertices(&self) -> &[Vertex] {
-        &self.vertices
-    }
-
-    /// The face table.
-    pub fn faces(&self) -> &[Face] {
-        &self.faces
-    }
-
-    /// The edge table.
-    pub fn edges(&self) -> &[WingedEdge] {
-        &self.edges
-    }
-
-    /// Number of vertices.
-    pub fn vertex_count(&self) -> usize {
-        self.vertices.len()
-    }
-
-    /// Number of faces.
-    pub fn face_count(&self) -> usize {
-        self.faces.len()
-    }
-
-    /// Number of edges.
-    pub fn edge_count(&self) -> usize {
-        self.edges.len()
-    }
-
-    /// A vertex row.
-    #[inline]
-    pub fn vertex(&self, v: VertexId) -> Option<&Vertex> {
-        self.vertices.get(v.index())
-    }
-
-    /// A face row.
-    #[inline]
-    pub fn face(&self, f: FaceId) -> Option<&Face> {
-        self.faces.get(f.index())
-    }
-
-    /// An edge row.
-    #[inline]
-    pub fn edge(&self, e: EdgeId) -> Option<&WingedEdge> {
-        self.edges.get(e.index())
-    }
-
-    /// The position of a vertex.
-    #[inline]
-    pub fn position(&self, v: VertexId) -> Option<Vec3> {
-        self.vertex(v).map(|vertex| vertex.position)
-    }
+    tables!(Vertex, Face, edges: WingedEdge, "edge", edge(EdgeId), edge_count);
 }
 
 /// One side of a winged edge: the left face's or the right face's.
