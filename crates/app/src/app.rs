@@ -30,6 +30,8 @@ pub mod algorithm_ui;
 pub mod command;
 pub mod course;
 pub mod embed;
+pub mod files;
+mod open_dialog;
 pub mod settings_ui;
 pub(crate) mod tabs;
 mod twin;

@@ -9,11 +9,9 @@ mod backend;
 pub mod code_editor;
 pub mod course_link;
 mod document;
-pub mod files;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod obj_editor;
-mod open_dialog;
 pub mod paint;
 mod platform;
 pub mod samples;
@@ -28,9 +26,8 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
+pub use algorithm::Argument;
 pub use app::command::{Command, CommandError, Reply};
-pub use app::{
-    EdgewiseApp, algorithm_ui::Argument, course::FetchedMesh, embed::Embed,
-    settings_ui::Presentation,
-};
+pub use app::files;
+pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;

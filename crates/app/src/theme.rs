@@ -100,8 +100,12 @@ impl Theme {
     }
 }
 
-/// Registers the bold code face as the font family
-/// [`crate::algorithm::highlight::BOLD`], and as the last fallback of the
+/// The font family name of the bold code face, registered by
+/// [`install_fonts`]; the algorithm view sets keywords in it.
+pub const CODE_BOLD_FAMILY: &str = "code-bold";
+
+/// Registers the bold code face as the font family [`CODE_BOLD_FAMILY`],
+/// and as the last fallback of the
 /// other families for the control symbols (▶ ◀ ❚ ✖) the default fonts lack.
 /// Call before any text is laid out in the first frame, so it applies at once.
 pub fn install_fonts(ctx: &egui::Context) {
@@ -112,7 +116,7 @@ pub fn install_fonts(ctx: &egui::Context) {
         FontData::from_static(CODE_BOLD),
         vec![
             family(
-                egui::FontFamily::Name(crate::algorithm::highlight::BOLD.into()),
+                egui::FontFamily::Name(CODE_BOLD_FAMILY.into()),
                 FontPriority::Highest,
             ),
             family(egui::FontFamily::Proportional, FontPriority::Lowest),

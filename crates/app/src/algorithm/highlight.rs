@@ -1,6 +1,7 @@
 //! Syntax colouring of algorithm source, from the language's own lexer, so
 //! the view and the compiler never disagree about what a word is.
 
+use crate::theme::CODE_BOLD_FAMILY;
 use edgewise_core::schema::Structure;
 use std::ops::Range;
 
@@ -197,7 +198,10 @@ impl CodeStyle {
             Class::Plain => {}
             Class::Keyword => {
                 format.color = self.keyword;
-                format.font_id = FontId::new(self.font.size, egui::FontFamily::Name(BOLD.into()));
+                format.font_id = FontId::new(
+                    self.font.size,
+                    egui::FontFamily::Name(CODE_BOLD_FAMILY.into()),
+                );
             }
             Class::TypeName => format.color = self.type_name,
             Class::Number => format.color = self.number,
@@ -210,9 +214,6 @@ impl CodeStyle {
         format
     }
 }
-
-/// The font family name of the bold code face, registered by [`install_fonts`].
-pub const BOLD: &str = "code-bold";
 
 #[cfg(test)]
 mod tests {

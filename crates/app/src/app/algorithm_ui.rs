@@ -10,17 +10,10 @@ use edgewise_core::schema::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
-    algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
+    algorithm::{Argument, Origin, Run, editor::EditorCommand, session::argument_value},
     state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
 };
-
-/// One argument of `run(name, args)` as JavaScript or a URL gives it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Argument {
-    Number(f64),
-    Boolean(bool),
-}
 
 impl EdgewiseApp {
     /// [`Command::LoadAlgorithms`]: adds the algorithms of `source` to the

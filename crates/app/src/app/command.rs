@@ -8,7 +8,8 @@ use std::fmt;
 
 use edgewise_core::{mesh::Structure, schema::ElementRef};
 
-use crate::{Argument, EdgewiseApp, files::SaveFormat};
+use super::files::SaveFormat;
+use crate::{Argument, EdgewiseApp};
 
 /// Something the user asked the app to do.
 #[derive(Clone, Debug, PartialEq)]
