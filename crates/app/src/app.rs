@@ -1,7 +1,7 @@
 //! The top-level eframe application: a mesh document, the 3D view, the
 //! tables, and the commands the JavaScript API and the UI share.
 
-use crate::app::command::{Command, CommandError};
+use crate::command::{Command, CommandError};
 use edgewise_core::schema::{Column, ElementKind, ElementRef};
 use egui_extras::{Size, StripBuilder};
 
@@ -27,9 +27,9 @@ use crate::{
 };
 
 pub mod algorithm_ui;
-pub mod command;
 pub mod course;
 pub mod embed;
+pub mod execute;
 pub mod files;
 mod open_dialog;
 pub mod settings_ui;

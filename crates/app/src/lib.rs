@@ -7,6 +7,7 @@ pub mod algorithm;
 mod app;
 mod backend;
 pub mod code_editor;
+pub mod command;
 pub mod course_link;
 mod document;
 #[doc(hidden)]
@@ -15,6 +16,7 @@ pub mod obj_editor;
 pub mod paint;
 mod platform;
 pub mod samples;
+pub mod save_format;
 pub mod selection;
 pub mod settings;
 pub mod state;
@@ -27,7 +29,6 @@ pub mod view3d;
 pub mod web;
 
 pub use algorithm::Argument;
-pub use app::command::{Command, CommandError, Reply};
 pub use app::files;
 pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;

@@ -6,7 +6,7 @@ mod support;
 
 use std::path::Path;
 
-use edgewise_app::{EdgewiseApp, code_editor::Diagnostic, files::SaveFormat};
+use edgewise_app::{EdgewiseApp, code_editor::Diagnostic, save_format::SaveFormat};
 use edgewise_core::{formats, mesh::Structure};
 use egui_kittest::{Harness, kittest::Queryable as _};
 

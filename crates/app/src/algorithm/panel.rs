@@ -17,35 +17,28 @@ use super::{
     AlgorithmRun, Algorithms, Run, TraceFrame,
     highlight::{CodeStyle, Mark},
 };
-use crate::theme::Theme;
+use crate::{command::Command, theme::Theme};
 
 impl Algorithms {
-    /// Draws the algorithm view. Returns a message when a command failed.
+    /// Draws the algorithm view. Returns what the user asked for, for the
+    /// app to carry out.
     pub fn panel_ui(
         &mut self,
         run: &mut AlgorithmRun,
         ui: &mut egui::Ui,
         theme: &Theme,
         mesh: Option<&Mesh>,
-    ) -> Option<String> {
+    ) -> Option<Command> {
         match &run.run {
-            Run::Idle => self.library_ui(run, ui, mesh),
-            Run::Picking(_) => picking_ui(run, ui, mesh),
-            Run::Tracing(_) => {
-                self.tracing_ui(run, ui, theme);
-                None
-            }
+            Run::Idle => self.library_ui(ui, mesh),
+            Run::Picking(_) => picking_ui(run, ui),
+            Run::Tracing(_) => self.tracing_ui(run, ui, theme),
         }
     }
 
     /// With nothing running: the algorithms for the mesh's structure, one
     /// click from running.
-    fn library_ui(
-        &self,
-        run: &mut AlgorithmRun,
-        ui: &mut egui::Ui,
-        mesh: Option<&Mesh>,
-    ) -> Option<String> {
+    fn library_ui(&self, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<Command> {
         let Some(mesh) = mesh else {
             ui.weak("Open a mesh, then choose an algorithm to run on it.");
             return None;
@@ -69,43 +62,51 @@ impl Algorithms {
                         .button(RichText::new(&algorithm.name).monospace())
                         .on_hover_text(algorithm_hover(algorithm));
                     if button.clicked() {
-                        chosen = Some(Arc::clone(algorithm));
+                        chosen = Some(algorithm.name.clone());
                     }
                 }
             });
-        let algorithm = chosen?;
-        run.begin(algorithm, &[], mesh).err()
+        chosen.map(|name| Command::RunAlgorithm {
+            name,
+            args: Vec::new(),
+        })
     }
 
-    fn tracing_ui(&mut self, run: &mut AlgorithmRun, ui: &mut egui::Ui, theme: &Theme) {
-        let Some(session) = run.session() else {
-            return;
-        };
+    fn tracing_ui(
+        &mut self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+        theme: &Theme,
+    ) -> Option<Command> {
+        let session = run.session()?;
         let algorithm = Arc::clone(session.trace.algorithm());
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
         header_ui(ui, &algorithm);
-        self.controls_ui(run, ui, step, steps, playing);
+        let control = self.controls_ui(run, ui, step, steps, playing);
         let breakpoints = self.breakpoints(run.algorithm());
         let Some(frame) = run.frame(theme).cloned() else {
-            return;
+            return control;
         };
         status_ui(ui, &frame, theme);
         ui.add_space(4.0);
         variables_ui(ui, &frame, theme);
         ui.separator();
-        self.source_ui(run, ui, &algorithm, &frame, &breakpoints, theme);
+        let toggled = self.source_ui(run, ui, &algorithm, &frame, &breakpoints, theme);
         ui.separator();
         legend_ui(ui, theme);
+        control.or(toggled)
     }
 
     /// The step buttons, the step slider and the delay, for the panel and for
     /// embedded views.
-    pub fn trace_controls_ui(&mut self, run: &mut AlgorithmRun, ui: &mut egui::Ui) {
-        let Some(session) = run.session() else {
-            return;
-        };
+    pub fn trace_controls_ui(
+        &mut self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+    ) -> Option<Command> {
+        let session = run.session()?;
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
-        self.controls_ui(run, ui, step, steps, playing);
+        self.controls_ui(run, ui, step, steps, playing)
     }
 
     fn controls_ui(
@@ -115,36 +116,37 @@ impl Algorithms {
         step: usize,
         steps: usize,
         playing: bool,
-    ) {
+    ) -> Option<Command> {
         let now = ui.input(|i| i.time);
+        let mut command = None;
         ui.horizontal_wrapped(|ui| {
             if ui
                 .add_enabled(step > 0, egui::Button::new("|◀"))
                 .on_hover_text("Go to the start (Home)")
                 .clicked()
             {
-                run.goto(0).ok();
+                command = Some(Command::Goto(0));
             }
             if ui
                 .add_enabled(step > 0, egui::Button::new("◀ Back"))
                 .on_hover_text("Step back (←)")
                 .clicked()
             {
-                run.back(1).ok();
+                command = Some(Command::Back(1));
             }
             if ui
                 .add_enabled(step < steps, egui::Button::new("Step ▶"))
                 .on_hover_text("Step forward (Space or →)")
                 .clicked()
             {
-                run.step(1).ok();
+                command = Some(Command::Step(1));
             }
             if ui
                 .add_enabled(step < steps, egui::Button::new("▶|"))
                 .on_hover_text("Go to the end (End)")
                 .clicked()
             {
-                run.goto(steps).ok();
+                command = Some(Command::Goto(steps));
             }
             let play_label = if playing { "❚❚ Pause" } else { "▶ Play" };
             if ui
@@ -160,14 +162,14 @@ impl Algorithms {
                     .on_hover_text("Go to the next step on a breakpoint line")
                     .clicked()
             {
-                self.continue_to_breakpoint(run).ok();
+                command = Some(Command::ContinueToBreakpoint);
             }
             if ui
                 .button("✖ Abort")
                 .on_hover_text("Stop the algorithm")
                 .clicked()
             {
-                run.abort().ok();
+                command = Some(Command::Abort);
             }
         });
         ui.horizontal(|ui| {
@@ -176,7 +178,7 @@ impl Algorithms {
                 .show_value(false)
                 .text(format!("step {step} of {steps}"));
             if ui.add(slider).changed() {
-                run.goto(k).ok();
+                command = Some(Command::Goto(k));
             }
         });
         ui.add(
@@ -185,6 +187,7 @@ impl Algorithms {
                 .suffix(" s")
                 .text("delay between steps when playing"),
         );
+        command
     }
 
     fn source_ui(
@@ -195,7 +198,7 @@ impl Algorithms {
         frame: &TraceFrame,
         breakpoints: &std::collections::BTreeSet<u32>,
         theme: &Theme,
-    ) {
+    ) -> Option<Command> {
         let style = CodeStyle::new(self.code_size, theme.dark);
         let source = Arc::clone(&algorithm.source);
         let lines = line_ranges(&source, algorithm.first_line, algorithm.last_line);
@@ -293,15 +296,13 @@ impl Algorithms {
         if scrolled || frame.step == 0 {
             run.scrolled_to = Some((0, scroll_key as usize));
         }
-        if let Some(line) = toggled {
-            self.toggle_breakpoint(run, line);
-        }
+        toggled.map(Command::ToggleBreakpoint)
     }
 }
 
 /// While inputs are being picked: the prompt, fields for Integer and
 /// Boolean parameters, Start and Cancel.
-fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui, mesh: Option<&Mesh>) -> Option<String> {
+fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui) -> Option<Command> {
     let Run::Picking(pending) = &mut run.run else {
         return None;
     };
@@ -351,12 +352,9 @@ fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui, mesh: Option<&Mesh>) ->
         run.changed();
     }
     if cancel {
-        return run.abort().err();
+        return Some(Command::Abort);
     }
-    if start && let Some(mesh) = mesh {
-        return run.start(mesh).err();
-    }
-    None
+    start.then_some(Command::Start)
 }
 
 /// The algorithm's name, signature and description.

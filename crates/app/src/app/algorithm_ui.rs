@@ -1,7 +1,7 @@
 //! The app's algorithm commands (shared by the UI and the JavaScript API),
 //! the Algorithm menu, the algorithm panel and the stepping keys.
 
-use crate::app::command::{Command, CommandError};
+use crate::command::{Command, CommandError};
 use crate::platform::ALGORITHM_FILES;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::sync::Arc;
@@ -268,11 +268,11 @@ impl EdgewiseApp {
             AlgorithmTab::Run => {
                 let tab = &mut self.tabs[self.active_tab];
                 let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
-                if let Some(message) = self
+                if let Some(command) = self
                     .algorithms
                     .panel_ui(&mut tab.run, ui, &self.theme, mesh)
                 {
-                    self.report(message);
+                    self.issue(command);
                 }
             }
             AlgorithmTab::Write => {

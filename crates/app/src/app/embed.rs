@@ -30,8 +30,12 @@ impl EdgewiseApp {
                         ui.strong(egui::RichText::new(&algorithm.name).monospace());
                     }
                 });
-                self.algorithms
+                let asked = self
+                    .algorithms
                     .trace_controls_ui(&mut self.tabs[self.active_tab].run, ui);
+                if let Some(command) = asked {
+                    self.issue(command);
+                }
             });
         }
         if embed.tables {

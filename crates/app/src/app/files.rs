@@ -8,13 +8,14 @@
 //! natively (there is no native file dialog, to keep the desktop build free
 //! of GTK and D-Bus dependencies).
 
-use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
+use edgewise_core::formats::{self, Format};
 
 use crate::{
     EdgewiseApp,
-    app::command::{Command, CommandError},
     app::open_dialog::StructureDialog,
+    command::{Command, CommandError},
     platform::{FileIo, PendingFile},
+    save_format::SaveFormat,
 };
 
 /// The extensions Edgewise opens, for messages and the file picker.
@@ -57,77 +58,6 @@ pub fn is_algorithm_file(name: &str) -> bool {
     std::path::Path::new(name)
         .extension()
         .is_some_and(|ext| ext.eq_ignore_ascii_case("alg"))
-}
-
-/// A format the Save as… menu and `exportMesh` offer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SaveFormat {
-    Wtb,
-    Htb,
-    PlyText,
-    PlyBinary,
-    Obj,
-}
-
-impl SaveFormat {
-    pub const ALL: [Self; 5] = [
-        Self::Wtb,
-        Self::Htb,
-        Self::PlyText,
-        Self::PlyBinary,
-        Self::Obj,
-    ];
-
-    /// The menu entry.
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Wtb => "Winged-edge table (.wtb)",
-            Self::Htb => "Half-edge table (.htb)",
-            Self::PlyText => "PLY, text (.ply)",
-            Self::PlyBinary => "PLY, binary (.ply)",
-            Self::Obj => "Wavefront OBJ (.obj)",
-        }
-    }
-
-    /// The JavaScript API's name: `'wtb'`, `'htb'`, `'ply'`, `'ply-binary'`, `'obj'`.
-    pub fn key(self) -> &'static str {
-        match self {
-            Self::Wtb => "wtb",
-            Self::Htb => "htb",
-            Self::PlyText => "ply",
-            Self::PlyBinary => "ply-binary",
-            Self::Obj => "obj",
-        }
-    }
-
-    /// Parses [`Self::key`].
-    pub fn parse(key: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|f| f.key() == key)
-    }
-
-    pub fn format(self) -> Format {
-        match self {
-            Self::Wtb => Format::Wtb,
-            Self::Htb => Format::Htb,
-            Self::PlyText | Self::PlyBinary => Format::Ply,
-            Self::Obj => Format::Obj,
-        }
-    }
-
-    /// Whether the output is bytes rather than text.
-    pub fn is_binary(self) -> bool {
-        self == Self::PlyBinary
-    }
-
-    fn options(self) -> SaveOptions {
-        SaveOptions {
-            ply_encoding: if self.is_binary() {
-                PlyEncoding::BinaryLittleEndian
-            } else {
-                PlyEncoding::Ascii
-            },
-        }
-    }
 }
 
 /// The open mesh written in a format, with the name to save it under.

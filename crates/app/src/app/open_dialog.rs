@@ -5,7 +5,7 @@ use edgewise_core::mesh::Structure;
 
 use crate::{
     EdgewiseApp,
-    app::command::{Command, CommandError},
+    command::{Command, CommandError},
 };
 
 /// A polygon file waiting for the student to choose a structure.

@@ -6,7 +6,7 @@ use edgewise_core::mesh::Structure;
 use edgewise_core::schema::ElementKind;
 
 use super::{EdgewiseApp, twin::Twin};
-use crate::app::command::{Command, CommandError};
+use crate::command::{Command, CommandError};
 use crate::{
     algorithm::AlgorithmRun,
     document::Document,

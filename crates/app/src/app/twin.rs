@@ -7,7 +7,7 @@ use edgewise_core::mesh::EdgeCorrespondence;
 use edgewise_core::schema::ElementRef;
 
 use super::{EdgewiseApp, element_of};
-use crate::app::command::CommandError;
+use crate::command::CommandError;
 use crate::{
     document::{Document, map_element},
     paint::Paint,

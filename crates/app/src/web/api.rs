@@ -23,9 +23,11 @@ use super::arguments::{
 };
 use super::{after_a_paint, with_app};
 use crate::{
-    Command, EdgewiseApp,
-    files::{ANNOUNCE_BYTES, SaveFormat, SavedFile, opening_label},
+    EdgewiseApp,
+    command::Command,
+    files::{ANNOUNCE_BYTES, SavedFile, opening_label},
     platform::js_error_text,
+    save_format::SaveFormat,
 };
 
 /// A command of the API: its name, the call as messages show it, and how

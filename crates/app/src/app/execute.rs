@@ -1,133 +1,13 @@
-//! One way in for everything a user can ask of the app. Menus, keys, the
-//! JavaScript API and course links all build a [`Command`] and hand it to
-//! [`EdgewiseApp::execute`], which carries it out on the active tab and, if
-//! it is refused, records why in one place: the tab's error panel and
-//! `state().error`.
-
-use std::fmt;
+//! [`EdgewiseApp::execute`]: carrying out a [`Command`] on the active tab,
+//! and the shorthand methods the Rust API offers for each.
 
 use edgewise_core::{mesh::Structure, schema::ElementRef};
 
-use super::files::SaveFormat;
-use crate::{Argument, EdgewiseApp};
-
-/// Something the user asked the app to do.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Command {
-    /// Opens mesh text or bytes; `name`'s extension (or the content) gives
-    /// the format, and `structure` the structure to build PLY and OBJ as.
-    LoadMesh {
-        bytes: Vec<u8>,
-        name: String,
-        structure: Option<Structure>,
-    },
-    /// Opens a built-in sample by name (a file stem in meshes/).
-    LoadSample {
-        name: String,
-        structure: Option<Structure>,
-    },
-    /// A file from disk, a drop or the picker: `.alg` files go to the
-    /// algorithm editor, table files open as their structure, PLY and OBJ
-    /// ask which structure to build.
-    OpenFile {
-        name: String,
-        bytes: Vec<u8>,
-    },
-    /// Answers the structure dialog; `None` cancels it.
-    ChooseStructure(Option<Structure>),
-    /// Selects an element, or clears the selection.
-    Select(Option<ElementRef>),
-    /// Converts the open mesh, and builds later PLY and OBJ loads, as
-    /// `structure`.
-    SetStructure(Structure),
-    /// Compiles algorithms and adds them to the menu.
-    LoadAlgorithms {
-        source: String,
-        file: String,
-    },
-    /// Starts an algorithm with the given inputs; missing element inputs
-    /// are then picked by clicking.
-    RunAlgorithm {
-        name: String,
-        args: Vec<(String, Argument)>,
-    },
-    /// Gives the algorithm waiting for inputs a picked element.
-    Pick(ElementRef),
-    /// Steps the trace forward.
-    Step(usize),
-    /// Steps the trace back.
-    Back(usize),
-    /// Goes to a step (clamped to the trace).
-    Goto(usize),
-    /// Stops the running algorithm.
-    Abort,
-    /// Sets or clears a breakpoint on a source line of the running algorithm.
-    ToggleBreakpoint(u32),
-    NewTab,
-    SwitchTab(usize),
-    /// Closes a tab; the last one stays.
-    CloseTab(usize),
-    /// Shows the mesh as both structures side by side, or one.
-    SetSideBySide(bool),
-    /// Saves the open mesh in a format: a download in the browser, a file
-    /// natively.
-    SaveAs(SaveFormat),
-}
-
-/// What a command that succeeded has to say.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Reply {
-    Done,
-    /// The names of the algorithms loaded.
-    Algorithms(Vec<String>),
-    /// The index of the tab opened.
-    Tab(usize),
-}
-
-/// Why a command was refused, in one or more sentences that name the place
-/// (`file:line:column`, the element, the parameter).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CommandError(String);
-
-impl CommandError {
-    pub fn as_str(&self) -> &str {
-        &self.0
-    }
-}
-
-impl fmt::Display for CommandError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for CommandError {}
-
-impl std::ops::Deref for CommandError {
-    type Target = str;
-
-    fn deref(&self) -> &str {
-        &self.0
-    }
-}
-
-impl From<String> for CommandError {
-    fn from(message: String) -> Self {
-        Self(message)
-    }
-}
-
-impl From<&str> for CommandError {
-    fn from(message: &str) -> Self {
-        Self(message.to_owned())
-    }
-}
-
-impl From<CommandError> for String {
-    fn from(error: CommandError) -> Self {
-        error.0
-    }
-}
+use crate::{
+    EdgewiseApp,
+    algorithm::Argument,
+    command::{Command, CommandError, Reply},
+};
 
 impl EdgewiseApp {
     /// Carries out `command` on the active tab and asks for a frame to show
@@ -173,6 +53,14 @@ impl EdgewiseApp {
                 };
                 done(tab.run.pick(element, mesh).map_err(CommandError::from))
             }
+            Command::Start => {
+                let tab = &mut self.tabs[self.active_tab];
+                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
+                let Some(mesh) = mesh else {
+                    return Err("no mesh is open".into());
+                };
+                done(tab.run.start(mesh).map_err(CommandError::from))
+            }
             Command::Step(n) => done(self.tab_mut().run.step(n).map_err(CommandError::from)),
             Command::Back(n) => done(self.tab_mut().run.back(n).map_err(CommandError::from)),
             Command::Goto(k) => done(self.tab_mut().run.goto(k).map_err(CommandError::from)),
@@ -181,6 +69,14 @@ impl EdgewiseApp {
                 let run = &mut self.tabs[self.active_tab].run;
                 self.algorithms.toggle_breakpoint(run, line);
                 Ok(Reply::Done)
+            }
+            Command::ContinueToBreakpoint => {
+                let run = &mut self.tabs[self.active_tab].run;
+                done(
+                    self.algorithms
+                        .continue_to_breakpoint(run)
+                        .map_err(CommandError::from),
+                )
             }
             Command::NewTab => Ok(Reply::Tab(self.open_tab())),
             Command::SwitchTab(index) => done(self.activate_tab(index)),

@@ -1,0 +1,134 @@
+//! Everything a user can ask of the app. Menus, keys, the algorithm view,
+//! the JavaScript API and course links all build a [`Command`] and hand it
+//! to [`EdgewiseApp::execute`](crate::EdgewiseApp::execute) (in
+//! `app/execute.rs`), which carries it out on the active tab and, if it is
+//! refused, records why in one place: the tab's error panel and
+//! `state().error`.
+
+use std::fmt;
+
+use edgewise_core::{mesh::Structure, schema::ElementRef};
+
+use crate::{algorithm::Argument, save_format::SaveFormat};
+
+/// Something the user asked the app to do.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Opens mesh text or bytes; `name`'s extension (or the content) gives
+    /// the format, and `structure` the structure to build PLY and OBJ as.
+    LoadMesh {
+        bytes: Vec<u8>,
+        name: String,
+        structure: Option<Structure>,
+    },
+    /// Opens a built-in sample by name (a file stem in meshes/).
+    LoadSample {
+        name: String,
+        structure: Option<Structure>,
+    },
+    /// A file from disk, a drop or the picker: `.alg` files go to the
+    /// algorithm editor, table files open as their structure, PLY and OBJ
+    /// ask which structure to build.
+    OpenFile {
+        name: String,
+        bytes: Vec<u8>,
+    },
+    /// Answers the structure dialog; `None` cancels it.
+    ChooseStructure(Option<Structure>),
+    /// Selects an element, or clears the selection.
+    Select(Option<ElementRef>),
+    /// Converts the open mesh, and builds later PLY and OBJ loads, as
+    /// `structure`.
+    SetStructure(Structure),
+    /// Compiles algorithms and adds them to the menu.
+    LoadAlgorithms {
+        source: String,
+        file: String,
+    },
+    /// Starts an algorithm with the given inputs; missing element inputs
+    /// are then picked by clicking.
+    RunAlgorithm {
+        name: String,
+        args: Vec<(String, Argument)>,
+    },
+    /// Gives the algorithm waiting for inputs a picked element.
+    Pick(ElementRef),
+    /// Runs the algorithm waiting for inputs once they are all given.
+    Start,
+    /// Steps the trace forward.
+    Step(usize),
+    /// Steps the trace back.
+    Back(usize),
+    /// Goes to a step (clamped to the trace).
+    Goto(usize),
+    /// Stops the running algorithm.
+    Abort,
+    /// Sets or clears a breakpoint on a source line of the running algorithm.
+    ToggleBreakpoint(u32),
+    /// Goes to the next step on a breakpoint line (or the end).
+    ContinueToBreakpoint,
+    NewTab,
+    SwitchTab(usize),
+    /// Closes a tab; the last one stays.
+    CloseTab(usize),
+    /// Shows the mesh as both structures side by side, or one.
+    SetSideBySide(bool),
+    /// Saves the open mesh in a format: a download in the browser, a file
+    /// natively.
+    SaveAs(SaveFormat),
+}
+
+/// What a command that succeeded has to say.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reply {
+    Done,
+    /// The names of the algorithms loaded.
+    Algorithms(Vec<String>),
+    /// The index of the tab opened.
+    Tab(usize),
+}
+
+/// Why a command was refused, in one or more sentences that name the place
+/// (`file:line:column`, the element, the parameter).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CommandError(String);
+
+impl CommandError {
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl fmt::Display for CommandError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for CommandError {}
+
+impl std::ops::Deref for CommandError {
+    type Target = str;
+
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl From<String> for CommandError {
+    fn from(message: String) -> Self {
+        Self(message)
+    }
+}
+
+impl From<&str> for CommandError {
+    fn from(message: &str) -> Self {
+        Self(message.to_owned())
+    }
+}
+
+impl From<CommandError> for String {
+    fn from(error: CommandError) -> Self {
+        error.0
+    }
+}
