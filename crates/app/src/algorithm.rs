@@ -24,7 +24,7 @@ use edgewise_core::{lang::Algorithm, mesh::Mesh};
 
 pub use frame::TraceFrame;
 pub use library::{AlgorithmLibrary, Origin};
-pub use session::{Argument, PendingRun, Run, TraceSession};
+pub use session::{PendingRun, Run, TraceSession};
 
 use crate::theme::Theme;
 

@@ -1,7 +1,6 @@
 //! Everything a user can ask of the app. Menus, keys, the algorithm view,
 //! the JavaScript API and course links all build a [`Command`] and hand it
-//! to [`EdgewiseApp::execute`](crate::EdgewiseApp::execute) (in
-//! `app/execute.rs`), which carries it out on the active tab and, if it is
+//! to `EdgewiseApp::execute` (in `app/execute.rs`), which carries it out on the active tab and, if it is
 //! refused, records why in one place: the tab's error panel and
 //! `state().error`.
 
@@ -9,7 +8,14 @@ use std::fmt;
 
 use edgewise_core::{mesh::Structure, schema::ElementRef};
 
-use crate::{algorithm::Argument, save_format::SaveFormat};
+use crate::save_format::SaveFormat;
+
+/// One argument of `run(name, args)` as JavaScript or a URL gives it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Argument {
+    Number(f64),
+    Boolean(bool),
+}
 
 /// Something the user asked the app to do.
 #[derive(Clone, Debug, PartialEq)]

@@ -28,7 +28,7 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-pub use algorithm::Argument;
 pub use app::files;
 pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;
+pub use command::Argument;

@@ -204,13 +204,6 @@ pub enum Run {
     Tracing(Box<TraceSession>),
 }
 
-/// One argument of `run(name, args)` as JavaScript or a URL gives it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Argument {
-    Number(f64),
-    Boolean(bool),
-}
-
 /// Reads a JavaScript or URL argument for parameter type `ty`: an element
 /// id, an integer, or true/false.
 pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> Option<Value> {

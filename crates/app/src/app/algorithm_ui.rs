@@ -10,7 +10,8 @@ use edgewise_core::schema::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
 use crate::{
-    algorithm::{Argument, Origin, Run, editor::EditorCommand, session::argument_value},
+    algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
+    command::Argument,
     state::AlgorithmInfo,
     view3d::{PickFilter, PickKind},
 };

@@ -5,8 +5,7 @@ use edgewise_core::{mesh::Structure, schema::ElementRef};
 
 use crate::{
     EdgewiseApp,
-    algorithm::Argument,
-    command::{Command, CommandError, Reply},
+    command::{Argument, Command, CommandError, Reply},
 };
 
 impl EdgewiseApp {
