@@ -1,8 +1,8 @@
 //! Everything a user can ask of the app. Menus, keys, the algorithm view,
 //! the JavaScript API and course links all build a [`Command`] and hand it
-//! to `EdgewiseApp::execute` (in `app/execute.rs`), which carries it out on the active tab and, if it is
-//! refused, records why in one place: the tab's error panel and
-//! `state().error`.
+//! to `EdgewiseApp::execute` (in `app/execute.rs`), which carries it out on
+//! the active tab and, if it is refused, records why in one place: the
+//! tab's error panel and `state().error`.
 
 use std::fmt;
 
