@@ -7,8 +7,8 @@ use std::f32::consts::TAU;
 use bytemuck::{Pod, Zeroable};
 
 use super::gpu::{
-    PipelineFactory, PipelineSpec, StyleVertex, Template, TemplateBuffer, VertexData,
-    draw_instanced, style_layout,
+    PipelineFactory, PipelineSpec, StyledBuffers, Template, TemplateBuffer, draw_instanced,
+    instanced_layouts,
 };
 use super::scene::Scene;
 
@@ -117,7 +117,7 @@ impl ArrowRenderer {
 
     /// Draws one set of arrows once both instances and styles are uploaded.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &ArrowBuffers) {
-        let (Some(instances), Some(styles)) = (&buffers.instances, &buffers.styles) else {
+        let Some((instances, styles)) = buffers.uploaded() else {
             return;
         };
         let count = instances.count.min(styles.count);
@@ -134,54 +134,7 @@ impl ArrowRenderer {
 
 /// One view's arrow instances and their styles: the mesh's edges, or the
 /// axes.
-pub struct ArrowBuffers {
-    /// Buffer labels: instances, styles.
-    labels: [&'static str; 2],
-    instances: Option<VertexData>,
-    styles: Option<VertexData>,
-}
-
-impl ArrowBuffers {
-    pub fn new(instances_label: &'static str, styles_label: &'static str) -> Self {
-        Self {
-            labels: [instances_label, styles_label],
-            instances: None,
-            styles: None,
-        }
-    }
-
-    /// Replaces the instances (a new mesh, usually of another size).
-    pub fn replace_instances(&mut self, device: &wgpu::Device, instances: &[ArrowInstance]) {
-        self.instances = Some(VertexData::new(device, self.labels[0], instances));
-    }
-
-    /// Rewrites the instances, in place while their count stays (the axes,
-    /// every frame).
-    pub fn write_instances(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        instances: &[ArrowInstance],
-    ) {
-        VertexData::update(
-            &mut self.instances,
-            device,
-            queue,
-            self.labels[0],
-            instances,
-        );
-    }
-
-    /// Rewrites the styles, in place while their count stays.
-    pub fn write_styles(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        styles: &[StyleVertex],
-    ) {
-        VertexData::update(&mut self.styles, device, queue, self.labels[1], styles);
-    }
-}
+pub type ArrowBuffers = StyledBuffers<ArrowInstance>;
 
 fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
     let shader = factory.shader("view3d arrows", SHADER);
@@ -193,19 +146,7 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         shader: &shader,
         vertex_entry: "vs_arrow",
         fragment_entry: "fs_lit",
-        buffers: &[
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<ArrowVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &template,
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<ArrowInstance>() as u64,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &instance,
-            }),
-            Some(style_layout(wgpu::VertexStepMode::Instance, &style)),
-        ],
+        buffers: &instanced_layouts::<ArrowVertex, ArrowInstance>(&template, &instance, &style),
         transparent: false,
         depth_bias: false,
     })

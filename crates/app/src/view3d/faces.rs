@@ -1,7 +1,7 @@
 //! Faces: filled, mostly transparent so the whole structure shows (or solid
 //! as an option). Triangles are drawn non-indexed, three corners each.
 
-use super::gpu::{PipelineFactory, PipelineSpec, StyleVertex, VertexData, style_layout};
+use super::gpu::{PipelineFactory, PipelineSpec, StyleVertex, StyledBuffers, style_layout};
 use super::scene::Scene;
 
 const SHADER: &str = concat!(
@@ -43,7 +43,7 @@ impl FaceRenderer {
 
     /// Draws one view's faces once both corners and styles are uploaded.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &FaceBuffers, solid: bool) {
-        let (Some(corners), Some(styles)) = (&buffers.corners, &buffers.styles) else {
+        let Some((corners, styles)) = buffers.uploaded() else {
             return;
         };
         let count = corners.count.min(styles.count);
@@ -62,34 +62,7 @@ impl FaceRenderer {
 }
 
 /// One view's triangle corners and their styles.
-#[derive(Default)]
-pub struct FaceBuffers {
-    corners: Option<VertexData>,
-    styles: Option<VertexData>,
-}
-
-impl FaceBuffers {
-    /// Replaces the corners (a new mesh, usually of another size).
-    pub fn replace_corners(&mut self, device: &wgpu::Device, corners: &[[f32; 3]]) {
-        self.corners = Some(VertexData::new(device, "view3d faces", corners));
-    }
-
-    /// Rewrites the styles, in place while the corner count stays.
-    pub fn write_styles(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        styles: &[StyleVertex],
-    ) {
-        VertexData::update(
-            &mut self.styles,
-            device,
-            queue,
-            "view3d face styles",
-            styles,
-        );
-    }
-}
+pub type FaceBuffers = StyledBuffers<[f32; 3]>;
 
 fn pipelines(factory: &PipelineFactory<'_>) -> (wgpu::RenderPipeline, wgpu::RenderPipeline) {
     let shader = factory.shader("view3d faces", SHADER);

@@ -308,6 +308,76 @@ impl VertexData {
     }
 }
 
+/// One view's per-element data for a drawable (sphere or arrow instances,
+/// face corners) and each element's style. Both are rewritten in place
+/// while the element count stays and reallocated when it changes.
+pub struct StyledBuffers<T> {
+    /// Buffer labels: elements, styles.
+    labels: [&'static str; 2],
+    elements: Option<VertexData>,
+    styles: Option<VertexData>,
+    element: std::marker::PhantomData<T>,
+}
+
+impl<T: Pod + Default> StyledBuffers<T> {
+    pub fn new(elements_label: &'static str, styles_label: &'static str) -> Self {
+        Self {
+            labels: [elements_label, styles_label],
+            elements: None,
+            styles: None,
+            element: std::marker::PhantomData,
+        }
+    }
+
+    /// Replaces the elements (a new mesh, usually of another size).
+    pub fn replace_elements(&mut self, device: &wgpu::Device, elements: &[T]) {
+        self.elements = Some(VertexData::new(device, self.labels[0], elements));
+    }
+
+    /// Rewrites the elements, in place while their count stays (the axes,
+    /// every frame).
+    pub fn write_elements(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, elements: &[T]) {
+        VertexData::update(&mut self.elements, device, queue, self.labels[0], elements);
+    }
+
+    /// Rewrites the styles, in place while their count stays.
+    pub fn write_styles(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        styles: &[StyleVertex],
+    ) {
+        VertexData::update(&mut self.styles, device, queue, self.labels[1], styles);
+    }
+
+    /// The elements and their styles, once both have been uploaded.
+    pub fn uploaded(&self) -> Option<(&VertexData, &VertexData)> {
+        Some((self.elements.as_ref()?, self.styles.as_ref()?))
+    }
+}
+
+/// The vertex buffers of an instanced drawable: its template's vertices
+/// (`V`), one instance per element (`I`), and each element's style.
+pub fn instanced_layouts<'a, V, I>(
+    template: &'a [wgpu::VertexAttribute],
+    instance: &'a [wgpu::VertexAttribute],
+    style: &'a [wgpu::VertexAttribute; 2],
+) -> [Option<wgpu::VertexBufferLayout<'a>>; 3] {
+    [
+        Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<V>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: template,
+        }),
+        Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<I>() as u64,
+            step_mode: wgpu::VertexStepMode::Instance,
+            attributes: instance,
+        }),
+        Some(style_layout(wgpu::VertexStepMode::Instance, style)),
+    ]
+}
+
 /// Draws `instances` copies of `template`: the template in vertex buffer 0,
 /// `instance_buffers` from slot 1 on.
 pub fn draw_instanced(

@@ -117,9 +117,9 @@ impl ViewBuffers {
             frame: FrameBindGroup::new(device, frame_layout),
             geometry_id: 0,
             styles_id: 0,
-            spheres: SphereBuffers::default(),
+            spheres: SphereBuffers::new("view3d spheres", "view3d vertex styles"),
             arrows: ArrowBuffers::new("view3d arrows", "view3d edge styles"),
-            faces: FaceBuffers::default(),
+            faces: FaceBuffers::new("view3d faces", "view3d face styles"),
             marks: OrientationBuffers::default(),
             axes: ArrowBuffers::new("view3d axes", "view3d axes styles"),
         }
@@ -164,9 +164,9 @@ impl CallbackTrait for ViewCallback {
         if let Some(geometry) = &self.geometry
             && geometry.id != view.geometry_id
         {
-            view.spheres.replace_instances(device, &geometry.spheres);
-            view.arrows.replace_instances(device, &geometry.arrows);
-            view.faces.replace_corners(device, &geometry.faces);
+            view.spheres.replace_elements(device, &geometry.spheres);
+            view.arrows.replace_elements(device, &geometry.arrows);
+            view.faces.replace_elements(device, &geometry.faces);
             view.marks.replace_marks(device, &geometry.marks);
             view.geometry_id = geometry.id;
             self.uploaded.geometry.store(geometry.id, Ordering::Release);
@@ -181,7 +181,7 @@ impl CallbackTrait for ViewCallback {
             self.uploaded.styles.store(styles.id, Ordering::Release);
         }
         if self.flags.axes {
-            view.axes.write_instances(device, queue, &self.axes);
+            view.axes.write_elements(device, queue, &self.axes);
             view.axes.write_styles(device, queue, &self.axes_styles);
         }
 

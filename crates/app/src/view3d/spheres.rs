@@ -6,8 +6,8 @@ use bytemuck::{Pod, Zeroable};
 use glam::Vec3;
 
 use super::gpu::{
-    PipelineFactory, PipelineSpec, StyleVertex, Template, TemplateBuffer, VertexData,
-    draw_instanced, style_layout,
+    PipelineFactory, PipelineSpec, StyledBuffers, Template, TemplateBuffer, draw_instanced,
+    instanced_layouts,
 };
 use super::scene::Scene;
 
@@ -125,7 +125,7 @@ impl SphereRenderer {
 
     /// Draws one view's spheres once both instances and styles are uploaded.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &SphereBuffers) {
-        let (Some(instances), Some(styles)) = (&buffers.instances, &buffers.styles) else {
+        let Some((instances, styles)) = buffers.uploaded() else {
             return;
         };
         let count = instances.count.min(styles.count);
@@ -144,34 +144,7 @@ impl SphereRenderer {
 }
 
 /// One view's sphere instances and their styles.
-#[derive(Default)]
-pub struct SphereBuffers {
-    instances: Option<VertexData>,
-    styles: Option<VertexData>,
-}
-
-impl SphereBuffers {
-    /// Replaces the instances (a new mesh, usually of another size).
-    pub fn replace_instances(&mut self, device: &wgpu::Device, instances: &[SphereInstance]) {
-        self.instances = Some(VertexData::new(device, "view3d spheres", instances));
-    }
-
-    /// Rewrites the styles, in place while the vertex count stays.
-    pub fn write_styles(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        styles: &[StyleVertex],
-    ) {
-        VertexData::update(
-            &mut self.styles,
-            device,
-            queue,
-            "view3d vertex styles",
-            styles,
-        );
-    }
-}
+pub type SphereBuffers = StyledBuffers<SphereInstance>;
 
 fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
     let shader = factory.shader("view3d spheres", SHADER);
@@ -183,19 +156,7 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         shader: &shader,
         vertex_entry: "vs_sphere",
         fragment_entry: "fs_lit",
-        buffers: &[
-            Some(wgpu::VertexBufferLayout {
-                array_stride: 12,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &template,
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<SphereInstance>() as u64,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &instance,
-            }),
-            Some(style_layout(wgpu::VertexStepMode::Instance, &style)),
-        ],
+        buffers: &instanced_layouts::<[f32; 3], SphereInstance>(&template, &instance, &style),
         transparent: false,
         depth_bias: false,
     })
