@@ -36,6 +36,54 @@ pub(super) trait TableFile: Rows + Sized {
     fn validate(&self) -> Vec<crate::mesh::Issue>;
 }
 
+/// Implements [`TableFile`] for a structure: its mesh type, its `Mesh`
+/// variant, its validation element for edge rows, its vertex record, the
+/// header words, the preamble and the edge section.
+macro_rules! table_file {
+    (
+        $mesh:ident, $variant:ident, $edge_element:ident, $vertex:ident,
+        magic: $magic:literal, other: $other:literal, preamble: $preamble:expr,
+        edges: $section:literal of $element:literal in $structure:expr $(,)?
+    ) => {
+        impl $crate::formats::tables::TableFile for $mesh {
+            const MAGIC: &'static str = $magic;
+            const OTHER: &'static str = $other;
+            const PREAMBLE: &'static str = $preamble;
+            const EDGES: $crate::formats::rows::Section = $crate::formats::rows::Section {
+                name: $section,
+                element: $element,
+                table: ($structure, $crate::schema::ElementKind::Edge),
+            };
+
+            fn from_tables(
+                vertices: Vec<(glam::Vec3, $vertex)>,
+                faces: Vec<Self::Face>,
+                edges: Vec<Self::Edge>,
+            ) -> Self {
+                let vertices = vertices
+                    .into_iter()
+                    .map(|(position, vertex)| $vertex { position, ..vertex })
+                    .collect();
+                Self::from_raw_parts(vertices, faces, edges)
+            }
+
+            fn is_edge_row(element: $crate::mesh::Element) -> bool {
+                matches!(element, $crate::mesh::Element::$edge_element(_))
+            }
+
+            fn into_mesh(self) -> $crate::mesh::Mesh {
+                $crate::mesh::Mesh::$variant(self)
+            }
+
+            fn validate(&self) -> Vec<$crate::mesh::Issue> {
+                $mesh::validate(self)
+            }
+        }
+    };
+}
+
+pub(super) use table_file;
+
 /// The vertex section of `structure`'s file.
 fn vertex_section(structure: Structure) -> Section {
     Section {

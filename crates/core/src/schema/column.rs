@@ -639,57 +639,47 @@ impl<T: Rows> Records for T {
     }
 }
 
-impl Rows for WingedEdgeMesh {
-    type Vertex = winged_edge::Vertex;
-    type Face = winged_edge::Face;
-    type Edge = WingedEdge;
+/// Implements [`Rows`] for a structure from its row types, the accessor of
+/// its edge table, and any derived columns.
+macro_rules! rows {
+    ($mesh:ty: $structure:expr, $vertex:ty, $face:ty, $edge:ty, $edges:ident $(, $derived:item)?) => {
+        impl Rows for $mesh {
+            type Vertex = $vertex;
+            type Face = $face;
+            type Edge = $edge;
 
-    fn structure(&self) -> Structure {
-        Structure::WingedEdge
-    }
+            fn structure(&self) -> Structure {
+                $structure
+            }
 
-    fn vertex_rows(&self) -> &[Self::Vertex] {
-        self.vertices()
-    }
+            fn vertex_rows(&self) -> &[$vertex] {
+                self.vertices()
+            }
 
-    fn face_rows(&self) -> &[Self::Face] {
-        self.faces()
-    }
+            fn face_rows(&self) -> &[$face] {
+                self.faces()
+            }
 
-    fn edge_rows(&self) -> &[Self::Edge] {
-        self.edges()
-    }
+            fn edge_rows(&self) -> &[$edge] {
+                self.$edges()
+            }
 
-    fn position(&self, vertex: VertexId) -> Option<Vec3> {
-        WingedEdgeMesh::position(self, vertex)
-    }
+            fn position(&self, vertex: VertexId) -> Option<Vec3> {
+                <$mesh>::position(self, vertex)
+            }
+
+            $($derived)?
+        }
+    };
 }
 
-impl Rows for HalfEdgeMesh {
-    type Vertex = half_edge::Vertex;
-    type Face = half_edge::Face;
-    type Edge = HalfEdge;
-
-    fn structure(&self) -> Structure {
-        Structure::HalfEdge
-    }
-
-    fn vertex_rows(&self) -> &[Self::Vertex] {
-        self.vertices()
-    }
-
-    fn face_rows(&self) -> &[Self::Face] {
-        self.faces()
-    }
-
-    fn edge_rows(&self) -> &[Self::Edge] {
-        self.half_edges()
-    }
-
-    fn position(&self, vertex: VertexId) -> Option<Vec3> {
-        HalfEdgeMesh::position(self, vertex)
-    }
-
+rows!(WingedEdgeMesh: Structure::WingedEdge, winged_edge::Vertex, winged_edge::Face, WingedEdge, edges);
+rows!(
+    HalfEdgeMesh: Structure::HalfEdge,
+    half_edge::Vertex,
+    half_edge::Face,
+    HalfEdge,
+    half_edges,
     fn derived(&self, edge: u32, column: Column) -> Option<Option<ElementRef>> {
         let id = HalfEdgeId::new(edge);
         match column {
@@ -698,7 +688,7 @@ impl Rows for HalfEdgeMesh {
             _ => None,
         }
     }
-}
+);
 
 /// Either structure, as loaded.
 impl Records for Mesh {
