@@ -3,7 +3,7 @@
 //! - Vertices are spheres, edges arrows pointing at their end vertex (a
 //!   half-edge mesh shows each edge as two arrows, each inset into its own
 //!   face), faces are filled and mostly see-through.
-//! - Drawing goes through an egui paint callback ([`renderer::ViewCallback`]):
+//! - Drawing goes through an egui paint callback (`renderer::ViewCallback`):
 //!   instanced, one draw per element kind; geometry buffers are rebuilt only
 //!   when the mesh changes and style buffers only when the styles'
 //!   generation changes. Each drawable file (spheres, arrows, faces,

@@ -3,7 +3,7 @@
 //! Files arrive from the Open mesh… button, from a drop on the window, or
 //! (natively) from a typed path. The format comes from the extension: table
 //! files open as the structure they store, PLY and OBJ ask which structure to
-//! build ([`super::open_dialog`]). Save as… writes the open mesh in any
+//! build (`open_dialog.rs`). Save as… writes the open mesh in any
 //! format: a download in the browser, a file in the current directory
 //! natively (there is no native file dialog, to keep the desktop build free
 //! of GTK and D-Bus dependencies).
