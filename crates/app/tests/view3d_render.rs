@@ -21,7 +21,6 @@ use edgewise_app::view3d::{
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
 use egui::{Color32, Pos2, Rect, Vec2};
-use glam::Vec3;
 
 fn out_dir() -> PathBuf {
     let target = std::env::var_os("CARGO_TARGET_DIR")
@@ -193,48 +192,6 @@ fn geometry(polygons: &Polygons, structure: Structure) -> MeshGeometry {
     MeshGeometry::from_mesh(&mesh)
 }
 
-fn cube() -> Polygons {
-    let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
-    Polygons::from_faces(
-        vec![
-            p(-1.0, -1.0, -1.0),
-            p(1.0, -1.0, -1.0),
-            p(1.0, 1.0, -1.0),
-            p(-1.0, 1.0, -1.0),
-            p(-1.0, -1.0, 1.0),
-            p(1.0, -1.0, 1.0),
-            p(1.0, 1.0, 1.0),
-            p(-1.0, 1.0, 1.0),
-        ],
-        [
-            [0, 3, 2, 1],
-            [4, 5, 6, 7],
-            [0, 1, 5, 4],
-            [2, 3, 7, 6],
-            [1, 2, 6, 5],
-            [0, 4, 7, 3],
-        ],
-    )
-}
-
-/// An open 3×2 grid of quads in the z = 0 plane (boundary half-edges
-/// outside).
-fn grid() -> Polygons {
-    let mut polygons = Polygons::new();
-    for j in 0..3 {
-        for i in 0..4 {
-            polygons.push_vertex(Vec3::new(i as f32, j as f32 * 0.9, 0.0));
-        }
-    }
-    for j in 0..2_u32 {
-        for i in 0..3_u32 {
-            let a = j * 4 + i;
-            polygons.push_face(&[a, a + 1, a + 5, a + 4]);
-        }
-    }
-    polygons
-}
-
 fn styles_for(geometry: &MeshGeometry) -> SceneStyles {
     SceneStyles {
         generation: 1,
@@ -264,7 +221,7 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
         return;
     };
     let harness = Harness::new(rs.clone(), [900, 640]);
-    let geometry = geometry(&cube(), Structure::WingedEdge);
+    let geometry = geometry(&generate::cube(), Structure::WingedEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let mut styles = styles_for(&geometry);
@@ -325,7 +282,7 @@ fn half_edge_grid_with_all_ids_dark() {
         return;
     };
     let harness = Harness::new(rs.clone(), [900, 640]);
-    let geometry = geometry(&grid(), Structure::HalfEdge);
+    let geometry = geometry(&generate::grid(3, 2), Structure::HalfEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     view.set_camera(Camera {
@@ -359,16 +316,7 @@ fn solid_tetrahedron_with_hover() {
         return;
     };
     let harness = Harness::new(rs.clone(), [640, 480]);
-    let polygons = Polygons::from_triangles(
-        vec![
-            Vec3::new(1.0, 1.0, 1.0),
-            Vec3::new(-1.0, -1.0, 1.0),
-            Vec3::new(-1.0, 1.0, -1.0),
-            Vec3::new(1.0, -1.0, -1.0),
-        ],
-        &[[0, 1, 3], [0, 2, 1], [0, 3, 2], [1, 2, 3]],
-    );
-    let geometry = geometry(&polygons, Structure::HalfEdge);
+    let geometry = geometry(&generate::regular_tetrahedron(), Structure::HalfEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let styles = styles_for(&geometry);
