@@ -10,7 +10,6 @@ use edgewise_app::view3d::{
 };
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use egui::Color32;
-use glam::Vec3;
 
 struct Demo {
     view: View3d,
@@ -23,47 +22,14 @@ struct Demo {
 
 fn polygons(name: &str) -> Polygons {
     match name {
-        "cube" => {
-            let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
-            Polygons::from_faces(
-                vec![
-                    p(-1.0, -1.0, -1.0),
-                    p(1.0, -1.0, -1.0),
-                    p(1.0, 1.0, -1.0),
-                    p(-1.0, 1.0, -1.0),
-                    p(-1.0, -1.0, 1.0),
-                    p(1.0, -1.0, 1.0),
-                    p(1.0, 1.0, 1.0),
-                    p(-1.0, 1.0, 1.0),
-                ],
-                [
-                    [0, 3, 2, 1],
-                    [4, 5, 6, 7],
-                    [0, 1, 5, 4],
-                    [2, 3, 7, 6],
-                    [1, 2, 6, 5],
-                    [0, 4, 7, 3],
-                ],
-            )
-        }
+        "cube" => generate::cube(),
         "grid" => {
-            let mut polygons = Polygons::new();
-            for j in 0..4 {
-                for i in 0..5 {
-                    polygons.push_vertex(Vec3::new(
-                        i as f32,
-                        j as f32,
-                        ((i + j) as f32 * 0.7).sin() * 0.3,
-                    ));
-                }
+            // Bumped out of its plane, so the view has some depth to show.
+            let mut grid = generate::grid(4, 3);
+            for p in grid.positions_mut() {
+                p.z = ((p.x + p.y) * 0.7).sin() * 0.3;
             }
-            for j in 0..3_u32 {
-                for i in 0..4_u32 {
-                    let a = j * 5 + i;
-                    polygons.push_face(&[a, a + 1, a + 6, a + 5]);
-                }
-            }
-            polygons
+            grid
         }
         "torus200k" => generate::torus(400, 250),
         "torus20k" => generate::torus(100, 100),

@@ -107,23 +107,13 @@ pub fn role_titles(highlights: &[Highlight], element: ElementRef) -> Option<Stri
 
 #[cfg(test)]
 mod tests {
-    use edgewise_core::mesh::{EdgeId, FaceId, HalfEdgeId, Polygons, Structure, VertexId};
-    use glam::Vec3;
+    use edgewise_core::mesh::{EdgeId, FaceId, HalfEdgeId, Structure, VertexId, generate};
 
     use super::*;
 
-    /// The journal's tetrahedron (Table 2): A, B, C, D and CCW faces
-    /// 1 = ABD, 2 = BCD, 3 = ACD, 4 = ABC as seen from outside.
+    /// The journal's tetrahedron (Table 2).
     fn tetrahedron(structure: Structure) -> Mesh {
-        let positions = vec![
-            Vec3::new(0.0, 0.0, 1.0),
-            Vec3::new(1.0, 0.0, -0.5),
-            Vec3::new(-1.0, 0.0, -0.5),
-            Vec3::new(0.0, 1.2, 0.0),
-        ];
-        let faces: [[u32; 3]; 4] = [[0, 1, 3], [1, 2, 3], [2, 0, 3], [0, 2, 1]];
-        let polygons = Polygons::from_faces(positions, faces);
-        Mesh::build(&polygons, structure)
+        Mesh::build(&generate::tetrahedron(), structure)
             .expect("valid tetrahedron")
             .0
     }

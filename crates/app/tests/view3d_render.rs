@@ -12,16 +12,14 @@
 mod support;
 
 use std::path::PathBuf;
-use std::time::Instant;
 
 use edgewise_app::view3d::{
     Camera, DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, View3d, ViewOptions,
     ViewResponse,
 };
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
-use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
+use eframe::egui_wgpu::RenderState;
 use egui::{Color32, Pos2, Rect, Vec2};
-use glam::Vec3;
 
 fn out_dir() -> PathBuf {
     let target = std::env::var_os("CARGO_TARGET_DIR")
@@ -132,35 +130,16 @@ impl Harness {
         )
     }
 
-    fn frame(&self, events: Vec<egui::Event>, mut ui: impl FnMut(&mut egui::Ui)) -> Image {
-        let raw = egui::RawInput {
-            screen_rect: Some(self.screen()),
+    fn frame(&self, events: Vec<egui::Event>, ui: impl FnMut(&mut egui::Ui)) -> Image {
+        let pixels = support::gpu::draw_frame(
+            &self.render_state,
+            &self.ctx,
+            self.screen(),
+            self.size,
             events,
-            ..Default::default()
-        };
-        let mut output = self.ctx.run_ui(raw, |root| ui(root));
-        let jobs = self
-            .ctx
-            .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
-        let rs = &self.render_state;
-        let screen = ScreenDescriptor {
-            size_in_pixels: self.size,
-            pixels_per_point: output.pixels_per_point,
-        };
-        let mut renderer = rs.renderer.write();
-        for (id, deltas) in &output.textures_delta.set {
-            for delta in deltas {
-                renderer.update_texture(&rs.device, &rs.queue, *id, delta);
-            }
-        }
-        drop(renderer);
-        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, wgpu::Color::BLACK)
-            .expect("the frame renders");
-        let mut renderer = rs.renderer.write();
-        for id in &output.textures_delta.free {
-            renderer.free_texture(id);
-        }
-        output.textures_delta.clear();
+            ui,
+        )
+        .expect("the frame renders");
         Image {
             width: self.size[0],
             height: self.size[1],
@@ -193,48 +172,6 @@ fn geometry(polygons: &Polygons, structure: Structure) -> MeshGeometry {
     MeshGeometry::from_mesh(&mesh)
 }
 
-fn cube() -> Polygons {
-    let p = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
-    Polygons::from_faces(
-        vec![
-            p(-1.0, -1.0, -1.0),
-            p(1.0, -1.0, -1.0),
-            p(1.0, 1.0, -1.0),
-            p(-1.0, 1.0, -1.0),
-            p(-1.0, -1.0, 1.0),
-            p(1.0, -1.0, 1.0),
-            p(1.0, 1.0, 1.0),
-            p(-1.0, 1.0, 1.0),
-        ],
-        [
-            [0, 3, 2, 1],
-            [4, 5, 6, 7],
-            [0, 1, 5, 4],
-            [2, 3, 7, 6],
-            [1, 2, 6, 5],
-            [0, 4, 7, 3],
-        ],
-    )
-}
-
-/// An open 3×2 grid of quads in the z = 0 plane (boundary half-edges
-/// outside).
-fn grid() -> Polygons {
-    let mut polygons = Polygons::new();
-    for j in 0..3 {
-        for i in 0..4 {
-            polygons.push_vertex(Vec3::new(i as f32, j as f32 * 0.9, 0.0));
-        }
-    }
-    for j in 0..2_u32 {
-        for i in 0..3_u32 {
-            let a = j * 4 + i;
-            polygons.push_face(&[a, a + 1, a + 5, a + 4]);
-        }
-    }
-    polygons
-}
-
 fn styles_for(geometry: &MeshGeometry) -> SceneStyles {
     SceneStyles {
         generation: 1,
@@ -264,7 +201,7 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
         return;
     };
     let harness = Harness::new(rs.clone(), [900, 640]);
-    let geometry = geometry(&cube(), Structure::WingedEdge);
+    let geometry = geometry(&generate::cube(), Structure::WingedEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let mut styles = styles_for(&geometry);
@@ -325,7 +262,7 @@ fn half_edge_grid_with_all_ids_dark() {
         return;
     };
     let harness = Harness::new(rs.clone(), [900, 640]);
-    let geometry = geometry(&grid(), Structure::HalfEdge);
+    let geometry = geometry(&generate::grid(3, 2), Structure::HalfEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     view.set_camera(Camera {
@@ -359,16 +296,7 @@ fn solid_tetrahedron_with_hover() {
         return;
     };
     let harness = Harness::new(rs.clone(), [640, 480]);
-    let polygons = Polygons::from_triangles(
-        vec![
-            Vec3::new(1.0, 1.0, 1.0),
-            Vec3::new(-1.0, -1.0, 1.0),
-            Vec3::new(-1.0, 1.0, -1.0),
-            Vec3::new(1.0, -1.0, -1.0),
-        ],
-        &[[0, 1, 3], [0, 2, 1], [0, 3, 2], [1, 2, 3]],
-    );
-    let geometry = geometry(&polygons, Structure::HalfEdge);
+    let geometry = geometry(&generate::regular_tetrahedron(), Structure::HalfEdge);
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let styles = styles_for(&geometry);
@@ -398,13 +326,9 @@ fn torus_20k_faces() {
         return;
     };
     let harness = Harness::new(rs.clone(), [900, 640]);
-    let started = Instant::now();
     let geometry = geometry(&generate::torus(100, 100), Structure::HalfEdge);
-    let built = started.elapsed();
     let mut view = View3d::new(Some(&rs));
-    let started = Instant::now();
     view.set_geometry(geometry.clone(), true);
-    let prepared = started.elapsed();
     // A selection on a dense mesh: the three labels would overlap.
     let mut styles = styles_for(&geometry);
     styles.faces[0] = ElementStyle {
@@ -423,9 +347,7 @@ fn torus_20k_faces() {
         label: Some("0: Selected Vertex".to_owned()),
     };
     let options = ViewOptions::default();
-    let started = Instant::now();
     let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
-    let shown = started.elapsed();
     image.save("torus_20k.png");
     // Among 20k faces, the styled vertex is drawn where the CPU projects it,
     // and clicking there picks it.
@@ -455,93 +377,4 @@ fn torus_20k_faces() {
     // Close up, the mesh fills the view: its middle is not the background.
     let middle = close.pixel(450, 320);
     assert_ne!(middle, image.pixel(0, 0), "nothing drawn in the close-up");
-    eprintln!(
-        "torus 20k faces: mesh {built:?}, set_geometry {prepared:?}, two frames on {:?} {shown:?}",
-        rs.adapter.get_info().name
-    );
-}
-
-#[test]
-#[ignore = "slow on a CPU rasterizer; run with --ignored to measure"]
-fn torus_200k_faces() {
-    let Some(rs) = support::gpu::render_state() else {
-        eprintln!("no wgpu adapter: skipped");
-        return;
-    };
-    let harness = Harness::new(rs.clone(), [900, 640]);
-    let geometry = geometry(&generate::torus(400, 250), Structure::HalfEdge);
-    let mut view = View3d::new(Some(&rs));
-    let started = Instant::now();
-    view.set_geometry(geometry.clone(), true);
-    eprintln!("200k set_geometry: {:?}", started.elapsed());
-    let styles = styles_for(&geometry);
-    for options in [
-        ViewOptions::default(),
-        ViewOptions {
-            draw_ids: DrawIds::Always,
-            ..ViewOptions::default()
-        },
-    ] {
-        let started = Instant::now();
-        let (image, _) = harness.show(&mut view, &styles, &options, Vec::new());
-        eprintln!(
-            "200k two frames ({:?}): {:?}",
-            options.draw_ids,
-            started.elapsed()
-        );
-        image.save(&format!("torus_200k_{:?}.png", options.draw_ids).to_lowercase());
-    }
-    // CPU cost of one frame without drawing: the UI pass alone, with the
-    // camera turning a little every frame so nothing is reused.
-    let ctx = egui::Context::default();
-    let mut headless = View3d::new(None);
-    let started = Instant::now();
-    headless.set_geometry(geometry, true);
-    eprintln!(
-        "200k set_geometry without GPU uploads: {:?}",
-        started.elapsed()
-    );
-    let always = ViewOptions {
-        draw_ids: DrawIds::Always,
-        ..ViewOptions::default()
-    };
-    for (label, options, hover) in [
-        ("first frame (styles)", ViewOptions::default(), false),
-        ("highlighted ids", ViewOptions::default(), false),
-        ("always ids", always.clone(), false),
-        ("hover picking", ViewOptions::default(), true),
-    ] {
-        let frames = if label.starts_with("first") { 1 } else { 10 };
-        let started = Instant::now();
-        for i in 0..frames {
-            let mut camera = headless.camera();
-            camera.yaw += 0.01;
-            headless.set_camera(camera);
-            let events = if hover {
-                vec![egui::Event::PointerMoved(Pos2::new(
-                    450.0 + i as f32 * 7.0,
-                    300.0,
-                ))]
-            } else {
-                Vec::new()
-            };
-            let raw = egui::RawInput {
-                screen_rect: Some(harness.screen()),
-                events,
-                ..Default::default()
-            };
-            let mut hovered = None;
-            ctx.run_ui(raw, |ui| {
-                hovered = headless.ui(ui, &styles, &options).hovered;
-            })
-            .drop_without_applying_deltas();
-            if hover && i == frames - 1 {
-                eprintln!("hovered {hovered:?}");
-            }
-        }
-        eprintln!(
-            "200k UI pass ({label}): {:?} per frame",
-            started.elapsed() / frames
-        );
-    }
 }

@@ -4,21 +4,18 @@
 //! cargo run -p edgewise-core --example make_samples
 //! ```
 //!
-//! Every shape is generated here, so the library can be rebuilt exactly and
-//! reviewed as code. Each sample is written in the format that suits it and
-//! checked (built, validated, read back) before it is written. The 200k-face
-//! mesh is not a file: it is `mesh::generate::torus(316, 316)`, made where it
-//! is needed.
+//! Every shape is generated here, or in `mesh::generate` where tests share
+//! it, so the library can be rebuilt exactly and reviewed as code. Each
+//! sample is written in the format that suits it and checked (built,
+//! validated, read back) before it is written. The 200k-face mesh is not a
+//! file: it is `mesh::generate::torus(316, 316)`, made where it is needed.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use edgewise_core::formats::{self, Format, PlyEncoding, SaveOptions};
-use edgewise_core::mesh::winged_edge::{Face, Vertex};
-use edgewise_core::mesh::{
-    EdgeId, FaceId, Mesh, Polygons, Structure, VertexId, WingedEdge, WingedEdgeMesh, generate,
-};
-use glam::{DVec3, Vec3};
+use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
+use glam::DVec3;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -85,13 +82,13 @@ fn samples() -> Vec<Sample> {
             file: "tetrahedron.wtb",
             about: "The journal paper's tetrahedron (Figure 2) with its Table 2 exactly as \
                     printed: vertices A-D are 0-3, faces 1-4 are 0-3, edges a-f are 0-5.",
-            mesh: Mesh::Winged(table_2()),
+            mesh: Mesh::Winged(generate::table_2()),
             ply_encoding: PlyEncoding::Ascii,
         },
         sample(
             "cube.htb",
             "A cube of six squares as half-edge tables.",
-            &cube(),
+            &generate::cube(),
         ),
         sample(
             "octahedron.obj",
@@ -124,12 +121,12 @@ fn samples() -> Vec<Sample> {
         sample(
             "quad-grid.obj",
             "A 4 by 4 grid of squares with one boundary loop.",
-            &quad_grid(4),
+            &generate::grid(4, 4),
         ),
         sample(
             "open-square.wtb",
             "Two triangles making a square, with the boundary as -.",
-            &open_square(),
+            &generate::open_square(),
         ),
         sample(
             "annulus.htb",
@@ -327,70 +324,8 @@ fn convex_hull(points: &[DVec3]) -> Vec<Vec<u32>> {
     faces
 }
 
-/// The journal paper's Table 2, as printed: rows a-f with start, end, left
-/// face, right face and the four wings; vertex and face tables (b) and (c).
-fn table_2() -> WingedEdgeMesh {
-    let positions = [
-        Vec3::new(0.0, 0.0, 0.0),
-        Vec3::new(1.0, 0.0, 0.0),
-        Vec3::new(0.5, 0.0, -0.9),
-        Vec3::new(0.5, 0.8, -0.3),
-    ];
-    let v = |c: char| VertexId::new(c as u32 - 'A' as u32);
-    let e = |c: char| EdgeId::new(c as u32 - 'a' as u32);
-    let f = |n: u32| Some(FaceId::new(n - 1));
-    let rows = [
-        ('A', 'D', 3, 1, 'e', 'f', 'b', 'c'),
-        ('A', 'B', 1, 4, 'c', 'a', 'f', 'd'),
-        ('B', 'D', 1, 2, 'a', 'b', 'd', 'e'),
-        ('B', 'C', 2, 4, 'e', 'c', 'b', 'f'),
-        ('C', 'D', 2, 3, 'c', 'd', 'f', 'a'),
-        ('A', 'C', 4, 3, 'd', 'b', 'a', 'e'),
-    ];
-    let edges = rows
-        .iter()
-        .map(|&(start, end, left, right, lp, ls, rp, rs)| WingedEdge {
-            start_vertex: v(start),
-            end_vertex: v(end),
-            left_face: f(left),
-            right_face: f(right),
-            left_predecessor: e(lp),
-            left_successor: e(ls),
-            right_predecessor: e(rp),
-            right_successor: e(rs),
-        })
-        .collect();
-    let vertices = positions
-        .iter()
-        .zip(['a', 'b', 'd', 'e'])
-        .map(|(&position, edge)| Vertex {
-            position,
-            incident_edge: Some(e(edge)),
-        })
-        .collect();
-    let faces = ['a', 'c', 'a', 'b']
-        .iter()
-        .map(|&edge| Face {
-            incident_edge: e(edge),
-        })
-        .collect();
-    WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
-}
-
 fn hull_polygons(points: &[DVec3]) -> Polygons {
     to_polygons(points, &convex_hull(points))
-}
-
-fn cube() -> Polygons {
-    let mut points = Vec::new();
-    for z in [-1.0, 1.0] {
-        for y in [-1.0, 1.0] {
-            for x in [-1.0, 1.0] {
-                points.push(DVec3::new(x, y, z));
-            }
-        }
-    }
-    hull_polygons(&points)
 }
 
 fn octahedron() -> Polygons {
@@ -461,28 +396,6 @@ fn square_pyramid() -> Polygons {
         DVec3::new(-1.0, 1.0, 0.0),
         DVec3::new(0.0, 0.0, 1.2),
     ])
-}
-
-fn quad_grid(n: u32) -> Polygons {
-    let mut points = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            points.push(DVec3::new(f64::from(i), f64::from(j), 0.0));
-        }
-    }
-    let id = |i: u32, j: u32| j * (n + 1) + i;
-    let mut faces = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            faces.push(vec![id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    to_polygons(&points, &faces)
-}
-
-fn open_square() -> Polygons {
-    let points = [DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
-    to_polygons(&points, &[vec![0, 1, 2], vec![0, 2, 3]])
 }
 
 fn annulus(segments: u32, rings: u32) -> Polygons {

@@ -8,8 +8,7 @@ mod lang_support;
 mod golden;
 
 use edgewise_core::lang::{self, Program, RunOptions, Topology, Value};
-use edgewise_core::mesh::{EdgeId, FaceId, VertexId, WingedEdgeMesh, winged_edge};
-use glam::Vec3;
+use edgewise_core::mesh::generate;
 use lang_support::*;
 use std::fmt::Write as _;
 use std::fs;
@@ -67,46 +66,6 @@ fn every_error_points_into_its_file() {
     }
 }
 
-/// The tetrahedron of the journal paper's Fig. 2, entered as its Table 2:
-/// edges a–f are 0–5, vertices A–D are 0–3, faces 1–4 are 0–3.
-pub fn table_2_tetrahedron() -> WingedEdgeMesh {
-    let edge =
-        |start: u32, end: u32, left: u32, right: u32, wings: [u32; 4]| winged_edge::WingedEdge {
-            start_vertex: VertexId::new(start),
-            end_vertex: VertexId::new(end),
-            left_face: Some(FaceId::new(left)),
-            right_face: Some(FaceId::new(right)),
-            left_predecessor: EdgeId::new(wings[0]),
-            left_successor: EdgeId::new(wings[1]),
-            right_predecessor: EdgeId::new(wings[2]),
-            right_successor: EdgeId::new(wings[3]),
-        };
-    let edges = vec![
-        edge(0, 3, 2, 0, [4, 5, 1, 2]),
-        edge(0, 1, 0, 3, [2, 0, 5, 3]),
-        edge(1, 3, 0, 1, [0, 1, 3, 4]),
-        edge(1, 2, 1, 3, [4, 2, 1, 5]),
-        edge(2, 3, 1, 2, [2, 3, 5, 0]),
-        edge(0, 2, 3, 2, [3, 1, 0, 4]),
-    ];
-    let positions = [Vec3::new(0.0, 0.0, 0.0), Vec3::X, Vec3::Y, Vec3::Z];
-    let vertices = [0, 1, 3, 4]
-        .iter()
-        .zip(positions)
-        .map(|(&e, position)| winged_edge::Vertex {
-            position,
-            incident_edge: Some(EdgeId::new(e)),
-        })
-        .collect();
-    let faces = [0, 2, 0, 1]
-        .iter()
-        .map(|&e| winged_edge::Face {
-            incident_edge: EdgeId::new(e),
-        })
-        .collect();
-    WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
-}
-
 fn library() -> (Program, Program) {
     let mut programs = lang::library::load().expect("the library compiles");
     let half = programs.pop().expect("two files");
@@ -139,14 +98,14 @@ fn trace_text(
 #[test]
 fn library_traces_render_as_recorded() {
     let (winged_lib, half_lib) = library();
-    let tetra = tetrahedron();
+    let tetra = generate::regular_tetrahedron();
     let (we_tetra, he_tetra) = (winged(&tetra), half(&tetra));
-    let cube = cube();
+    let cube = generate::cube_zyx();
     let (we_cube, he_cube) = (winged(&cube), half(&cube));
     let octa = octahedron();
-    let grid = quad_grid(2, 2);
+    let grid = generate::grid(2, 2);
     let (we_grid, he_grid) = (winged(&grid), half(&grid));
-    let table_2 = table_2_tetrahedron();
+    let table_2 = generate::table_2();
     let v = |i| [("v", Value::Vertex(i))];
     let f = |i| [("f", Value::Face(i))];
     let e = |i| [("e", Value::Edge(i))];

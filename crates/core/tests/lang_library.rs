@@ -7,7 +7,7 @@ mod lang_support;
 use edgewise_core::lang::{
     self, Algorithm, Outcome, Program, RunOptions, Topology, Value, execute,
 };
-use edgewise_core::mesh::Polygons;
+use edgewise_core::mesh::{Polygons, generate};
 use edgewise_core::schema::{ElementKind, ElementRef};
 use lang_support::*;
 use proptest::prelude::*;
@@ -183,7 +183,7 @@ fn boundary_aware_algorithms_match_brute_force_on_open_meshes() {
 #[test]
 fn simple_loops_stop_with_a_message_at_a_boundary() {
     let (winged_lib, half_lib) = library();
-    let grid = quad_grid(3, 2);
+    let grid = generate::grid(3, 2);
     let (we, he) = (winged(&grid), half(&grid));
     for (program, topology) in [
         (&winged_lib, &we as &dyn Topology),
@@ -221,22 +221,26 @@ fn exercise(name: &str, polygons: &Polygons, mesh: &str) {
 
 #[test]
 fn exercise_opposite_face_of_a_vertex_in_a_tetrahedron() {
-    exercise("vertexOppositeFace", &tetrahedron(), "tetrahedron");
+    exercise(
+        "vertexOppositeFace",
+        &generate::regular_tetrahedron(),
+        "tetrahedron",
+    );
 }
 
 #[test]
 fn exercise_opposite_face_of_a_face_in_a_cube() {
-    exercise("faceOppositeFace", &cube(), "cube");
+    exercise("faceOppositeFace", &generate::cube_zyx(), "cube");
 }
 
 #[test]
 fn exercise_opposite_edges_in_quad_meshes() {
-    exercise("edgeOppositeEdges", &cube(), "cube");
+    exercise("edgeOppositeEdges", &generate::cube_zyx(), "cube");
     exercise("edgeOppositeEdges", &quad_torus(5, 4), "quad torus");
-    exercise("edgeOppositeEdgesOpen", &quad_grid(3, 3), "quad grid");
+    exercise("edgeOppositeEdgesOpen", &generate::grid(3, 3), "quad grid");
     exercise(
         "edgeOppositeEdgesOpen",
-        &without_faces(&cube(), &[2]),
+        &without_faces(&generate::cube_zyx(), &[2]),
         "cube without a face",
     );
 }
@@ -253,7 +257,7 @@ fn exercise_extraordinary_vertices() {
     let algorithm = winged_lib
         .algorithm("isExtraordinary")
         .expect("in the library");
-    let cube = winged(&cube());
+    let cube = winged(&generate::cube_zyx());
     let torus = winged(&quad_torus(5, 4));
     let run = |topology: &dyn Topology| {
         execute(
@@ -313,7 +317,7 @@ fn random_mesh() -> impl Strategy<Value = (Polygons, bool)> {
         if quads {
             quad_torus(nu, nv)
         } else {
-            edgewise_core::mesh::generate::torus(nu, nv)
+            generate::torus(nu, nv)
         }
     });
     let solid = (0usize..10).prop_map(|i| closed_samples().swap_remove(i).1);

@@ -7,6 +7,7 @@ use edgewise_core::lang::{
     self, Algorithm, InputError, Outcome, RunOptions, RuntimeErrorKind, StepKind, Topology, Trace,
     Value, execute, run,
 };
+use edgewise_core::mesh::generate;
 use edgewise_core::schema::{Column, ElementKind, ElementRef, LookupError, Structure};
 use lang_support::*;
 use std::sync::Arc;
@@ -99,7 +100,7 @@ end;
 
 #[test]
 fn both_dialects_mean_the_same() {
-    for polygons in [cube(), icosahedron(), quad_torus(5, 4)] {
+    for polygons in [generate::cube_zyx(), icosahedron(), quad_torus(5, 4)] {
         let we = winged(&polygons);
         let he = half(&polygons);
         for v in 0..polygons.vertex_count() as u32 {
@@ -123,7 +124,7 @@ fn both_dialects_mean_the_same() {
 
 #[test]
 fn steps_carry_the_papers_operations_and_their_spans() {
-    let mesh = winged(&tetrahedron());
+    let mesh = winged(&generate::regular_tetrahedron());
     let algorithm = compile_one(JOURNAL_FIG_6);
     let trace = run(
         &algorithm,
@@ -260,7 +261,7 @@ fn breakpoints_find_the_next_and_previous_step_on_a_line() {
 
 #[test]
 fn the_step_limit_stops_runaway_loops() {
-    let mesh = half(&cube());
+    let mesh = half(&generate::cube_zyx());
     let runaway = "algorithm forever(v : Vertex) : HalfEdge;
 var n : Integer;
 begin
@@ -310,7 +311,7 @@ end;";
 
 #[test]
 fn runtime_errors_name_the_line_and_the_values() {
-    let grid = quad_grid(2, 2);
+    let grid = generate::grid(2, 2);
     let we = winged(&grid);
     // Edge 0 runs along the bottom of the grid: one of its faces is missing.
     let missing_side = if we
@@ -371,7 +372,7 @@ fn runtime_errors_name_the_line_and_the_values() {
 
 #[test]
 fn integers_and_booleans_compute_as_documented() {
-    let mesh = half(&cube());
+    let mesh = half(&generate::cube_zyx());
     let source = "algorithm a(v : Vertex) : HalfEdge;
 var q, r, s : Integer;
     b, c : Boolean;
@@ -403,7 +404,7 @@ end;";
 #[test]
 fn inputs_are_checked_against_parameters_and_mesh() {
     let algorithm = compile_one(NEPERUD_FIG_5B);
-    let cube = cube();
+    let cube = generate::cube_zyx();
     let (we, he) = (winged(&cube), half(&cube));
     let err = |topology: &dyn Topology, args: &[(&str, Value)]| {
         run(&algorithm, &topology, args, RunOptions::default())

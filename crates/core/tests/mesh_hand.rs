@@ -56,57 +56,18 @@ fn assert_round_trips(polygons: &Polygons, he: &HalfEdgeMesh, we: &WingedEdgeMes
 
 // ---------------------------------------------------------------- tetrahedron
 
-/// Table 2 of the journal paper, one row per edge a..f:
-/// start, end, left face, right face, left pred, left succ, right pred, right succ.
-/// Vertices A..D are 0..3, faces 1..4 are 0..3, edges a..f are 0..5.
-type Row = (char, char, u32, u32, char, char, char, char);
-const TABLE_2: [Row; 6] = [
-    ('A', 'D', 3, 1, 'e', 'f', 'b', 'c'),
-    ('A', 'B', 1, 4, 'c', 'a', 'f', 'd'),
-    ('B', 'D', 1, 2, 'a', 'b', 'd', 'e'),
-    ('B', 'C', 2, 4, 'e', 'c', 'b', 'f'),
-    ('C', 'D', 2, 3, 'c', 'd', 'f', 'a'),
-    ('A', 'C', 4, 3, 'd', 'b', 'a', 'e'),
-];
-
-fn vertex_named(name: char) -> VertexId {
-    v(name as u32 - 'A' as u32)
-}
 fn edge_named(name: char) -> EdgeId {
     e(name as u32 - 'a' as u32)
 }
 
-/// The tetrahedron of Fig. 2, faces listed counter-clockwise seen from
-/// outside and rotated so the edges appear in the order a, b, c, d, e, f:
-/// face 1 = ABD as D,A,B; face 2 = BCD; face 3 = ACD as A,D,C; face 4 = ABC as
-/// A,C,B.
-fn figure_2() -> Polygons {
-    let positions = vec![
-        Vec3::new(0.0, 0.0, 0.0),
-        Vec3::new(1.0, 0.0, 0.0),
-        Vec3::new(0.5, 0.0, -0.9),
-        Vec3::new(0.5, 0.8, -0.3),
-    ];
-    Polygons::from_triangles(positions, &[[3, 0, 1], [1, 2, 3], [0, 3, 2], [0, 2, 1]])
-}
-
 #[test]
 fn tetrahedron_reproduces_table_2() {
-    let (_, we) = build_both(&figure_2());
+    let (_, we) = build_both(&generate::tetrahedron());
     assert_eq!(we.edge_count(), 6);
+    // Each edge against its row of Table 2 as printed.
     let mut reversed = Vec::new();
-    for (row, &(start, end, left, right, lp, ls, rp, rs)) in TABLE_2.iter().enumerate() {
+    for (row, &expected) in generate::table_2().edges().iter().enumerate() {
         let name = (b'a' + row as u8) as char;
-        let expected = WingedEdge {
-            start_vertex: vertex_named(start),
-            end_vertex: vertex_named(end),
-            left_face: Some(f(left - 1)),
-            right_face: Some(f(right - 1)),
-            left_predecessor: edge_named(lp),
-            left_successor: edge_named(ls),
-            right_predecessor: edge_named(rp),
-            right_successor: edge_named(rs),
-        };
         let actual = *we.edge(edge_named(name)).expect("edge exists");
         if actual.start_vertex == expected.start_vertex {
             assert_eq!(actual, expected, "row {name}");
@@ -146,7 +107,7 @@ fn tetrahedron_reproduces_table_2() {
 
 #[test]
 fn tetrahedron_half_edges_follow_face_order() {
-    let polygons = figure_2();
+    let polygons = generate::tetrahedron();
     let (he, we) = build_both(&polygons);
     assert_eq!(he.half_edge_count(), 12);
     // Face [D, A, B] gives D→A, A→B, B→D.
@@ -196,25 +157,9 @@ fn tetrahedron_half_edges_follow_face_order() {
 
 // ----------------------------------------------------------------------- cube
 
-fn cube() -> Polygons {
-    let positions = (0..8)
-        .map(|i| Vec3::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32))
-        .collect();
-    // Counter-clockwise seen from outside; vertex i = (x, y, z) bits.
-    let faces: [&[u32]; 6] = [
-        &[0, 2, 3, 1],
-        &[4, 5, 7, 6],
-        &[0, 1, 5, 4],
-        &[2, 6, 7, 3],
-        &[0, 4, 6, 2],
-        &[1, 3, 7, 5],
-    ];
-    Polygons::from_faces(positions, faces)
-}
-
 #[test]
 fn cube_of_quads() {
-    let polygons = cube();
+    let polygons = generate::cube();
     let (he, we) = build_both(&polygons);
     let stats = we.stats();
     assert_eq!(
@@ -246,19 +191,9 @@ fn cube_of_quads() {
 
 // -------------------------------------------------------------- open square
 
-fn open_square() -> Polygons {
-    let positions = vec![
-        Vec3::new(0.0, 0.0, 0.0),
-        Vec3::new(1.0, 0.0, 0.0),
-        Vec3::new(1.0, 1.0, 0.0),
-        Vec3::new(0.0, 1.0, 0.0),
-    ];
-    Polygons::from_triangles(positions, &[[0, 1, 2], [0, 2, 3]])
-}
-
 #[test]
 fn open_square_half_edge_tables() {
-    let (he, _) = build_both(&open_square());
+    let (he, _) = build_both(&generate::open_square());
     let row = |end, face: Option<u32>, pair, successor| HalfEdge {
         end_vertex: v(end),
         face: face.map(f),
@@ -312,7 +247,7 @@ fn open_square_half_edge_tables() {
 
 #[test]
 fn open_square_winged_edge_tables() {
-    let polygons = open_square();
+    let polygons = generate::open_square();
     let (he, we) = build_both(&polygons);
     let row = |start, end, left, right: Option<u32>, lp, ls, rp, rs| WingedEdge {
         start_vertex: v(start),
@@ -379,10 +314,7 @@ fn open_square_winged_edge_tables() {
 
 #[test]
 fn quad_strip() {
-    let positions = (0..8)
-        .map(|i| Vec3::new((i % 4) as f32, (i / 4) as f32, 0.0))
-        .collect();
-    let polygons = Polygons::from_faces(positions, [[0u32, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6]]);
+    let polygons = generate::grid(3, 1);
     let (he, we) = build_both(&polygons);
     let stats = he.stats();
     assert_eq!(
@@ -440,11 +372,13 @@ fn torus_has_genus_one() {
 fn two_components_and_an_isolated_vertex() {
     let mut polygons = generate::torus(3, 3);
     let offset = polygons.vertex_count() as u32;
-    for p in [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE] {
+    let corner = generate::unit_tetrahedron();
+    for &p in corner.positions().iter().chain(&[Vec3::ONE]) {
         polygons.push_vertex(p);
     }
-    for face in [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]] {
-        polygons.push_face(&face.map(|x| x + offset));
+    for face in corner.faces() {
+        let face: Vec<u32> = face.iter().map(|x| x + offset).collect();
+        polygons.push_face(&face);
     }
     let (we, warnings) = WingedEdgeMesh::build(&polygons).expect("build");
     assert_eq!(warnings.len(), 1);

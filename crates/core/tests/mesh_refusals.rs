@@ -167,14 +167,14 @@ fn splits_a_vertex_joining_two_fans() {
     assert_eq!(again, mesh);
 
     // Two closed tetrahedra sharing their apex (two closed fans): two spheres.
-    let tetrahedron = [[0u32, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
-    let mut faces: Vec<[u32; 3]> = tetrahedron.to_vec();
-    faces.extend(
-        tetrahedron
-            .iter()
-            .map(|face| face.map(|x| if x == 0 { 0 } else { x + 3 })),
-    );
-    let (mesh, warnings) = accepted(&Polygons::from_triangles(vec![Vec3::ZERO; 7], &faces));
+    let tetrahedron = generate::unit_tetrahedron();
+    let mut faces: Vec<Vec<u32>> = tetrahedron.faces().map(<[u32]>::to_vec).collect();
+    faces.extend(tetrahedron.faces().map(|face| {
+        face.iter()
+            .map(|&x| if x == 0 { 0 } else { x + 3 })
+            .collect()
+    }));
+    let (mesh, warnings) = accepted(&Polygons::from_faces(vec![Vec3::ZERO; 7], faces));
     assert_eq!(warnings, [split(0, &[7])]);
     let stats = mesh.stats();
     assert_eq!((stats.vertices, stats.edges, stats.faces), (8, 12, 8));
@@ -308,11 +308,6 @@ fn tiny_tori_are_refused_not_panicked_on() {
 
 // --------------------------------------------------------------- validate()
 
-fn tetrahedron() -> Polygons {
-    let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
-    Polygons::from_triangles(positions, &[[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
-}
-
 fn has(issues: &[Issue], element: Element, field: Column, text: &str) -> bool {
     issues.iter().any(|issue| {
         issue.element == element && issue.field == field && issue.message.contains(text)
@@ -321,7 +316,7 @@ fn has(issues: &[Issue], element: Element, field: Column, text: &str) -> bool {
 
 #[test]
 fn validate_names_the_half_edge_field_at_fault() {
-    let (mesh, _) = HalfEdgeMesh::build(&tetrahedron()).expect("build");
+    let (mesh, _) = HalfEdgeMesh::build(&generate::unit_tetrahedron()).expect("build");
     let (vertices, faces, mut half_edges) = mesh.into_raw_parts();
     half_edges[0].pair_edge = HalfEdgeId::new(5);
     half_edges[7].successor_edge = HalfEdgeId::new(40);
@@ -377,7 +372,7 @@ fn validate_names_the_half_edge_field_at_fault() {
 
 #[test]
 fn validate_catches_wrong_incident_edges_and_duplicate_successors() {
-    let (mesh, _) = HalfEdgeMesh::build(&tetrahedron()).expect("build");
+    let (mesh, _) = HalfEdgeMesh::build(&generate::unit_tetrahedron()).expect("build");
     let (mut vertices, mut faces, mut half_edges) = mesh.into_raw_parts();
     vertices[1].incident_edge = Some(HalfEdgeId::new(0)); // half-edge 0 ends at vertex 2
     vertices[3].position = Vec3::new(f32::NAN, 0.0, 0.0);
@@ -415,7 +410,7 @@ fn validate_catches_wrong_incident_edges_and_duplicate_successors() {
 
 #[test]
 fn validate_names_the_winged_edge_wing_at_fault() {
-    let (mesh, _) = WingedEdgeMesh::build(&tetrahedron()).expect("build");
+    let (mesh, _) = WingedEdgeMesh::build(&generate::unit_tetrahedron()).expect("build");
     let (vertices, faces, mut edges) = mesh.into_raw_parts();
     // Swap edge 0's left wings: the predecessor and successor are now wrong.
     let edge = &mut edges[0];
@@ -445,7 +440,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
     ));
 
     // A right face that is not the face its wings run around.
-    let (_, _, mut edges) = WingedEdgeMesh::build(&tetrahedron())
+    let (_, _, mut edges) = WingedEdgeMesh::build(&generate::unit_tetrahedron())
         .expect("build")
         .0
         .into_raw_parts();
@@ -468,7 +463,7 @@ fn validate_names_the_winged_edge_wing_at_fault() {
     ));
 
     // Incident edges.
-    let (mut vertices, mut faces, edges) = WingedEdgeMesh::build(&tetrahedron())
+    let (mut vertices, mut faces, edges) = WingedEdgeMesh::build(&generate::unit_tetrahedron())
         .expect("build")
         .0
         .into_raw_parts();

@@ -230,17 +230,14 @@ pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> O
 
 #[cfg(test)]
 mod tests {
-    use edgewise_core::{formats, schema::Structure};
+    use edgewise_core::{mesh::generate, schema::Structure};
 
     use super::*;
     use crate::algorithm::AlgorithmLibrary;
 
-    fn tetrahedron(structure: Structure) -> Mesh {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../meshes/tetrahedron.wtb");
-        let bytes = std::fs::read(path).expect("the sample exists");
-        formats::load(&bytes, "tetrahedron.wtb", structure)
-            .expect("loads")
-            .mesh
+    /// The sample tetrahedron: the journal's Table 2 as printed.
+    fn tetrahedron() -> Mesh {
+        Mesh::Winged(generate::table_2())
     }
 
     #[test]
@@ -269,7 +266,7 @@ mod tests {
             })
             .expect("a vertex");
         assert!(pending.prompt().is_none());
-        let mesh = tetrahedron(Structure::WingedEdge);
+        let mesh = tetrahedron();
         let mut session = pending.start(&mesh).expect("runs");
         assert_eq!(session.step(), 0);
         assert!(session.steps() > 10);
@@ -287,7 +284,7 @@ mod tests {
             .expect("shipped");
         let mut pending = PendingRun::new(Arc::clone(algorithm));
         pending.set("v", Value::Vertex(0));
-        let mesh = tetrahedron(Structure::WingedEdge);
+        let mesh = tetrahedron();
         let mut session = pending.start(&mesh).expect("runs");
         // The `e.mark` line of the shipped algorithm.
         let mark_line = (0..session.steps())

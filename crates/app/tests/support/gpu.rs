@@ -132,6 +132,45 @@ pub fn render_to_pixels(
     Ok(pixels)
 }
 
+/// Runs `ui` for one frame on `screen` (in points) and draws it into `size`
+/// pixels as eframe would, texture uploads included; returns the pixels as
+/// [`render_to_pixels`] does.
+pub fn draw_frame(
+    rs: &RenderState,
+    ctx: &egui::Context,
+    screen: egui::Rect,
+    size: [u32; 2],
+    events: Vec<egui::Event>,
+    mut ui: impl FnMut(&mut egui::Ui),
+) -> Result<Vec<u8>, String> {
+    let raw = egui::RawInput {
+        screen_rect: Some(screen),
+        events,
+        ..Default::default()
+    };
+    let mut output = ctx.run_ui(raw, |root| ui(root));
+    let jobs = ctx.tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
+    let descriptor = ScreenDescriptor {
+        size_in_pixels: size,
+        pixels_per_point: output.pixels_per_point,
+    };
+    let mut renderer = rs.renderer.write();
+    for (id, deltas) in &output.textures_delta.set {
+        for delta in deltas {
+            renderer.update_texture(&rs.device, &rs.queue, *id, delta);
+        }
+    }
+    drop(renderer);
+    let pixels = render_to_pixels(rs, &jobs, &descriptor, wgpu::Color::BLACK)?;
+    let mut renderer = rs.renderer.write();
+    for id in &output.textures_delta.free {
+        renderer.free_texture(id);
+    }
+    // Applied above; epaint panics on dropping deltas not marked handled.
+    output.textures_delta.clear();
+    Ok(pixels)
+}
+
 /// Set by `cargo xtask test`: a GPU test without an adapter then fails
 /// instead of passing without having drawn anything.
 const REQUIRE_GPU: &str = "EDGEWISE_REQUIRE_GPU";

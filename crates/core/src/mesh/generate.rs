@@ -1,10 +1,14 @@
-//! Generated meshes: the benchmark torus, also used as a sample mesh.
+//! Generated meshes: the benchmark torus, also used as a sample mesh, and the
+//! small meshes that tests, examples and the sample library share, so each
+//! one's numbering (which tests and golden files pin) is written down once.
 
 use std::f32::consts::TAU;
 
 use glam::Vec3;
 
+use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
+use super::winged_edge::{Face, Vertex, WingedEdge, WingedEdgeMesh};
 
 /// Major radius of [`torus`].
 pub const TORUS_MAJOR_RADIUS: f32 = 2.0;
@@ -63,6 +67,219 @@ pub fn torus(nu: u32, nv: u32) -> Polygons {
             );
             polygons.push_face(&[a, b, c]);
             polygons.push_face(&[a, c, d]);
+        }
+    }
+    polygons
+}
+
+/// The journal paper's tetrahedron (Fig. 2): vertices A, B, C, D are 0–3 and
+/// faces 1 = ABD, 2 = BCD, 3 = ACD, 4 = ABC are 0–3, counter-clockwise seen
+/// from outside. Each face starts where the winged-edge build then numbers
+/// the edges a–f as Table 2 does (it points only a and f the other way; see
+/// [`table_2`]).
+///
+/// ```
+/// let tetrahedron = edgewise_core::mesh::generate::tetrahedron();
+/// assert_eq!(tetrahedron.face(0), Some(&[3, 0, 1][..])); // face 1 = D, A, B
+/// ```
+pub fn tetrahedron() -> Polygons {
+    let positions = vec![
+        Vec3::new(0.0, 0.0, 0.0),
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.5, 0.0, -0.9),
+        Vec3::new(0.5, 0.8, -0.3),
+    ];
+    Polygons::from_triangles(positions, &[[3, 0, 1], [1, 2, 3], [0, 3, 2], [0, 2, 1]])
+}
+
+/// Table 2 of the journal paper exactly as printed, on the positions of
+/// [`tetrahedron`]: edges a–f are 0–5, vertices A–D 0–3, faces 1–4 0–3. The
+/// builder cannot produce it (it orients each edge the way it first meets
+/// it), so the sample file and the paper's traces are entered as tables.
+///
+/// ```
+/// use edgewise_core::mesh::{EdgeId, generate};
+/// let table = generate::table_2();
+/// assert_eq!(table.validate(), vec![]);
+/// // Vertex D's incident edge is e, as the paper picked.
+/// assert_eq!(table.vertices()[3].incident_edge, Some(EdgeId::new(4)));
+/// ```
+pub fn table_2() -> WingedEdgeMesh {
+    let v = |c: char| VertexId::new(c as u32 - 'A' as u32);
+    let e = |c: char| EdgeId::new(c as u32 - 'a' as u32);
+    let f = |n: u32| Some(FaceId::new(n - 1));
+    // Start, end, left face, right face, left pred, left succ, right pred, right succ.
+    let rows = [
+        ('A', 'D', 3, 1, 'e', 'f', 'b', 'c'),
+        ('A', 'B', 1, 4, 'c', 'a', 'f', 'd'),
+        ('B', 'D', 1, 2, 'a', 'b', 'd', 'e'),
+        ('B', 'C', 2, 4, 'e', 'c', 'b', 'f'),
+        ('C', 'D', 2, 3, 'c', 'd', 'f', 'a'),
+        ('A', 'C', 4, 3, 'd', 'b', 'a', 'e'),
+    ];
+    let edges = rows
+        .iter()
+        .map(|&(start, end, left, right, lp, ls, rp, rs)| WingedEdge {
+            start_vertex: v(start),
+            end_vertex: v(end),
+            left_face: f(left),
+            right_face: f(right),
+            left_predecessor: e(lp),
+            left_successor: e(ls),
+            right_predecessor: e(rp),
+            right_successor: e(rs),
+        })
+        .collect();
+    let vertices = tetrahedron()
+        .positions()
+        .iter()
+        .zip(['a', 'b', 'd', 'e'])
+        .map(|(&position, edge)| Vertex {
+            position,
+            incident_edge: Some(e(edge)),
+        })
+        .collect();
+    let faces = ['a', 'c', 'a', 'b']
+        .iter()
+        .map(|&edge| Face {
+            incident_edge: e(edge),
+        })
+        .collect();
+    WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
+}
+
+/// The corner of the unit cube: vertex 0 at the origin and 1, 2, 3 on the x,
+/// y and z axes; faces 0 2 1 (the xy side), 0 1 3, 1 2 3, 0 3 2. The
+/// refusal tests corrupt its tables row by row, so its numbering is fixed.
+///
+/// ```
+/// let corner = edgewise_core::mesh::generate::unit_tetrahedron();
+/// assert_eq!(corner.face(3), Some(&[0, 3, 2][..]));
+/// ```
+pub fn unit_tetrahedron() -> Polygons {
+    let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
+    Polygons::from_triangles(positions, &[[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
+}
+
+/// A regular tetrahedron on alternate corners of the cube (±1, ±1, ±1),
+/// numbered as the language's golden traces were recorded: vertices
+/// (1, 1, 1), (1, −1, −1), (−1, 1, −1), (−1, −1, 1).
+///
+/// ```
+/// let tetrahedron = edgewise_core::mesh::generate::regular_tetrahedron();
+/// assert_eq!(tetrahedron.face(0), Some(&[2, 0, 1][..]));
+/// ```
+pub fn regular_tetrahedron() -> Polygons {
+    let positions = vec![
+        Vec3::new(1.0, 1.0, 1.0),
+        Vec3::new(1.0, -1.0, -1.0),
+        Vec3::new(-1.0, 1.0, -1.0),
+        Vec3::new(-1.0, -1.0, 1.0),
+    ];
+    Polygons::from_triangles(positions, &[[2, 0, 1], [1, 0, 3], [3, 0, 2], [2, 1, 3]])
+}
+
+/// The cube (±1, ±1, ±1) of six squares, as in the sample library: vertex
+/// `i` has x from bit 0, y from bit 1 and z from bit 2 (0 is −1, 1 is +1);
+/// faces −z, −y, −x, +x, +y, +z, each from its lowest vertex.
+///
+/// ```
+/// let cube = edgewise_core::mesh::generate::cube();
+/// assert_eq!(cube.face(0), Some(&[0, 2, 3, 1][..])); // z = −1
+/// ```
+pub fn cube() -> Polygons {
+    cube_with(
+        |i| [i & 1, (i >> 1) & 1, (i >> 2) & 1],
+        [
+            [0, 2, 3, 1],
+            [0, 1, 5, 4],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+            [2, 6, 7, 3],
+            [4, 5, 7, 6],
+        ],
+    )
+}
+
+/// The same cube numbered the other way round, as the language's golden
+/// traces were recorded: vertex `i` has x from bit 2, y from bit 1 and z
+/// from bit 0; faces −x, −y, −z, +z, +y, +x.
+///
+/// ```
+/// let cube = edgewise_core::mesh::generate::cube_zyx();
+/// assert_eq!(cube.face(0), Some(&[2, 0, 1, 3][..])); // x = −1
+/// ```
+pub fn cube_zyx() -> Polygons {
+    cube_with(
+        |i| [(i >> 2) & 1, (i >> 1) & 1, i & 1],
+        [
+            [2, 0, 1, 3],
+            [1, 0, 4, 5],
+            [4, 0, 2, 6],
+            [3, 1, 5, 7],
+            [6, 2, 3, 7],
+            [5, 4, 6, 7],
+        ],
+    )
+}
+
+/// Eight corners whose (x, y, z) bits `bits` gives, and six squares.
+fn cube_with(bits: impl Fn(u32) -> [u32; 3], faces: [[u32; 4]; 6]) -> Polygons {
+    let positions = (0..8)
+        .map(|i| Vec3::from_array(bits(i).map(|bit| if bit == 0 { -1.0 } else { 1.0 })))
+        .collect();
+    Polygons::from_faces(positions, faces)
+}
+
+/// A unit square in the plane z = 0 cut along its diagonal 0–2 into
+/// triangles 0 1 2 and 0 2 3: the smallest mesh with a boundary, small
+/// enough to check its tables by hand.
+///
+/// ```
+/// let square = edgewise_core::mesh::generate::open_square();
+/// assert_eq!(square.face(1), Some(&[0, 2, 3][..]));
+/// ```
+pub fn open_square() -> Polygons {
+    let positions = vec![Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y];
+    Polygons::from_triangles(positions, &[[0, 1, 2], [0, 2, 3]])
+}
+
+/// An open grid of `nx × ny` unit squares in the plane z = 0, with one
+/// boundary loop: vertex (i, j) is number `j·(nx + 1) + i` at (i, j, 0), and
+/// square (i, j) is face `j·nx + i`, listed (i, j), (i + 1, j), (i + 1, j + 1),
+/// (i, j + 1), counter-clockwise seen from +z. Grids of more than
+/// [`TORUS_MAX_VERTICES`] vertices give an empty list, as for [`torus`].
+///
+/// ```
+/// let grid = edgewise_core::mesh::generate::grid(3, 2);
+/// assert_eq!((grid.vertex_count(), grid.face_count()), (12, 6));
+/// assert_eq!(grid.face(0), Some(&[0, 1, 5, 4][..]));
+/// ```
+pub fn grid(nx: u32, ny: u32) -> Polygons {
+    let (columns, rows) = (u64::from(nx) + 1, u64::from(ny) + 1);
+    if columns * rows > TORUS_MAX_VERTICES {
+        return Polygons::new();
+    }
+    let (count_x, count_y) = (nx as usize, ny as usize);
+    let mut polygons = Polygons::with_capacity(
+        (count_x + 1) * (count_y + 1),
+        count_x * count_y,
+        4 * count_x * count_y,
+    );
+    for j in 0..=ny {
+        for i in 0..=nx {
+            polygons.push_vertex(Vec3::new(i as f32, j as f32, 0.0));
+        }
+    }
+    let index = |i: u32, j: u32| j * (nx + 1) + i;
+    for j in 0..ny {
+        for i in 0..nx {
+            polygons.push_face(&[
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            ]);
         }
     }
     polygons

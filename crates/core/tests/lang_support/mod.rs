@@ -1,5 +1,6 @@
 //! Shared by the language's integration tests: sample meshes built from
-//! positions and counter-clockwise polygons, and brute-force answers computed
+//! positions and counter-clockwise polygons (with the tetrahedron, cube and
+//! grid of `mesh::generate`), and brute-force answers computed
 //! by scanning whole tables, the "conventional" way the papers contrast with
 //! walking the structure.
 
@@ -88,27 +89,6 @@ pub fn convex_polyhedron(points: &[[f64; 3]]) -> Polygons {
 
 const PHI: f64 = 1.618_033_988_749_895;
 
-pub fn tetrahedron() -> Polygons {
-    convex_polyhedron(&[
-        [1.0, 1.0, 1.0],
-        [1.0, -1.0, -1.0],
-        [-1.0, 1.0, -1.0],
-        [-1.0, -1.0, 1.0],
-    ])
-}
-
-pub fn cube() -> Polygons {
-    let mut points = Vec::new();
-    for x in [-1.0, 1.0] {
-        for y in [-1.0, 1.0] {
-            for z in [-1.0, 1.0] {
-                points.push([x, y, z]);
-            }
-        }
-    }
-    convex_polyhedron(&points)
-}
-
 pub fn octahedron() -> Polygons {
     convex_polyhedron(&[
         [1.0, 0.0, 0.0],
@@ -191,29 +171,6 @@ pub fn quad_torus(nu: u32, nv: u32) -> Polygons {
     Polygons::from_faces(triangles.positions().to_vec(), faces)
 }
 
-/// An open grid of `nu × nv` quads in the plane.
-pub fn quad_grid(nu: u32, nv: u32) -> Polygons {
-    let mut positions = Vec::new();
-    for j in 0..=nv {
-        for i in 0..=nu {
-            positions.push(Vec3::new(i as f32, j as f32, 0.0));
-        }
-    }
-    let index = |i: u32, j: u32| j * (nu + 1) + i;
-    let mut faces = Vec::new();
-    for j in 0..nv {
-        for i in 0..nu {
-            faces.push(vec![
-                index(i, j),
-                index(i + 1, j),
-                index(i + 1, j + 1),
-                index(i, j + 1),
-            ]);
-        }
-    }
-    Polygons::from_faces(positions, faces)
-}
-
 /// The same mesh without some faces (which must leave it manifold).
 pub fn without_faces(polygons: &Polygons, removed: &[usize]) -> Polygons {
     let faces: Vec<Vec<u32>> = polygons
@@ -228,8 +185,8 @@ pub fn without_faces(polygons: &Polygons, removed: &[usize]) -> Polygons {
 /// Every closed sample mesh, by name.
 pub fn closed_samples() -> Vec<(&'static str, Polygons)> {
     vec![
-        ("tetrahedron", tetrahedron()),
-        ("cube", cube()),
+        ("tetrahedron", generate::regular_tetrahedron()),
+        ("cube", generate::cube_zyx()),
         ("octahedron", octahedron()),
         ("icosahedron", icosahedron()),
         ("dodecahedron", dodecahedron()),
@@ -244,8 +201,11 @@ pub fn closed_samples() -> Vec<(&'static str, Polygons)> {
 /// Open sample meshes: each has at least one boundary loop.
 pub fn open_samples() -> Vec<(&'static str, Polygons)> {
     vec![
-        ("quad grid 3×2", quad_grid(3, 2)),
-        ("cube without a face", without_faces(&cube(), &[0])),
+        ("quad grid 3×2", generate::grid(3, 2)),
+        (
+            "cube without a face",
+            without_faces(&generate::cube_zyx(), &[0]),
+        ),
         (
             "icosahedron without a face",
             without_faces(&icosahedron(), &[3]),
