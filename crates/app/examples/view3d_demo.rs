@@ -5,10 +5,10 @@
 //! the preview. The side panel holds the view options.
 
 use edgewise_app::view3d::{
-    DrawIds, ElementStyle, MeshGeometry, Pick, PickFilter, PickKind, Pointer, SceneStyles, View3d,
-    ViewOptions,
+    DrawIds, ElementStyle, MeshGeometry, PickFilter, Pointer, SceneStyles, View3d, ViewOptions,
 };
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
+use edgewise_core::schema::{ElementKind, ElementRef};
 use egui::Color32;
 
 struct Demo {
@@ -16,8 +16,8 @@ struct Demo {
     geometry: MeshGeometry,
     styles: SceneStyles,
     options: ViewOptions,
-    selected: Option<Pick>,
-    hovered: Option<Pick>,
+    selected: Option<ElementRef>,
+    hovered: Option<ElementRef>,
 }
 
 fn polygons(name: &str) -> Polygons {
@@ -84,22 +84,13 @@ impl Demo {
                 style.colour = Some(Color32::from_rgb(232, 196, 40));
                 style.label = Some(name);
             };
-            match pick {
-                Pick::Vertex(v) => {
-                    if let Some(s) = styles.vertices.get_mut(v as usize) {
-                        highlight(s, format!("{v}: picked"));
-                    }
-                }
-                Pick::Edge(e) => {
-                    if let Some(s) = styles.edges.get_mut(e as usize) {
-                        highlight(s, format!("{e}: picked"));
-                    }
-                }
-                Pick::Face(f) => {
-                    if let Some(s) = styles.faces.get_mut(f as usize) {
-                        highlight(s, format!("{f}: picked"));
-                    }
-                }
+            let list = match pick.kind {
+                ElementKind::Vertex => &mut styles.vertices,
+                ElementKind::Edge => &mut styles.edges,
+                ElementKind::Face => &mut styles.faces,
+            };
+            if let Some(s) = list.get_mut(pick.id as usize) {
+                highlight(s, format!("{}: picked", pick.id));
             }
             styles.pointers.push(Pointer {
                 target: pick,
@@ -130,9 +121,9 @@ impl Demo {
             .show_ui(ui, |ui| {
                 for filter in [
                     PickFilter::All,
-                    PickFilter::Only(PickKind::Vertex),
-                    PickFilter::Only(PickKind::Edge),
-                    PickFilter::Only(PickKind::Face),
+                    PickFilter::Only(ElementKind::Vertex),
+                    PickFilter::Only(ElementKind::Edge),
+                    PickFilter::Only(ElementKind::Face),
                 ] {
                     ui.selectable_value(&mut o.pickable, filter, format!("{filter:?}"));
                 }

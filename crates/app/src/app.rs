@@ -23,7 +23,7 @@ use crate::{
     state::{AppState, Counts, DialogState, HighlightState, PendingState, TraceState},
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, ViewOptions},
+    view3d::{DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, ViewOptions},
 };
 
 pub mod algorithm_ui;
@@ -544,14 +544,14 @@ impl EdgewiseApp {
 
     /// The message line along the bottom of the 3D view: what is under the
     /// pointer or selected, or what the loader noticed.
-    fn message_line_ui(&self, ui: &mut egui::Ui, hovered: Option<Pick>) {
+    fn message_line_ui(&self, ui: &mut egui::Ui, hovered: Option<ElementRef>) {
         let Some(document) = &self.tab().document else {
             return;
         };
         let text = if let Some(text) = self.algorithm_message() {
             text
         } else if let Some(pick) = hovered {
-            let e = element_of(pick);
+            let e = pick;
             format!("{} {}: click to select", e.kind.title(), e.id)
         } else if let Some(first) = document.highlights().first() {
             let refs: Vec<String> = document.highlights()[1..]
@@ -676,7 +676,7 @@ impl EdgewiseApp {
             .inner;
         self.tab_mut().hovered = response.hovered;
         if let Some(pick) = response.clicked {
-            self.element_clicked(Some(element_of(pick)));
+            self.element_clicked(Some(pick));
         } else if response.background_clicked {
             self.element_clicked(None);
         }
@@ -787,7 +787,7 @@ fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
             .pointers
             .iter()
             .map(|&(element, colour)| Pointer {
-                target: pick_of(element),
+                target: element,
                 colour,
             })
             .collect(),
@@ -846,14 +846,6 @@ fn help_menu_ui(ui: &mut egui::Ui) {
     });
 }
 
-fn pick_of(element: ElementRef) -> Pick {
-    match element.kind {
-        ElementKind::Vertex => Pick::Vertex(element.id),
-        ElementKind::Edge => Pick::Edge(element.id),
-        ElementKind::Face => Pick::Face(element.id),
-    }
-}
-
 /// The style slot of `element`, if the mesh has it.
 fn style_of(styles: &mut SceneStyles, element: ElementRef) -> Option<&mut ElementStyle> {
     let list = match element.kind {
@@ -862,23 +854,6 @@ fn style_of(styles: &mut SceneStyles, element: ElementRef) -> Option<&mut Elemen
         ElementKind::Face => &mut styles.faces,
     };
     list.get_mut(element.id as usize)
-}
-
-fn element_of(pick: Pick) -> ElementRef {
-    match pick {
-        Pick::Vertex(id) => ElementRef {
-            kind: ElementKind::Vertex,
-            id,
-        },
-        Pick::Edge(id) => ElementRef {
-            kind: ElementKind::Edge,
-            id,
-        },
-        Pick::Face(id) => ElementRef {
-            kind: ElementKind::Face,
-            id,
-        },
-    }
 }
 
 fn counts(mesh: &Mesh) -> Counts {

@@ -28,6 +28,7 @@ mod scene;
 mod spheres;
 mod style;
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -135,34 +136,8 @@ pub struct ElementStyle {
 /// side; the same element twice gets two).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pointer {
-    pub target: Pick,
+    pub target: ElementRef,
     pub colour: egui::Color32,
-}
-
-/// A picked element.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Serialize, Deserialize)]
-pub enum Pick {
-    Vertex(u32),
-    Edge(u32),
-    Face(u32),
-}
-
-impl Pick {
-    pub fn kind(self) -> PickKind {
-        match self {
-            Self::Vertex(_) => PickKind::Vertex,
-            Self::Edge(_) => PickKind::Edge,
-            Self::Face(_) => PickKind::Face,
-        }
-    }
-}
-
-/// The kinds of element.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Serialize, Deserialize)]
-pub enum PickKind {
-    Vertex,
-    Edge,
-    Face,
 }
 
 /// Which elements clicks can pick (an algorithm asking for a face makes only
@@ -171,7 +146,7 @@ pub enum PickKind {
 pub enum PickFilter {
     #[default]
     All,
-    Only(PickKind),
+    Only(ElementKind),
 }
 
 /// When element ids are drawn.
@@ -218,9 +193,9 @@ impl Default for ViewOptions {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ViewResponse {
     /// An element was clicked.
-    pub clicked: Option<Pick>,
+    pub clicked: Option<ElementRef>,
     /// The element under the pointer (the preview).
-    pub hovered: Option<Pick>,
+    pub hovered: Option<ElementRef>,
     /// The background was clicked (the selection should clear).
     pub background_clicked: bool,
 }
@@ -264,10 +239,10 @@ pub struct View3d {
     /// (styles generation, dark, geometry id) the current styles were built for.
     styles_key: Option<(u64, bool, u64)>,
     /// Elements with a colour or label, for the labels pass.
-    highlighted: Vec<Pick>,
+    highlighted: Vec<ElementRef>,
     last_aspect: f32,
     frame_pending: bool,
-    hover: Option<(HoverKey, Option<Pick>)>,
+    hover: Option<(HoverKey, Option<ElementRef>)>,
     gpu: Option<GpuLink>,
 }
 
@@ -359,7 +334,7 @@ impl View3d {
         viewport: Rect,
         pointer: egui::Pos2,
         options: &ViewOptions,
-    ) -> Option<Pick> {
+    ) -> Option<ElementRef> {
         let transforms = self.transforms(viewport);
         PickQuery {
             scene: &self.scene,
@@ -374,7 +349,7 @@ impl View3d {
 
     /// Where an element's label attaches, in world space (None for an id out
     /// of range).
-    pub fn anchor(&self, pick: Pick) -> Option<Vec3> {
+    pub fn anchor(&self, pick: ElementRef) -> Option<Vec3> {
         self.scene.anchor(pick)
     }
 
@@ -529,18 +504,22 @@ impl View3d {
         self.styles_key = Some(key);
         self.styles_id = next_id();
         self.highlighted.clear();
-        type Kind<'a> = (&'a [ElementStyle], fn(u32) -> Pick, usize);
+        type Kind<'a> = (&'a [ElementStyle], ElementKind, usize);
         let kinds: [Kind<'_>; 3] = [
-            (&styles.vertices, Pick::Vertex, self.scene.vertex_count()),
-            (&styles.edges, Pick::Edge, self.scene.edge_count()),
-            (&styles.faces, Pick::Face, self.scene.face_count()),
+            (
+                &styles.vertices,
+                ElementKind::Vertex,
+                self.scene.vertex_count(),
+            ),
+            (&styles.edges, ElementKind::Edge, self.scene.edge_count()),
+            (&styles.faces, ElementKind::Face, self.scene.face_count()),
         ];
-        for (list, make, count) in kinds {
+        for (list, kind, count) in kinds {
             for (i, s) in list.iter().enumerate().take(count) {
                 if style::is_highlighted(s)
                     && let Ok(id) = u32::try_from(i)
                 {
-                    self.highlighted.push(make(id));
+                    self.highlighted.push(ElementRef::new(kind, id));
                 }
             }
         }
@@ -704,14 +683,20 @@ mod tests {
         let transforms = view.transforms(screen());
         let (corner, _) = transforms.project(Vec3::new(1.0, 1.0, 0.0)).unwrap();
         let hover = frame(&ctx, &mut view, vec![Event::PointerMoved(corner)]);
-        assert_eq!(hover.hovered, Some(Pick::Vertex(2)));
+        assert_eq!(hover.hovered, Some(ElementRef::new(ElementKind::Vertex, 2)));
 
         let response = click(&ctx, &mut view, corner);
-        assert_eq!(response.clicked, Some(Pick::Vertex(2)));
+        assert_eq!(
+            response.clicked,
+            Some(ElementRef::new(ElementKind::Vertex, 2))
+        );
         assert!(!response.background_clicked);
 
         let center = transforms.project(Vec3::new(0.5, 0.45, 0.0)).unwrap().0;
-        assert_eq!(click(&ctx, &mut view, center).clicked, Some(Pick::Face(0)));
+        assert_eq!(
+            click(&ctx, &mut view, center).clicked,
+            Some(ElementRef::new(ElementKind::Face, 0))
+        );
 
         let response = click(&ctx, &mut view, Pos2::new(5.0, 5.0));
         assert_eq!(response.clicked, None);
@@ -822,7 +807,7 @@ mod tests {
                 edges: Vec::new(),
                 faces: Vec::new(),
                 pointers: vec![Pointer {
-                    target: Pick::Face(99),
+                    target: ElementRef::new(ElementKind::Face, 99),
                     colour: egui::Color32::RED,
                 }],
             };

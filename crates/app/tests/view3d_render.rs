@@ -11,10 +11,11 @@
 
 mod support;
 
+use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
 use edgewise_app::view3d::{
-    Camera, DrawIds, ElementStyle, MeshGeometry, Pick, Pointer, SceneStyles, View3d, ViewOptions,
+    Camera, DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, View3d, ViewOptions,
     ViewResponse,
 };
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
@@ -224,11 +225,11 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
     };
     styles.pointers = vec![
         Pointer {
-            target: Pick::Edge(3),
+            target: ElementRef::new(ElementKind::Edge, 3),
             colour: LIGHT_BLUE,
         },
         Pointer {
-            target: Pick::Edge(3),
+            target: ElementRef::new(ElementKind::Edge, 3),
             colour: LIGHT_BLUE,
         },
     ];
@@ -251,7 +252,7 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
     // Clicking there picks that vertex.
     assert_eq!(
         view.pick_at(harness.screen(), at, &options),
-        Some(Pick::Vertex(6))
+        Some(ElementRef::new(ElementKind::Vertex, 6))
     );
 }
 
@@ -284,7 +285,7 @@ fn half_edge_grid_with_all_ids_dark() {
 
     // The green half-edge is drawn off its edge, inside its face.
     let transforms = view.transforms(harness.screen());
-    let anchor = view.anchor(Pick::Edge(0)).unwrap();
+    let anchor = view.anchor(ElementRef::new(ElementKind::Edge, 0)).unwrap();
     let (at, _) = transforms.project(anchor).unwrap();
     assert!(image.any_near(at, 12, |p| is_near_colour(p, GREEN, 80)));
 }
@@ -363,7 +364,7 @@ fn torus_20k_faces() {
     );
     assert_eq!(
         view.pick_at(harness.screen(), at, &options),
-        Some(Pick::Vertex(0))
+        Some(ElementRef::new(ElementKind::Vertex, 0))
     );
     // Close up on the outer equator: the coarse arrow and sphere templates.
     view.set_camera(Camera {

@@ -13,7 +13,7 @@ use crate::{
     algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
     command::Argument,
     state::AlgorithmInfo,
-    view3d::{PickFilter, PickKind},
+    view3d::PickFilter,
 };
 
 impl EdgewiseApp {
@@ -123,9 +123,9 @@ impl EdgewiseApp {
     pub(super) fn pick_filter(&self) -> PickFilter {
         match &self.tab().run.run {
             Run::Picking(pending) => match pending.wanted_kind() {
-                Some(ElementKind::Vertex) => PickFilter::Only(PickKind::Vertex),
-                Some(ElementKind::Edge) => PickFilter::Only(PickKind::Edge),
-                Some(ElementKind::Face) => PickFilter::Only(PickKind::Face),
+                Some(ElementKind::Vertex) => PickFilter::Only(ElementKind::Vertex),
+                Some(ElementKind::Edge) => PickFilter::Only(ElementKind::Edge),
+                Some(ElementKind::Face) => PickFilter::Only(ElementKind::Face),
                 None => PickFilter::All,
             },
             _ => PickFilter::All,

@@ -3,7 +3,7 @@
 //! switch only changes which one that is.
 
 use edgewise_core::mesh::Structure;
-use edgewise_core::schema::ElementKind;
+use edgewise_core::schema::{ElementKind, ElementRef};
 
 use super::{EdgewiseApp, twin::Twin};
 use crate::command::{Command, CommandError};
@@ -13,7 +13,7 @@ use crate::{
     obj_editor::ObjEditor,
     paint::Paint,
     state::TabState,
-    view3d::{Pick, SceneStyles, View3d},
+    view3d::{SceneStyles, View3d},
 };
 
 /// One open mesh and everything shown for it: its document, 3D view and
@@ -39,7 +39,7 @@ pub(crate) struct Tab {
     pub(crate) error: Option<String>,
     pub(crate) twin: Option<Twin>,
     /// The element under the pointer in the 3D view, for the message line.
-    pub(crate) hovered: Option<Pick>,
+    pub(crate) hovered: Option<ElementRef>,
 }
 
 impl Tab {

@@ -6,7 +6,7 @@
 use edgewise_core::mesh::EdgeCorrespondence;
 use edgewise_core::schema::ElementRef;
 
-use super::{EdgewiseApp, element_of};
+use super::EdgewiseApp;
 use crate::command::CommandError;
 use crate::{
     document::{Document, map_element},
@@ -119,7 +119,7 @@ impl EdgewiseApp {
             edgewise_core::mesh::Structure::HalfEdge => "The same mesh as half-edge",
         });
         let response = twin.view.ui(ui, &twin.styles, &self.view_options);
-        let clicked = response.clicked.map(element_of).and_then(|element| {
+        let clicked = response.clicked.and_then(|element| {
             map_element(element, twin.document.structure(), &twin.correspondence)
         });
         if let Some(element) = clicked {

@@ -11,7 +11,8 @@ use super::camera::ViewTransforms;
 use super::picking::PickAccel;
 use super::scene::{Scene, Sizes};
 use super::style::Palette;
-use super::{DrawIds, Pick, SceneStyles, ViewOptions, axes, style};
+use super::{DrawIds, SceneStyles, ViewOptions, axes, style};
+use edgewise_core::schema::{ElementKind, ElementRef};
 use egui::{Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, Vec2, vec2};
 
 /// Most labels drawn in one frame besides the highlighted ones.
@@ -48,7 +49,7 @@ struct LaidOut {
 
 /// A label ready to place: where its box attaches on screen and how.
 struct Placed {
-    pick: Pick,
+    pick: ElementRef,
     /// Bottom-center of the box for vertices and winged edges (drawn above
     /// the element), center for faces and half-edges.
     anchor: Pos2,
@@ -76,18 +77,18 @@ impl Overlay<'_> {
     }
 
     /// Where `pick`'s label attaches on screen, or `None` off screen.
-    fn place(&self, pick: Pick) -> Option<Placed> {
+    fn place(&self, pick: ElementRef) -> Option<Placed> {
         let world = self.scene.anchor(pick)?;
         let (pos, depth) = self.transforms.project(world)?;
         if !self.viewport().expand(20.0).contains(pos) {
             return None;
         }
-        let (anchor, above) = match pick {
-            Pick::Vertex(v) => {
+        let (anchor, above) = match pick.kind {
+            ElementKind::Vertex => {
                 let highlighted = self
                     .styles
                     .vertices
-                    .get(v as usize)
+                    .get(pick.id as usize)
                     .is_some_and(|s| s.colour.is_some());
                 let emphasis = if highlighted {
                     Sizes::EMPHASIS_VERTEX
@@ -97,8 +98,8 @@ impl Overlay<'_> {
                 let radius = (self.vertex_radius_points(depth) * emphasis).max(0.9);
                 (pos - vec2(0.0, radius + 2.0), true)
             }
-            Pick::Edge(_) if !self.scene.geometry.half_edges => (pos - vec2(0.0, 4.0), true),
-            Pick::Edge(_) | Pick::Face(_) => (pos, false),
+            ElementKind::Edge if !self.scene.geometry.half_edges => (pos - vec2(0.0, 4.0), true),
+            ElementKind::Edge | ElementKind::Face => (pos, false),
         };
         Some(Placed {
             pick,
@@ -108,20 +109,18 @@ impl Overlay<'_> {
         })
     }
 
-    fn element_style(&self, pick: Pick) -> Option<&super::ElementStyle> {
-        match pick {
-            Pick::Vertex(i) => self.styles.vertices.get(i as usize),
-            Pick::Edge(i) => self.styles.edges.get(i as usize),
-            Pick::Face(i) => self.styles.faces.get(i as usize),
+    fn element_style(&self, pick: ElementRef) -> Option<&super::ElementStyle> {
+        match pick.kind {
+            ElementKind::Vertex => self.styles.vertices.get(pick.id as usize),
+            ElementKind::Edge => self.styles.edges.get(pick.id as usize),
+            ElementKind::Face => self.styles.faces.get(pick.id as usize),
         }
     }
 
-    fn text(&self, pick: Pick) -> String {
+    fn text(&self, pick: ElementRef) -> String {
         match self.element_style(pick).and_then(|s| s.label.clone()) {
             Some(label) => label,
-            None => match pick {
-                Pick::Vertex(i) | Pick::Edge(i) | Pick::Face(i) => i.to_string(),
-            },
+            None => pick.id.to_string(),
         }
     }
 
@@ -164,10 +163,10 @@ impl Overlay<'_> {
     /// Paints a laid-out label, with a leader line back to its element if it
     /// was moved.
     fn paint_label(&self, label: &LaidOut) {
-        let corner = match label.placed.pick {
-            Pick::Vertex(_) => label.rect.height() * 0.5,
-            Pick::Edge(_) => 2.0,
-            Pick::Face(_) => 0.0,
+        let corner = match label.placed.pick.kind {
+            ElementKind::Vertex => label.rect.height() * 0.5,
+            ElementKind::Edge => 2.0,
+            ElementKind::Face => 0.0,
         };
         let stroke = match label.border {
             Some(colour) => Stroke::new(1.5, colour),
@@ -196,7 +195,7 @@ impl Overlay<'_> {
 
     /// Paints the id/label boxes. `highlighted` lists the elements with a
     /// colour or a label (cached by the view).
-    pub fn paint_labels(&self, highlighted: &[Pick], hovered: Option<Pick>) {
+    pub fn paint_labels(&self, highlighted: &[ElementRef], hovered: Option<ElementRef>) {
         if self.options.draw_ids == DrawIds::Never {
             return;
         }
@@ -211,8 +210,9 @@ impl Overlay<'_> {
         let mut occupied = Occupancy::new(self.font().size);
         // Highlighted vertices stay uncovered: labels move off their spheres.
         for placed in &important {
-            if let Pick::Vertex(v) = placed.pick
-                && let Some((pos, depth)) = self.transforms.project(self.scene.position(v))
+            if placed.pick.kind == ElementKind::Vertex
+                && let Some((pos, depth)) =
+                    self.transforms.project(self.scene.position(placed.pick.id))
             {
                 let radius =
                     (self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX).max(4.0) + 1.0;
@@ -263,9 +263,7 @@ impl Overlay<'_> {
     /// A box size estimate without laying text out (digits are about 0.6 em).
     fn estimate_rect(&self, placed: &Placed) -> Rect {
         let size = self.font().size;
-        let characters = match placed.pick {
-            Pick::Vertex(i) | Pick::Edge(i) | Pick::Face(i) => i.checked_ilog10().unwrap_or(0) + 1,
-        };
+        let characters = placed.pick.id.checked_ilog10().unwrap_or(0) + 1;
         let box_size = vec2(characters as f32 * size * 0.6 + 6.0, size * 1.3 + 2.0);
         if placed.above {
             Rect::from_min_size(placed.anchor - vec2(box_size.x * 0.5, box_size.y), box_size)
@@ -284,7 +282,7 @@ impl Overlay<'_> {
         let eye = self.transforms.eye;
         let keep = |min, max| self.transforms.may_see_box(min, max);
         let mut out = Vec::new();
-        let mut collect = |bvh: &super::bvh::Bvh, make: &dyn Fn(u32) -> Option<Pick>| {
+        let mut collect = |bvh: &super::bvh::Bvh, make: &dyn Fn(u32) -> Option<ElementRef>| {
             let mut found = 0;
             bvh.visit_nearest(eye, keep, |item| {
                 if let Some(pick) = make(item)
@@ -298,34 +296,36 @@ impl Overlay<'_> {
             });
         };
         collect(&self.accel.vertices, &|v| {
-            is_plain(self.styles.vertices.get(v as usize)).then_some(Pick::Vertex(v))
+            is_plain(self.styles.vertices.get(v as usize))
+                .then_some(ElementRef::new(ElementKind::Vertex, v))
         });
         collect(&self.accel.edges, &|e| {
-            is_plain(self.styles.edges.get(e as usize)).then_some(Pick::Edge(e))
+            is_plain(self.styles.edges.get(e as usize))
+                .then_some(ElementRef::new(ElementKind::Edge, e))
         });
         collect(&self.accel.faces, &|t| {
             // A face is found through its first triangle only.
             let face = *self.scene.triangle_faces.get(t as usize)?;
             let first = *self.scene.face_triangle_start.get(face as usize)?;
             (first == t && is_plain(self.styles.faces.get(face as usize)))
-                .then_some(Pick::Face(face))
+                .then_some(ElementRef::new(ElementKind::Face, face))
         });
         out
     }
 
     /// Outlines the hovered element.
-    pub fn paint_hover(&self, pick: Pick) {
+    pub fn paint_hover(&self, pick: ElementRef) {
         let colour = self.palette.hover;
-        match pick {
-            Pick::Vertex(v) => {
-                if let Some((pos, depth)) = self.transforms.project(self.scene.position(v)) {
+        match pick.kind {
+            ElementKind::Vertex => {
+                if let Some((pos, depth)) = self.transforms.project(self.scene.position(pick.id)) {
                     let radius = self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX + 3.0;
                     self.painter
                         .circle_stroke(pos, radius.max(5.0), Stroke::new(2.0, colour));
                 }
             }
-            Pick::Edge(e) => {
-                if let Some((a, b)) = self.scene.drawn_arrow(e as usize, &self.sizes)
+            ElementKind::Edge => {
+                if let Some((a, b)) = self.scene.drawn_arrow(pick.id as usize, &self.sizes)
                     && let (Some((pa, _)), Some((pb, _))) =
                         (self.transforms.project(a), self.transforms.project(b))
                 {
@@ -333,8 +333,8 @@ impl Overlay<'_> {
                         .line_segment([pa, pb], Stroke::new(5.0, colour.gamma_multiply(0.45)));
                 }
             }
-            Pick::Face(f) => {
-                let Some(face) = self.scene.geometry.faces.get(f as usize) else {
+            ElementKind::Face => {
+                let Some(face) = self.scene.geometry.faces.get(pick.id as usize) else {
                     return;
                 };
                 if face.len() > 256 {
@@ -364,7 +364,7 @@ impl Overlay<'_> {
     /// Comparison pointers: an arrow towards each target; a second pointer
     /// at the same element comes from the other side.
     pub fn paint_pointers(&self) {
-        let mut seen: Vec<Pick> = Vec::new();
+        let mut seen: Vec<ElementRef> = Vec::new();
         for pointer in &self.styles.pointers {
             let nth = seen.iter().filter(|&&p| p == pointer.target).count();
             seen.push(pointer.target);
@@ -377,9 +377,11 @@ impl Overlay<'_> {
             if !self.viewport().contains(pos) {
                 continue;
             }
-            let gap = match pointer.target {
-                Pick::Vertex(_) => self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX + 3.0,
-                Pick::Edge(_) | Pick::Face(_) => 4.0,
+            let gap = match pointer.target.kind {
+                ElementKind::Vertex => {
+                    self.vertex_radius_points(depth) * Sizes::EMPHASIS_VERTEX + 3.0
+                }
+                ElementKind::Edge | ElementKind::Face => 4.0,
             };
             // From the lower left, then the lower right, then around.
             let angle = std::f32::consts::FRAC_PI_4 * (3.0 - 2.0 * nth as f32);

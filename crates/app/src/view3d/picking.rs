@@ -9,10 +9,11 @@
 
 use glam::Vec3;
 
+use super::PickFilter;
 use super::bvh::{Bvh, ray_box};
 use super::camera::{Ray, ViewTransforms};
 use super::scene::{Scene, Sizes};
-use super::{Pick, PickFilter, PickKind};
+use edgewise_core::schema::{ElementKind, ElementRef};
 
 /// How close (in points) the cursor must come to a vertex or an edge.
 pub const VERTEX_TOLERANCE: f32 = 7.0;
@@ -97,17 +98,17 @@ pub struct PickQuery<'a> {
 
 impl PickQuery<'_> {
     /// The element under a point on screen, if any.
-    pub fn pick(&self, screen: egui::Pos2) -> Option<Pick> {
+    pub fn pick(&self, screen: egui::Pos2) -> Option<ElementRef> {
         let ray = self.transforms.ray(screen);
         if !ray.direction.is_finite() {
             return None;
         }
-        let allowed = |kind: PickKind| match self.filter {
+        let allowed = |kind: ElementKind| match self.filter {
             PickFilter::All => true,
             PickFilter::Only(only) => only == kind,
         };
         // Solid faces hide what is behind them, whichever kind is pickable.
-        let face_hit = if allowed(PickKind::Face) || self.solid_faces {
+        let face_hit = if allowed(ElementKind::Face) || self.solid_faces {
             self.nearest_face(&ray)
         } else {
             None
@@ -119,18 +120,18 @@ impl PickQuery<'_> {
         } else {
             f32::INFINITY
         };
-        if allowed(PickKind::Vertex)
+        if allowed(ElementKind::Vertex)
             && let Some(v) = self.nearest_vertex(&ray, occluder)
         {
-            return Some(Pick::Vertex(v.index));
+            return Some(ElementRef::new(ElementKind::Vertex, v.index));
         }
-        if allowed(PickKind::Edge)
+        if allowed(ElementKind::Edge)
             && let Some(e) = self.nearest_edge(&ray, occluder)
         {
-            return Some(Pick::Edge(e.index));
+            return Some(ElementRef::new(ElementKind::Edge, e.index));
         }
-        if allowed(PickKind::Face) {
-            return face_hit.map(|(f, _)| Pick::Face(f));
+        if allowed(ElementKind::Face) {
+            return face_hit.map(|(f, _)| ElementRef::new(ElementKind::Face, f));
         }
         None
     }
@@ -377,7 +378,7 @@ mod tests {
         ViewTransforms::new(camera, viewport, Vec3::new(0.5, 0.5, 0.0), 1.0)
     }
 
-    fn pick_at(scene: &Scene, world: Vec3, filter: PickFilter) -> Option<Pick> {
+    fn pick_at(scene: &Scene, world: Vec3, filter: PickFilter) -> Option<ElementRef> {
         let transforms = front_view();
         let accel = PickAccel::new(scene);
         let query = PickQuery {
@@ -397,23 +398,23 @@ mod tests {
         let scene = square(false);
         assert_eq!(
             pick_at(&scene, Vec3::new(1.0, 1.0, 0.0), PickFilter::All),
-            Some(Pick::Vertex(2))
+            Some(ElementRef::new(ElementKind::Vertex, 2))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(0.5, 0.0, 0.0), PickFilter::All),
-            Some(Pick::Edge(0))
+            Some(ElementRef::new(ElementKind::Edge, 0))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(0.0, 0.5, 0.0), PickFilter::All),
-            Some(Pick::Edge(4))
+            Some(ElementRef::new(ElementKind::Edge, 4))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(0.8, 0.2, 0.0), PickFilter::All),
-            Some(Pick::Face(0))
+            Some(ElementRef::new(ElementKind::Face, 0))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(0.2, 0.8, 0.0), PickFilter::All),
-            Some(Pick::Face(1))
+            Some(ElementRef::new(ElementKind::Face, 1))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(2.0, 2.0, 0.0), PickFilter::All),
@@ -429,15 +430,15 @@ mod tests {
             pick_at(
                 &scene,
                 corner + Vec3::new(-0.05, -0.1, 0.0),
-                PickFilter::Only(PickKind::Face)
+                PickFilter::Only(ElementKind::Face)
             ),
-            Some(Pick::Face(0))
+            Some(ElementRef::new(ElementKind::Face, 0))
         );
         assert_eq!(
             pick_at(
                 &scene,
                 Vec3::new(0.5, 0.0, 0.0),
-                PickFilter::Only(PickKind::Vertex)
+                PickFilter::Only(ElementKind::Vertex)
             ),
             None
         );
@@ -448,22 +449,28 @@ mod tests {
         let scene = square(true);
         // Half-edge 0 (0→1) is inset into face 0 (above the bottom edge); its
         // boundary pair 6 sits below, outside the square.
-        let inside = scene.anchor(Pick::Edge(0)).unwrap();
-        let outside = scene.anchor(Pick::Edge(6)).unwrap();
+        let inside = scene.anchor(ElementRef::new(ElementKind::Edge, 0)).unwrap();
+        let outside = scene.anchor(ElementRef::new(ElementKind::Edge, 6)).unwrap();
         assert!(inside.y > 0.0 && outside.y < 0.0);
         assert_eq!(
             pick_at(&scene, inside, PickFilter::All),
-            Some(Pick::Edge(0))
+            Some(ElementRef::new(ElementKind::Edge, 0))
         );
         assert_eq!(
             pick_at(&scene, outside, PickFilter::All),
-            Some(Pick::Edge(6))
+            Some(ElementRef::new(ElementKind::Edge, 6))
         );
         // The diagonal's two halves go to opposite faces.
-        let d0 = scene.anchor(Pick::Edge(2)).unwrap();
-        let d1 = scene.anchor(Pick::Edge(3)).unwrap();
-        assert_eq!(pick_at(&scene, d0, PickFilter::All), Some(Pick::Edge(2)));
-        assert_eq!(pick_at(&scene, d1, PickFilter::All), Some(Pick::Edge(3)));
+        let d0 = scene.anchor(ElementRef::new(ElementKind::Edge, 2)).unwrap();
+        let d1 = scene.anchor(ElementRef::new(ElementKind::Edge, 3)).unwrap();
+        assert_eq!(
+            pick_at(&scene, d0, PickFilter::All),
+            Some(ElementRef::new(ElementKind::Edge, 2))
+        );
+        assert_eq!(
+            pick_at(&scene, d1, PickFilter::All),
+            Some(ElementRef::new(ElementKind::Edge, 3))
+        );
     }
 
     #[test]
@@ -482,15 +489,15 @@ mod tests {
             faces: vec![vec![0, 1, 2, 3, 4, 5]],
             half_edges: false,
         });
-        let face = PickFilter::Only(PickKind::Face);
+        let face = PickFilter::Only(ElementKind::Face);
         assert_eq!(pick_at(&scene, Vec3::new(0.8, 0.8, 0.0), face), None);
         assert_eq!(
             pick_at(&scene, Vec3::new(0.25, 0.8, 0.0), face),
-            Some(Pick::Face(0))
+            Some(ElementRef::new(ElementKind::Face, 0))
         );
         assert_eq!(
             pick_at(&scene, Vec3::new(0.8, 0.25, 0.0), face),
-            Some(Pick::Face(0))
+            Some(ElementRef::new(ElementKind::Face, 0))
         );
     }
 

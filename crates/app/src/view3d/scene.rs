@@ -6,6 +6,7 @@
 use glam::Vec3;
 
 use super::MeshGeometry;
+use edgewise_core::schema::{ElementKind, ElementRef};
 
 /// How far a half-edge arrow is pulled from its edge towards its face's
 /// centroid, as a fraction of each end's distance to that centroid.
@@ -237,23 +238,23 @@ impl Scene {
     }
 
     /// Where an element's label and pointer attach, in world space.
-    pub fn anchor(&self, pick: super::Pick) -> Option<Vec3> {
-        match pick {
-            super::Pick::Vertex(v) => {
-                self.geometry.positions.get(v as usize)?;
-                Some(self.position(v))
+    pub fn anchor(&self, pick: ElementRef) -> Option<Vec3> {
+        match pick.kind {
+            ElementKind::Vertex => {
+                self.geometry.positions.get(pick.id as usize)?;
+                Some(self.position(pick.id))
             }
-            super::Pick::Edge(e) => {
+            ElementKind::Edge => {
                 let (a, b) = (
-                    *self.arrow_starts.get(e as usize)?,
-                    *self.arrow_ends.get(e as usize)?,
+                    *self.arrow_starts.get(pick.id as usize)?,
+                    *self.arrow_ends.get(pick.id as usize)?,
                 );
                 // Half-edge labels sit towards the end vertex so both labels of
                 // a pair show.
                 let t = if self.geometry.half_edges { 0.64 } else { 0.5 };
                 Some(a.lerp(b, t))
             }
-            super::Pick::Face(f) => self.face_centroids.get(f as usize).copied(),
+            ElementKind::Face => self.face_centroids.get(pick.id as usize).copied(),
         }
     }
 

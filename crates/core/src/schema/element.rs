@@ -7,7 +7,7 @@ use crate::mesh::{EdgeId, FaceId, HalfEdgeId, VertexId};
 
 /// The three kinds of mesh element, one table each.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum ElementKind {
     Vertex,
@@ -60,7 +60,7 @@ impl ElementKind {
 /// One row of one table: its kind and its number in that table. In a
 /// half-edge structure an edge row is a half-edge.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ElementRef {
     pub kind: ElementKind,
     pub id: u32,
