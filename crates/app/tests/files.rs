@@ -169,12 +169,7 @@ fn every_save_format_loads_back_with_the_same_counts() {
 #[test]
 fn a_broken_edit_is_marked_at_its_line_and_the_mesh_stays() {
     let mut harness = harness();
-    harness.get_by_label("OBJ editor").click();
-    harness.run();
-    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
-    editor.focus();
-    editor.type_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    harness.run_steps(60);
+    support::type_in_obj_editor(&mut harness, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     assert_eq!(harness.state().state().counts.faces, 1);
     let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
     editor.type_text("f 1 2 7\n");

@@ -137,14 +137,10 @@ fn obj_editor_with_an_error(dark: bool, name: &str) {
         });
         harness.run();
     }
-    harness.get_by_label("OBJ editor").click();
-    harness.run();
-    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
-    editor.focus();
-    editor.type_text(
+    support::type_in_obj_editor(
+        &mut harness,
         "# a square, then a broken triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
     );
-    harness.run_steps(60);
     let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
     editor.type_text("f 1 2 17\n");
     harness.run_steps(60);

@@ -136,12 +136,7 @@ fn a_broken_file_keeps_the_previous_mesh() {
 #[test]
 fn the_obj_editor_rebuilds_as_you_type_and_keeps_the_last_good_mesh() {
     let mut harness = harness();
-    harness.get_by_label("OBJ editor").click();
-    harness.run();
-    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
-    editor.focus();
-    editor.type_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    harness.run_steps(60);
+    support::type_in_obj_editor(&mut harness, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     let state = harness.state().state();
     assert_eq!(state.mesh.as_deref(), Some("editor.obj"));
     assert_eq!(state.counts.faces, 1);

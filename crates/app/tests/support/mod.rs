@@ -16,7 +16,7 @@ use edgewise_core::{
     formats,
     mesh::{Mesh, Structure},
 };
-use egui_kittest::Harness;
+use egui_kittest::{Harness, kittest::Queryable as _};
 
 /// The app headless (no 3D rendering), in a window `width` by `height`.
 pub fn harness_sized(width: f32, height: f32) -> Harness<'static, EdgewiseApp> {
@@ -70,6 +70,17 @@ impl egui::DroppedFile for DroppedFile {
     fn bytes(&self) -> Result<Vec<u8>, String> {
         Ok(self.bytes.clone())
     }
+}
+
+/// Opens the OBJ editor and types `text` into it, then lets the edit
+/// settle (the editor rebuilds the mesh after a pause in typing).
+pub fn type_in_obj_editor(harness: &mut Harness<'static, EdgewiseApp>, text: &str) {
+    harness.get_by_label("OBJ editor").click();
+    harness.run();
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.focus();
+    editor.type_text(text);
+    harness.run_steps(60);
 }
 
 /// Drops a file called `name` on the window; the next frame receives it.
