@@ -9,14 +9,16 @@
 //! - [`ElementKind`] and [`ElementRef`]: a vertex, edge or face row. In a
 //!   half-edge structure an edge row is a half-edge.
 //! - [`Column`]: one table column, its names, whether the structure stores or
-//!   derives it, and [`Records::reference`] to read it from a mesh.
+//!   derives it, [`Records::reference`] to read it from a mesh and
+//!   [`RecordsMut::set_reference`] to write it, one pointer at a time.
 
 mod column;
 mod element;
 mod structure;
 
 pub use column::{
-    Column, LookupError, NameError, Palette, Record, Records, Rows, Storage, TableColumn,
+    Column, EditHooks, LookupError, NameError, Palette, Record, Records, RecordsMut, Rows, RowsMut,
+    Storage, TableColumn, WriteError,
 };
 pub use element::{ElementKind, ElementRef};
 pub use structure::Structure;

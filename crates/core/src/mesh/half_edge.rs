@@ -217,6 +217,12 @@ impl HalfEdgeMesh {
 
     /// The predecessor table, built on first use: the first half-edge (in
     /// number order) naming each half-edge as its successor.
+    /// Drops the predecessor table after a successor changed; the next
+    /// question rebuilds it.
+    pub(crate) fn forget_predecessors(&mut self) {
+        self.predecessors = OnceLock::new();
+    }
+
     fn predecessors(&self) -> &[u32] {
         self.predecessors.get_or_init(|| {
             let mut predecessors = vec![NONE; self.half_edges.len()];

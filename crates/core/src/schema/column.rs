@@ -639,10 +639,24 @@ impl<T: Rows> Records for T {
     }
 }
 
-/// Implements [`Rows`] for a structure from its row types, the accessor of
+/// Implements [`Rows`] and [`RowsMut`] for a structure from its row types,
 /// its edge table, and any derived columns.
 macro_rules! rows {
     ($mesh:ty: $structure:expr, $vertex:ty, $face:ty, $edge:ty, $edges:ident $(, $derived:item)?) => {
+        impl RowsMut for $mesh {
+            fn vertex_rows_mut(&mut self) -> &mut [$vertex] {
+                &mut self.vertices
+            }
+
+            fn face_rows_mut(&mut self) -> &mut [$face] {
+                &mut self.faces
+            }
+
+            fn edge_rows_mut(&mut self) -> &mut [$edge] {
+                &mut self.$edges
+            }
+        }
+
         impl Rows for $mesh {
             type Vertex = $vertex;
             type Face = $face;
@@ -689,6 +703,145 @@ rows!(
         }
     }
 );
+
+/// Why a write into a record was refused.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum WriteError {
+    NoSuchElement(ElementRef),
+    /// The structure does not store this column in this row: it derives it,
+    /// or another kind of row holds it.
+    NotStored {
+        element: ElementRef,
+        column: Column,
+    },
+    /// The column refers to another kind of element.
+    WrongKind {
+        column: Column,
+        found: ElementRef,
+    },
+    /// The column must refer to something.
+    Empty {
+        element: ElementRef,
+        column: Column,
+    },
+}
+
+impl fmt::Display for WriteError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::NoSuchElement(element) => write!(f, "{element} does not exist in this mesh"),
+            Self::NotStored { element, column } => {
+                write!(f, "{element} does not store a {}", column.key())
+            }
+            Self::WrongKind { column, found } => match column.target() {
+                Some(kind) => write!(
+                    f,
+                    "the {} column holds {}, not {found}",
+                    column.key(),
+                    kind.plural()
+                ),
+                None => write!(f, "the {} column holds no reference", column.key()),
+            },
+            Self::Empty { element, column } => {
+                write!(f, "the {} of {element} cannot be empty", column.key())
+            }
+        }
+    }
+}
+
+impl std::error::Error for WriteError {}
+
+/// The tables of [`Rows`], writable.
+pub trait RowsMut: Rows {
+    fn vertex_rows_mut(&mut self) -> &mut [Self::Vertex];
+    fn face_rows_mut(&mut self) -> &mut [Self::Face];
+    fn edge_rows_mut(&mut self) -> &mut [Self::Edge];
+}
+
+/// A mesh's tables, written column by column: what an edit does one
+/// pointer at a time. A write may leave the tables inconsistent (an edit
+/// passes through such states); `validate` says where.
+pub trait RecordsMut: Records {
+    /// Stores `target` (or nothing) in `column` of `element`'s row.
+    fn set_reference(
+        &mut self,
+        element: ElementRef,
+        column: Column,
+        target: Option<ElementRef>,
+    ) -> Result<(), WriteError>;
+}
+
+/// Checks a write against the column's kind and nullability, then stores it.
+fn write<R: Record>(
+    rows: &mut [R],
+    element: ElementRef,
+    column: Column,
+    target: Option<ElementRef>,
+) -> Result<(), WriteError> {
+    let row = rows
+        .get_mut(element.id as usize)
+        .ok_or(WriteError::NoSuchElement(element))?;
+    if row.get(column).is_none() {
+        return Err(WriteError::NotStored { element, column });
+    }
+    match target {
+        Some(found) if Some(found.kind) != column.target() => {
+            Err(WriteError::WrongKind { column, found })
+        }
+        None if !column.nullable_in(element.kind) => Err(WriteError::Empty { element, column }),
+        _ => {
+            row.set(column, target.map(|t| t.id));
+            Ok(())
+        }
+    }
+}
+
+impl<T: RowsMut + EditHooks> RecordsMut for T {
+    fn set_reference(
+        &mut self,
+        element: ElementRef,
+        column: Column,
+        target: Option<ElementRef>,
+    ) -> Result<(), WriteError> {
+        match element.kind {
+            ElementKind::Vertex => write(self.vertex_rows_mut(), element, column, target),
+            ElementKind::Face => write(self.face_rows_mut(), element, column, target),
+            ElementKind::Edge => write(self.edge_rows_mut(), element, column, target),
+        }?;
+        self.written(column);
+        Ok(())
+    }
+}
+
+/// What a structure keeps derived from its records, dropped after a write.
+pub trait EditHooks {
+    /// `column` of some row was written.
+    fn written(&mut self, _column: Column) {}
+}
+
+impl EditHooks for WingedEdgeMesh {}
+
+impl EditHooks for HalfEdgeMesh {
+    fn written(&mut self, column: Column) {
+        if column == Column::SuccessorEdge {
+            self.forget_predecessors();
+        }
+    }
+}
+
+impl RecordsMut for Mesh {
+    fn set_reference(
+        &mut self,
+        element: ElementRef,
+        column: Column,
+        target: Option<ElementRef>,
+    ) -> Result<(), WriteError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.set_reference(element, column, target),
+            Mesh::Half(mesh) => mesh.set_reference(element, column, target),
+        }
+    }
+}
 
 /// Either structure, as loaded.
 impl Records for Mesh {
@@ -760,6 +913,57 @@ mod tests {
         assert_eq!(column.language_name(), Some("leftPredecessor"));
         assert_eq!(Column::Face.language_name(), Some("adjacentFace"));
         assert_eq!(Column::Position.language_name(), None);
+    }
+
+    #[test]
+    fn a_write_is_read_back_and_a_bad_one_is_refused_with_the_reason() {
+        use crate::mesh::{Polygons, generate};
+        let polygons = Polygons::from_triangles(
+            vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE],
+            &[[0, 1, 2], [2, 1, 3]],
+        );
+        let (mut winged, _) = WingedEdgeMesh::build(&polygons).expect("two triangles");
+        let edge = ElementRef::new(ElementKind::Edge, 0);
+        let other = Some(ElementRef::new(ElementKind::Edge, 3));
+        winged
+            .set_reference(edge, Column::RightSuccessor, other)
+            .expect("a stored wing");
+        assert_eq!(winged.reference(edge, Column::RightSuccessor), Ok(other));
+        assert_eq!(winged.set_reference(edge, Column::LeftFace, None), Ok(()));
+        let vertex = Some(ElementRef::new(ElementKind::Vertex, 1));
+        let refused = winged.set_reference(edge, Column::LeftSuccessor, vertex);
+        assert_eq!(
+            refused.map_err(|e| e.to_string()),
+            Err("the left successor column holds edges, not vertex 1".to_owned())
+        );
+        let refused = winged.set_reference(edge, Column::StartVertex, None);
+        assert_eq!(
+            refused.map_err(|e| e.to_string()),
+            Err("the start vertex of edge 0 cannot be empty".to_owned())
+        );
+
+        let (mut half, _) = HalfEdgeMesh::build(&generate::grid(2, 1)).expect("a strip");
+        let h = ElementRef::new(ElementKind::Edge, 0);
+        assert_eq!(
+            half.set_reference(h, Column::StartVertex, vertex),
+            Err(WriteError::NotStored {
+                element: h,
+                column: Column::StartVertex
+            })
+        );
+        // The predecessor, derived from the successors, follows the writes:
+        // h's old predecessor now loops on itself, and half-edge 5 leads to h.
+        let old = half
+            .reference(h, Column::PredecessorEdge)
+            .expect("exists")
+            .expect("h has a predecessor");
+        let new = ElementRef::new(ElementKind::Edge, 5);
+        assert_ne!(old, new);
+        half.set_reference(old, Column::SuccessorEdge, Some(old))
+            .expect("a stored link");
+        half.set_reference(new, Column::SuccessorEdge, Some(h))
+            .expect("a stored link");
+        assert_eq!(half.reference(h, Column::PredecessorEdge), Ok(Some(new)));
     }
 
     #[test]
