@@ -5,6 +5,7 @@ use edgewise_core::{mesh::Structure, schema::ElementRef};
 
 use crate::{
     EdgewiseApp,
+    algorithm::AlgorithmRun,
     command::{Argument, Command, CommandError, Reply},
 };
 
@@ -28,7 +29,9 @@ impl EdgewiseApp {
     }
 
     fn dispatch(&mut self, command: Command) -> Result<Reply, CommandError> {
-        let done = |result: Result<(), CommandError>| result.map(|()| Reply::Done);
+        fn done<E: Into<CommandError>>(result: Result<(), E>) -> Result<Reply, CommandError> {
+            result.map(|()| Reply::Done).map_err(Into::into)
+        }
         match command {
             Command::LoadMesh {
                 bytes,
@@ -44,26 +47,15 @@ impl EdgewiseApp {
                 self.add_algorithms(&source, &file).map(Reply::Algorithms)
             }
             Command::RunAlgorithm { name, args } => done(self.start_algorithm(&name, &args)),
-            Command::Pick(element) => {
-                let tab = &mut self.tabs[self.active_tab];
-                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
-                let Some(mesh) = mesh else {
-                    return Err("no mesh is open".into());
-                };
-                done(tab.run.pick(element, mesh).map_err(CommandError::from))
-            }
-            Command::Start => {
-                let tab = &mut self.tabs[self.active_tab];
-                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
-                let Some(mesh) = mesh else {
-                    return Err("no mesh is open".into());
-                };
-                done(tab.run.start(mesh).map_err(CommandError::from))
-            }
-            Command::Step(n) => done(self.tab_mut().run.step(n).map_err(CommandError::from)),
-            Command::Back(n) => done(self.tab_mut().run.back(n).map_err(CommandError::from)),
-            Command::Goto(k) => done(self.tab_mut().run.goto(k).map_err(CommandError::from)),
-            Command::Abort => done(self.tab_mut().run.abort().map_err(CommandError::from)),
+            Command::Pick(element) => done(
+                self.tab_mut()
+                    .with_mesh(|run, mesh| run.pick(element, mesh)),
+            ),
+            Command::Start => done(self.tab_mut().with_mesh(AlgorithmRun::start)),
+            Command::Step(n) => done(self.tab_mut().run.step(n)),
+            Command::Back(n) => done(self.tab_mut().run.back(n)),
+            Command::Goto(k) => done(self.tab_mut().run.goto(k)),
+            Command::Abort => done(self.tab_mut().run.abort()),
             Command::ToggleBreakpoint(line) => {
                 let run = &mut self.tabs[self.active_tab].run;
                 self.algorithms.toggle_breakpoint(run, line);
@@ -71,11 +63,7 @@ impl EdgewiseApp {
             }
             Command::ContinueToBreakpoint => {
                 let run = &mut self.tabs[self.active_tab].run;
-                done(
-                    self.algorithms
-                        .continue_to_breakpoint(run)
-                        .map_err(CommandError::from),
-                )
+                done(self.algorithms.continue_to_breakpoint(run))
             }
             Command::NewTab => Ok(Reply::Tab(self.open_tab())),
             Command::SwitchTab(index) => done(self.activate_tab(index)),

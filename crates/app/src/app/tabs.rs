@@ -65,6 +65,19 @@ impl Tab {
     }
 }
 
+impl Tab {
+    /// Runs `f` on this tab's algorithm run and its mesh, refusing when no
+    /// mesh is open.
+    pub(crate) fn with_mesh(
+        &mut self,
+        f: impl FnOnce(&mut AlgorithmRun, &edgewise_core::mesh::Mesh) -> Result<(), String>,
+    ) -> Result<(), CommandError> {
+        let mesh = self.document.as_ref().map(Document::mesh);
+        let mesh = mesh.ok_or("no mesh is open")?;
+        Ok(f(&mut self.run, mesh)?)
+    }
+}
+
 impl EdgewiseApp {
     /// The tab the app shows and commands act on.
     pub(crate) fn tab(&self) -> &Tab {
