@@ -101,15 +101,9 @@ impl Document {
         if let Some(element) = element
             && !self.mesh.contains(element)
         {
-            let count = match element.kind {
-                ElementKind::Vertex => self.mesh.vertex_count(),
-                ElementKind::Edge => self.mesh.edge_row_count(),
-                ElementKind::Face => self.mesh.face_count(),
-            };
+            let count = self.mesh.count(element.kind);
             return Err(format!(
-                "there is no {} {} (this mesh has {count}, numbered from 0)",
-                element.kind.title().to_lowercase(),
-                element.id
+                "there is no {element} (this mesh has {count}, numbered from 0)"
             ));
         }
         self.selection = element;

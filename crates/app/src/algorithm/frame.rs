@@ -281,10 +281,7 @@ fn describe(
         StepKind::Highlight { element } => format!("Highlight {element}"),
         StepKind::Message { text } => format!("Message: {text}"),
         StepKind::Done => {
-            let output: Vec<String> = marked
-                .iter()
-                .map(|e| format!("{} {}", e.kind.title().to_lowercase(), e.id))
-                .collect();
+            let output: Vec<String> = marked.iter().map(ToString::to_string).collect();
             if output.is_empty() {
                 format!("{} is done; it marked nothing", algorithm.name)
             } else {

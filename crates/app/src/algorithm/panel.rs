@@ -396,11 +396,7 @@ fn status_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
             ui.set_width(ui.available_width());
             ui.label(RichText::new(&frame.message).color(text_colour));
             if frame.done || frame.error.is_some() {
-                let marked: Vec<String> = frame
-                    .marked
-                    .iter()
-                    .map(|e| format!("{} {}", e.kind.title().to_lowercase(), e.id))
-                    .collect();
+                let marked: Vec<String> = frame.marked.iter().map(ToString::to_string).collect();
                 if !marked.is_empty() {
                     ui.label(format!("Marked: {}", marked.join(", ")));
                 }

@@ -62,7 +62,7 @@ impl PendingRun {
                 self.algorithm.name,
                 param.ty,
                 param.name,
-                element.kind.title().to_lowercase()
+                element.kind.prose()
             ));
         }
         let name = param.name.clone();

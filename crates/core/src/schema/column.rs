@@ -203,19 +203,14 @@ impl Column {
         }
     }
 
-    /// Whether the column can be null in a valid mesh: a missing face at a
-    /// boundary, or the incident edge of an isolated vertex.
-    pub fn may_be_null(self) -> bool {
-        matches!(
-            self,
-            Self::LeftFace | Self::RightFace | Self::Face | Self::IncidentEdge
-        )
-    }
-
     /// Whether a row of `kind` may hold no reference in this column (`-` in
     /// table files): a boundary face, or an isolated vertex's incident edge.
     pub fn nullable_in(self, kind: ElementKind) -> bool {
-        self.may_be_null() && !(self == Self::IncidentEdge && kind == ElementKind::Face)
+        match self {
+            Self::LeftFace | Self::RightFace | Self::Face => true,
+            Self::IncidentEdge => kind == ElementKind::Vertex,
+            _ => false,
+        }
     }
 
     /// A winged edge's face on `side`.
