@@ -14,6 +14,8 @@
 mod builder;
 pub mod circulator;
 pub mod convert;
+pub mod deleted;
+pub mod edit;
 pub mod error;
 pub mod generate;
 pub mod half_edge;
@@ -30,6 +32,8 @@ pub mod winged_edge;
 pub use crate::schema::Structure;
 pub use circulator::{Circulator, Ring};
 pub use convert::{ConvertError, EdgeCorrespondence};
+pub use deleted::Deleted;
+pub use edit::{Change, Edit, EditError, Editor, Renumbering};
 pub use error::{BuildError, BuildWarning, FaceRef};
 pub use half_edge::{HalfEdge, HalfEdgeMesh};
 pub use ids::{EdgeId, FaceId, HalfEdgeId, VertexId};

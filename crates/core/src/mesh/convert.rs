@@ -159,11 +159,7 @@ impl HalfEdgeMesh {
             half_edges_of_edge: pairs,
         };
         Ok((
-            WingedEdgeMesh {
-                vertices,
-                faces,
-                edges,
-            },
+            WingedEdgeMesh::from_raw_parts(vertices, faces, edges),
             correspondence,
         ))
     }

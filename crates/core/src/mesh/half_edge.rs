@@ -7,6 +7,7 @@ use std::sync::OnceLock;
 use glam::Vec3;
 
 use super::builder::{self, Boundary, Layout, NONE, Pairs};
+use super::deleted::Deleted;
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
@@ -59,6 +60,8 @@ pub struct HalfEdgeMesh {
     /// Inverse of the successor links, built on first use; [`NONE`] where no
     /// half-edge has this one as successor (only in broken tables).
     predecessors: OnceLock<Vec<u32>>,
+    /// Rows an edit deleted, kept as gaps until the ids are compacted.
+    pub(crate) deleted: Deleted,
 }
 
 impl PartialEq for HalfEdgeMesh {
@@ -66,6 +69,7 @@ impl PartialEq for HalfEdgeMesh {
         self.vertices == other.vertices
             && self.faces == other.faces
             && self.half_edges == other.half_edges
+            && self.deleted == other.deleted
     }
 }
 
@@ -108,6 +112,7 @@ impl builder::Assembly for HalfEdgeMesh {
             faces: Vec::new(),
             half_edges: Vec::with_capacity(polygons.corner_count()),
             predecessors: OnceLock::new(),
+            deleted: Deleted::default(),
         }
     }
 
@@ -212,6 +217,7 @@ impl HalfEdgeMesh {
             faces,
             half_edges,
             predecessors: OnceLock::new(),
+            deleted: Deleted::default(),
         }
     }
 

@@ -42,6 +42,16 @@ macro_rules! element_id {
             }
 
             /// The id for a table index, or `None` if it does not fit.
+            /// What a new record's required references hold until an edit
+            /// sets them: the reserved number, which no row has.
+            pub const UNSET: Self = Self::new(u32::MAX);
+
+            /// Whether this is [`Self::UNSET`].
+            #[inline]
+            pub const fn is_unset(self) -> bool {
+                self.0.get() == 1
+            }
+
             #[inline]
             pub fn from_index(index: usize) -> Option<Self> {
                 u32::try_from(index).ok().filter(|&i| i != u32::MAX).map(Self::new)
@@ -74,6 +84,9 @@ macro_rules! element_id {
 
         impl fmt::Display for $name {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                if self.is_unset() {
+                    return f.write_str(concat!("no ", $label, " (not set yet)"));
+                }
                 write!(f, concat!($label, " {}"), self.raw())
             }
         }
@@ -130,5 +143,7 @@ mod tests {
         assert!(FaceId::new(2) < FaceId::new(10));
         assert_eq!(FaceId::new(u32::MAX).raw(), u32::MAX - 1);
         assert_eq!(HalfEdgeId::default().raw(), 0);
+        assert!(EdgeId::UNSET.is_unset() && !EdgeId::new(3).is_unset());
+        assert_eq!(EdgeId::UNSET.to_string(), "no edge (not set yet)");
     }
 }

@@ -172,8 +172,8 @@ impl Mesh {
 /// Writes a structure's table accessors inside its `impl`: the rows differ
 /// between the structures (each module's `Vertex` and `Face`, then the
 /// half-edge or edge rows), the way to read them does not. The structure
-/// needs `vertices`, `faces` and `$edges` fields, and its vertex rows a
-/// `position`.
+/// needs `vertices`, `faces`, `$edges` and `deleted` fields, and its vertex
+/// rows a `position`. A deleted row is not there for the accessors.
 macro_rules! tables {
     ($vertex:ty, $face:ty, $edges:ident: $edge:ty, $what:literal, $row:ident($id:ty), $count:ident) => {
         /// Gives the tables back, for editing.
@@ -214,19 +214,30 @@ macro_rules! tables {
         /// A vertex row.
         #[inline]
         pub fn vertex(&self, v: $crate::mesh::VertexId) -> Option<&$vertex> {
-            self.vertices.get(v.index())
+            self.vertices
+                .get(v.index())
+                .filter(|_| !self.deleted.contains(v.into()))
         }
 
         /// A face row.
         #[inline]
         pub fn face(&self, f: $crate::mesh::FaceId) -> Option<&$face> {
-            self.faces.get(f.index())
+            self.faces
+                .get(f.index())
+                .filter(|_| !self.deleted.contains(f.into()))
         }
 
         #[doc = concat!("The ", $what, " row with this id.")]
         #[inline]
         pub fn $row(&self, id: $id) -> Option<&$edge> {
-            self.$edges.get(id.index())
+            self.$edges
+                .get(id.index())
+                .filter(|_| !self.deleted.contains(id.into()))
+        }
+
+        /// Rows an edit deleted and the ids have not been compacted since.
+        pub fn deleted(&self) -> &$crate::mesh::deleted::Deleted {
+            &self.deleted
         }
 
         /// The position of a vertex.

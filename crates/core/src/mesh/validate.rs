@@ -7,10 +7,11 @@
 
 use std::fmt;
 
+use super::deleted::Deleted;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use super::winged_edge::{Side, WingedEdge, WingedEdgeMesh};
-use crate::schema::Column;
+use crate::schema::{Column, ElementRef};
 
 /// The table row an issue is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -70,6 +71,38 @@ fn side_name(side: Side) -> &'static str {
     }
 }
 
+/// Why a reference leads to no row: it was never set, its row was deleted,
+/// or it is past the end of the table.
+fn missing_row<I>(deleted: &Deleted, target: I, count: usize, plural: &str) -> String
+where
+    I: Copy + fmt::Display + Into<ElementRef>,
+{
+    let element: ElementRef = target.into();
+    if element.id == u32::MAX - 1 {
+        "it is not set".to_owned()
+    } else if deleted.contains(element) {
+        format!("{target} was deleted")
+    } else {
+        format!("{target} does not exist (there are {count} {plural})")
+    }
+}
+
+/// Both structures name missing rows the same way.
+macro_rules! missing {
+    ($($mesh:ty),*) => {$(
+        impl $mesh {
+            fn missing<I>(&self, target: I, count: usize, plural: &str) -> String
+            where
+                I: Copy + fmt::Display + Into<ElementRef>,
+            {
+                missing_row(&self.deleted, target, count, plural)
+            }
+        }
+    )*};
+}
+
+missing!(HalfEdgeMesh, WingedEdgeMesh);
+
 struct Issues(Vec<Issue>);
 
 impl Issues {
@@ -108,30 +141,35 @@ impl HalfEdgeMesh {
         let mut incoming = vec![0u32; nv];
         let mut face_size = vec![0u32; nf];
         for (id, h) in (0u32..).map(HalfEdgeId::new).zip(&self.half_edges) {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             let element = Element::HalfEdge(id);
-            match incoming.get_mut(h.end_vertex.index()) {
+            match incoming
+                .get_mut(h.end_vertex.index())
+                .filter(|_| self.vertex(h.end_vertex).is_some())
+            {
                 Some(count) => *count += 1,
                 None => issues.push(
                     element,
                     Column::EndVertex,
-                    format!("{} does not exist (there are {nv} vertices)", h.end_vertex),
+                    self.missing(h.end_vertex, nv, "vertices"),
                 ),
             }
             if let Some(f) = h.face {
-                match face_size.get_mut(f.index()) {
+                match face_size
+                    .get_mut(f.index())
+                    .filter(|_| self.face(f).is_some())
+                {
                     Some(count) => *count += 1,
-                    None => issues.push(
-                        element,
-                        Column::Face,
-                        format!("{f} does not exist (there are {nf} faces)"),
-                    ),
+                    None => issues.push(element, Column::Face, self.missing(f, nf, "faces")),
                 }
             }
             match self.half_edge(h.pair_edge) {
                 None => issues.push(
                     element,
                     Column::PairEdge,
-                    format!("{} does not exist (there are {nh} half-edges)", h.pair_edge),
+                    self.missing(h.pair_edge, nh, "half-edges"),
                 ),
                 Some(_) if h.pair_edge == id => {
                     issues.push(element, Column::PairEdge, "the half-edge is its own pair edge".to_owned());
@@ -171,10 +209,7 @@ impl HalfEdgeMesh {
                 None => issues.push(
                     element,
                     Column::SuccessorEdge,
-                    format!(
-                        "{} does not exist (there are {nh} half-edges)",
-                        h.successor_edge
-                    ),
+                    self.missing(h.successor_edge, nh, "half-edges"),
                 ),
                 Some(successor) => {
                     if successor.face != h.face {
@@ -218,9 +253,12 @@ impl HalfEdgeMesh {
         }
 
         for ((id, face), &size) in (0u32..).map(FaceId::new).zip(&self.faces).zip(&face_size) {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             let start = face.incident_edge;
             let message = match self.half_edge(start) {
-                None => format!("{start} does not exist (there are {nh} half-edges)"),
+                None => self.missing(start, nh, "half-edges"),
                 Some(h) if h.face != Some(id) => {
                     format!(
                         "its incident edge {start} lies in {}, not in this face",
@@ -255,12 +293,15 @@ impl HalfEdgeMesh {
             .zip(&self.vertices)
             .zip(&incoming)
         {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             check_position(&mut issues, id, vertex.position);
             let message = match vertex.incident_edge {
                 None if count == 0 => continue,
                 None => format!("it has no incident edge, but {count} half-edges end here"),
                 Some(start) => match self.half_edge(start) {
-                    None => format!("{start} does not exist (there are {nh} half-edges)"),
+                    None => self.missing(start, nh, "half-edges"),
                     Some(h) if h.end_vertex != id => format!(
                         "its incident edge {start} ends at {}; a vertex's incident edge is a half-edge ending at it",
                         h.end_vertex
@@ -321,18 +362,20 @@ impl WingedEdgeMesh {
         let mut degree = vec![0u32; nv];
         let mut face_size = vec![0u32; nf];
         for (id, edge) in (0u32..).map(EdgeId::new).zip(&self.edges) {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             let element = Element::Edge(id);
             for (v, field) in [
                 (edge.start_vertex, Column::StartVertex),
                 (edge.end_vertex, Column::EndVertex),
             ] {
-                match degree.get_mut(v.index()) {
+                match degree
+                    .get_mut(v.index())
+                    .filter(|_| self.vertex(v).is_some())
+                {
                     Some(count) => *count += 1,
-                    None => issues.push(
-                        element,
-                        field,
-                        format!("{v} does not exist (there are {nv} vertices)"),
-                    ),
+                    None => issues.push(element, field, self.missing(v, nv, "vertices")),
                 }
             }
             if edge.start_vertex == edge.end_vertex {
@@ -364,9 +407,12 @@ impl WingedEdgeMesh {
         }
 
         for ((id, face), &size) in (0u32..).map(FaceId::new).zip(&self.faces).zip(&face_size) {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             let start = face.incident_edge;
             let message = match self.edge(start).map(|edge| edge.side_of(Some(id))) {
-                None => format!("{start} does not exist (there are {ne} edges)"),
+                None => self.missing(start, ne, "edges"),
                 Some(None) => format!("its incident edge {start} does not border this face"),
                 Some(Some(side)) => {
                     let (length, closed) = cycle((start, side), size, |(e, side)| {
@@ -392,12 +438,15 @@ impl WingedEdgeMesh {
         }
 
         for ((id, vertex), &count) in (0u32..).map(VertexId::new).zip(&self.vertices).zip(&degree) {
+            if self.deleted.contains(id.into()) {
+                continue;
+            }
             check_position(&mut issues, id, vertex.position);
             let message = match vertex.incident_edge {
                 None if count == 0 => continue,
                 None => format!("it has no incident edge, but {count} edges end here"),
                 Some(start) => match self.edge(start) {
-                    None => format!("{start} does not exist (there are {ne} edges)"),
+                    None => self.missing(start, ne, "edges"),
                     Some(edge) if edge.other_vertex(id).is_none() => {
                         format!("its incident edge {start} does not start or end here")
                     }
@@ -449,12 +498,15 @@ impl WingedEdgeMesh {
         let face = edge.face(side);
         let name = side_name(side);
         if let Some(f) = face {
-            match face_size.get_mut(f.index()) {
+            match face_size
+                .get_mut(f.index())
+                .filter(|_| self.face(f).is_some())
+            {
                 Some(count) => *count += 1,
                 None => issues.push(
                     element,
                     Column::face_of(side),
-                    format!("{f} does not exist (there are {} faces)", self.faces.len()),
+                    self.missing(f, self.faces.len(), "faces"),
                 ),
             }
         }
@@ -466,11 +518,7 @@ impl WingedEdgeMesh {
         let predecessor = edge.predecessor(side);
         let field = Column::predecessor_of(side);
         match self.edge(predecessor) {
-            None => issues.push(
-                element,
-                field,
-                format!("{predecessor} does not exist (there are {ne} edges)"),
-            ),
+            None => issues.push(element, field, self.missing(predecessor, ne, "edges")),
             Some(wing) => match wing.side_of(face) {
                 None => issues.push(
                     element,
@@ -510,11 +558,7 @@ impl WingedEdgeMesh {
         let successor = edge.successor(side);
         let field = Column::successor_of(side);
         match self.edge(successor) {
-            None => issues.push(
-                element,
-                field,
-                format!("{successor} does not exist (there are {ne} edges)"),
-            ),
+            None => issues.push(element, field, self.missing(successor, ne, "edges")),
             Some(wing) => match wing.side_of(face) {
                 None => issues.push(
                     element,

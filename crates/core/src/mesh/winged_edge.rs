@@ -10,6 +10,7 @@
 use glam::Vec3;
 
 use super::builder::{self, Boundary, Layout, NONE};
+use super::deleted::Deleted;
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
@@ -61,6 +62,8 @@ pub struct WingedEdgeMesh {
     pub(crate) vertices: Vec<Vertex>,
     pub(crate) faces: Vec<Face>,
     pub(crate) edges: Vec<WingedEdge>,
+    /// Rows an edit deleted, kept as gaps until the ids are compacted.
+    pub(crate) deleted: Deleted,
 }
 
 /// The winged-edge build's tables until the edges are numbered: the pair of
@@ -221,11 +224,7 @@ impl builder::Assembly for WingedEdgeAssembly {
                 incident_edge: (e != NONE).then_some(EdgeId::new(e)),
             })
             .collect();
-        WingedEdgeMesh {
-            vertices,
-            faces,
-            edges,
-        }
+        WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
     }
 }
 
@@ -266,6 +265,7 @@ impl WingedEdgeMesh {
             vertices,
             faces,
             edges,
+            deleted: Deleted::default(),
         }
     }
 

@@ -11,7 +11,7 @@ use glam::Vec3;
 
 use super::{ElementKind, ElementRef, Structure};
 use crate::mesh::{
-    EdgeId, FaceId, HalfEdge, HalfEdgeId, HalfEdgeMesh, Mesh, Side, VertexId, WingedEdge,
+    Deleted, EdgeId, FaceId, HalfEdge, HalfEdgeId, HalfEdgeMesh, Mesh, Side, VertexId, WingedEdge,
     WingedEdgeMesh, half_edge, winged_edge,
 };
 
@@ -455,12 +455,13 @@ trait Cell {
 
 macro_rules! id_cells {
     ($($id:ty),*) => {$(
+        /// A required reference reads as empty until it is set.
         impl Cell for $id {
             fn read(&self) -> Option<u32> {
-                Some(self.raw())
+                (!self.is_unset()).then(|| self.raw())
             }
             fn write(value: Option<u32>) -> Self {
-                <$id>::new(value.unwrap_or_default())
+                value.map_or(<$id>::UNSET, <$id>::new)
             }
         }
 
@@ -525,13 +526,19 @@ record!(HalfEdge:
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum LookupError {
     NoSuchElement(ElementRef),
-    NotApplicable { element: ElementRef, column: Column },
+    /// An edit deleted the row.
+    Deleted(ElementRef),
+    NotApplicable {
+        element: ElementRef,
+        column: Column,
+    },
 }
 
 impl fmt::Display for LookupError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NoSuchElement(element) => write!(f, "{element} does not exist in this mesh"),
+            Self::Deleted(element) => write!(f, "{element} was deleted"),
             Self::NotApplicable { element, column } => write!(
                 f,
                 "{element} has no {}",
@@ -564,7 +571,7 @@ pub trait Records {
         column: Column,
     ) -> Result<Option<ElementRef>, LookupError>;
 
-    /// Whether the row exists.
+    /// Whether the row exists (and was not deleted).
     fn contains(&self, element: ElementRef) -> bool {
         (element.id as usize) < self.count(element.kind)
     }
@@ -583,6 +590,8 @@ pub trait Rows {
     /// Edges, or half-edges.
     fn edge_rows(&self) -> &[Self::Edge];
     fn position(&self, vertex: VertexId) -> Option<Vec3>;
+    /// Rows an edit deleted.
+    fn deleted(&self) -> &Deleted;
 
     /// A column the structure computes instead of storing (a half-edge's
     /// start vertex and predecessor), or `None` if it has no such column.
@@ -608,12 +617,19 @@ impl<T: Rows> Records for T {
         Rows::position(self, vertex)
     }
 
+    fn contains(&self, element: ElementRef) -> bool {
+        (element.id as usize) < self.count(element.kind) && !self.deleted().contains(element)
+    }
+
     #[inline]
     fn reference(
         &self,
         element: ElementRef,
         column: Column,
     ) -> Result<Option<ElementRef>, LookupError> {
+        if self.deleted().contains(element) {
+            return Err(LookupError::Deleted(element));
+        }
         let index = element.id as usize;
         let stored = match element.kind {
             ElementKind::Vertex => self.vertex_rows().get(index).map(|row| row.get(column)),
@@ -677,6 +693,10 @@ macro_rules! rows {
                 <$mesh>::position(self, vertex)
             }
 
+            fn deleted(&self) -> &Deleted {
+                &self.deleted
+            }
+
             $($derived)?
         }
     };
@@ -703,6 +723,8 @@ rows!(
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum WriteError {
     NoSuchElement(ElementRef),
+    /// An edit deleted the row.
+    Deleted(ElementRef),
     /// The structure does not store this column in this row: it derives it,
     /// or another kind of row holds it.
     NotStored {
@@ -725,6 +747,7 @@ impl fmt::Display for WriteError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Self::NoSuchElement(element) => write!(f, "{element} does not exist in this mesh"),
+            Self::Deleted(element) => write!(f, "{element} was deleted; its row cannot be written"),
             Self::NotStored { element, column } => {
                 write!(f, "{element} does not store a {}", column.key())
             }
@@ -764,6 +787,11 @@ pub trait RecordsMut: Records {
         column: Column,
         target: Option<ElementRef>,
     ) -> Result<(), WriteError>;
+
+    /// Empties `column` of `element`'s row even where the column needs a
+    /// reference, leaving it unset as in a new row: how a journal takes back
+    /// the first write into a new row.
+    fn unset_reference(&mut self, element: ElementRef, column: Column) -> Result<(), WriteError>;
 }
 
 /// Checks a write against the column's kind and nullability, then stores it.
@@ -772,6 +800,7 @@ fn write<R: Record>(
     element: ElementRef,
     column: Column,
     target: Option<ElementRef>,
+    unset: bool,
 ) -> Result<(), WriteError> {
     let row = rows
         .get_mut(element.id as usize)
@@ -783,7 +812,9 @@ fn write<R: Record>(
         Some(found) if Some(found.kind) != column.target() => {
             Err(WriteError::WrongKind { column, found })
         }
-        None if !column.nullable_in(element.kind) => Err(WriteError::Empty { element, column }),
+        None if !unset && !column.nullable_in(element.kind) => {
+            Err(WriteError::Empty { element, column })
+        }
         _ => {
             row.set(column, target.map(|t| t.id));
             Ok(())
@@ -798,14 +829,31 @@ impl<T: RowsMut + EditHooks> RecordsMut for T {
         column: Column,
         target: Option<ElementRef>,
     ) -> Result<(), WriteError> {
-        match element.kind {
-            ElementKind::Vertex => write(self.vertex_rows_mut(), element, column, target),
-            ElementKind::Face => write(self.face_rows_mut(), element, column, target),
-            ElementKind::Edge => write(self.edge_rows_mut(), element, column, target),
-        }?;
-        self.written(column);
-        Ok(())
+        write_row(self, element, column, target, false)
     }
+
+    fn unset_reference(&mut self, element: ElementRef, column: Column) -> Result<(), WriteError> {
+        write_row(self, element, column, None, true)
+    }
+}
+
+fn write_row<T: RowsMut + EditHooks>(
+    mesh: &mut T,
+    element: ElementRef,
+    column: Column,
+    target: Option<ElementRef>,
+    unset: bool,
+) -> Result<(), WriteError> {
+    if mesh.deleted().contains(element) {
+        return Err(WriteError::Deleted(element));
+    }
+    match element.kind {
+        ElementKind::Vertex => write(mesh.vertex_rows_mut(), element, column, target, unset),
+        ElementKind::Face => write(mesh.face_rows_mut(), element, column, target, unset),
+        ElementKind::Edge => write(mesh.edge_rows_mut(), element, column, target, unset),
+    }?;
+    mesh.written(column);
+    Ok(())
 }
 
 /// What a structure keeps derived from its records, dropped after a write.
@@ -836,6 +884,13 @@ impl RecordsMut for Mesh {
             Mesh::Half(mesh) => mesh.set_reference(element, column, target),
         }
     }
+
+    fn unset_reference(&mut self, element: ElementRef, column: Column) -> Result<(), WriteError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.unset_reference(element, column),
+            Mesh::Half(mesh) => mesh.unset_reference(element, column),
+        }
+    }
 }
 
 /// Either structure, as loaded.
@@ -853,6 +908,13 @@ impl Records for Mesh {
 
     fn position(&self, vertex: VertexId) -> Option<Vec3> {
         Mesh::position(self, vertex)
+    }
+
+    fn contains(&self, element: ElementRef) -> bool {
+        match self {
+            Mesh::Winged(mesh) => mesh.contains(element),
+            Mesh::Half(mesh) => mesh.contains(element),
+        }
     }
 
     #[inline]
