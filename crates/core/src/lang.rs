@@ -1,6 +1,8 @@
 //! The algorithm language of the journal paper's Appendix A, also accepting
-//! the dialect of the half-edge paper's Figure 5, extended with Integer and
-//! Boolean values, `null`, and `message`.
+//! the dialect of the half-edge paper's Figure 5, extended with Integer,
+//! Boolean, Float and Vector values, `null`, `message`, and the papers'
+//! future work of changing the mesh: writes into records, `new`, `delete`
+//! and `refuse`.
 //!
 //! Pipeline: [`lexer`] → [`parser`] (syntax tree in [`ast`]) → [`checker`]
 //! (names and types) → [`compiler`] (linear code, listed by [`disasm`]) →
@@ -18,6 +20,9 @@
 //! decls       := ident-list ":" type { ";" ident-list ":" type } [ ";" ]
 //! statement-list := { statement ";" }     (";" optional before end/else/while)
 //! statement   := ident ":=" expr
+//!              | expr "." lookup ":=" expr             (a write into a record)
+//!              | "delete" expr
+//!              | "refuse" item { "," item }            (stops: a precondition failed)
 //!              | "if" expr "then" statement-list
 //!                    { "else" "if" expr "then" statement-list }
 //!                    [ "else" statement-list ] "end"
@@ -30,16 +35,28 @@
 //!              | ("mark" | "highlight") expr | expr "." ("mark" | "highlight")
 //!              | "message" item { "," item }       item := string | expr
 //! expr        := or-expr;  "or" < "and" < "not" < comparisons
-//!                (= == <> < <= > >=, not chained) < + - < * div mod < unary -
+//!                (= == <> < <= > >=, not chained) < + - < * / div mod < unary -
 //!                < postfix lookups (expr "." lookup) < primary
-//! primary     := ident | integer | "true" | "false" | "null" | "(" expr ")"
+//! primary     := ident | integer | float | "true" | "false" | "null"
+//!              | "new" ("Vertex" | "Edge" | "Face")
+//!              | ident "(" [ expr { "," expr } ] ")"   (vector, float, sqrt)
+//!              | "(" expr ")"
 //! mesh-type   := "WingedEdge" | "HalfEdge"
 //! type        := "Vertex" | "Edge" | "Face" | "Integer" | "Boolean"
+//!              | "Float" | "Vector"
 //! ```
+//! A Float literal has a point with digits after it (`0.5`). `/` divides
+//! numbers as Floats; `div` and `mod` are for Integers. An Integer widens to
+//! a Float where one is expected. Vectors add, subtract, and scale by a
+//! number; `p.x`, `p.y` and `p.z` are their coordinates, and `v.position` a
+//! vertex's (readable and writable). `new Edge` makes a winged edge, or a
+//! pair of half-edges whose `pair`s name each other; `delete` of a half-edge
+//! deletes its pair too. A deleted row keeps its id as a gap. A write may
+//! leave the tables inconsistent for a while; the tools say where.
 //! Keywords, type names, structure names and lookup names ignore case;
 //! variable names do not. `//` starts a comment. Element variables start as
 //! `null`, Integers (32-bit, overflow is a run-time error) as 0, Booleans as
-//! false. `and` and `or` short-circuit. Half-edge lookups accept the aliases
+//! false, Floats as 0.0, Vectors as (0, 0, 0). `and` and `or` short-circuit. Half-edge lookups accept the aliases
 //! `face`, `vertex` (end vertex), `pair`, `twin`, `successor`, `next`,
 //! `predecessor` and `prev`.
 //!
@@ -50,6 +67,7 @@
 //! [`parser::MAX_ERRORS`] errors.
 
 pub mod ast;
+pub mod builtin;
 pub mod checker;
 pub mod compiler;
 pub mod diagnostic;
@@ -69,7 +87,10 @@ pub use disasm::{disassemble, disassemble_all};
 pub use topology::Topology;
 pub use trace::{Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
 pub use types::{Type, Value};
-pub use vm::{DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, run};
+pub use vm::{
+    DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, execute_editing, run,
+    run_editing,
+};
 
 use std::sync::Arc;
 

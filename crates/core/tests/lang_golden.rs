@@ -66,11 +66,39 @@ fn every_error_points_into_its_file() {
     }
 }
 
+/// The traversal libraries of the two structures.
 fn library() -> (Program, Program) {
-    let mut programs = lang::library::load().expect("the library compiles");
-    let half = programs.pop().expect("two files");
-    let winged = programs.pop().expect("two files");
+    let mut programs = lang::library::load()
+        .expect("the library compiles")
+        .into_iter()
+        .zip(lang::library::SOURCES)
+        .map(|(program, (file, _))| (file, program));
+    let mut take = |name: &str| {
+        programs
+            .find(|(file, _)| *file == name)
+            .map(|(_, program)| program)
+            .expect("shipped")
+    };
+    let winged = take("winged-edge.alg");
+    let half = take("half-edge.alg");
     (winged, half)
+}
+
+#[test]
+fn editing_disassembly_renders_as_recorded() {
+    let programs = lang::library::load().expect("the library compiles");
+    let mut problems = Vec::new();
+    for (program, (file, _)) in programs.iter().zip(lang::library::SOURCES) {
+        let Some(stem) = file.strip_suffix("-edits.alg") else {
+            continue;
+        };
+        let text = lang::disassemble_all(program.algorithms.iter().map(AsRef::as_ref));
+        problems.extend(golden::compare(
+            &golden_root().join(format!("disasm/{stem}-edits.txt")),
+            &text,
+        ));
+    }
+    golden::assert_none(&problems);
 }
 
 fn trace_text(

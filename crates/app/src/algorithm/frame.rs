@@ -70,6 +70,8 @@ pub fn value_text(value: Value) -> String {
         Value::Face(i) => format!("Face {i}"),
         Value::Integer(n) => format!("Integer {n}"),
         Value::Boolean(b) => format!("Boolean {b}"),
+        Value::Float(_) => format!("Float {value}"),
+        Value::Vector(_) => format!("Vector {value}"),
     }
 }
 
@@ -222,6 +224,10 @@ fn operation_name(kind: StepKind<'_>) -> &'static str {
         StepKind::Mark { .. } => "mark",
         StepKind::Highlight { .. } => "highlight",
         StepKind::Message { .. } => "message",
+        StepKind::Write { .. } => "write",
+        StepKind::New { .. } => "new",
+        StepKind::Delete { .. } => "delete",
+        StepKind::Call { .. } => "call",
         StepKind::Done => "done",
     }
 }
@@ -280,6 +286,20 @@ fn describe(
         StepKind::Mark { element } => format!("Mark {element}: it joins the output"),
         StepKind::Highlight { element } => format!("Highlight {element}"),
         StepKind::Message { text } => format!("Message: {text}"),
+        StepKind::Write {
+            element,
+            field,
+            old,
+            new,
+        } => format!(
+            "Write {code}: the {} of {element} was {old}, now {new}",
+            field.key()
+        ),
+        StepKind::New { element } => format!("New: {element} is added with the next free id"),
+        StepKind::Delete { element } => {
+            format!("Delete {element}: its row stays as a gap until the ids are compacted")
+        }
+        StepKind::Call { result, .. } => format!("Call {code} = {result}"),
         StepKind::Done => {
             let output: Vec<String> = marked.iter().map(ToString::to_string).collect();
             if output.is_empty() {

@@ -329,6 +329,9 @@ fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui) -> Option<Command> {
                 (Type::Integer, Value::Integer(n)) => {
                     edited |= ui.add(egui::DragValue::new(n)).changed();
                 }
+                (Type::Float, Value::Float(x)) => {
+                    edited |= ui.add(egui::DragValue::new(x).speed(0.01)).changed();
+                }
                 (Type::Boolean, Value::Boolean(b)) => {
                     edited |= ui.checkbox(b, "").changed();
                 }

@@ -205,10 +205,13 @@ pub enum Run {
 }
 
 /// Reads a JavaScript or URL argument for parameter type `ty`: an element
-/// id, an integer, or true/false.
+/// id, an integer, a number, or true/false.
 pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> Option<Value> {
     match (ty, number, boolean) {
         (Type::Boolean, _, Some(b)) => Some(Value::Boolean(b)),
+        (Type::Float, Some(n), _) if n.is_finite() && n.abs() <= f64::from(f32::MAX) => {
+            Some(Value::Float(n as f32))
+        }
         (ty, Some(n), _) if n.fract() == 0.0 => {
             let kind = ty.element_kind();
             match kind {

@@ -347,6 +347,8 @@ fn type_phrase(ty: edgewise_core::lang::Type) -> &'static str {
         Type::Face => "a Face id",
         Type::Integer => "an Integer",
         Type::Boolean => "true or false",
+        Type::Float => "a number",
+        Type::Vector => "a Vector",
         Type::Null => "null",
     }
 }

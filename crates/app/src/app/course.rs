@@ -313,7 +313,8 @@ fn argument_of(value: Value) -> Option<Argument> {
     match value {
         Value::Vertex(i) | Value::Edge(i) | Value::Face(i) => Some(Argument::Number(f64::from(i))),
         Value::Integer(n) => Some(Argument::Number(f64::from(n))),
+        Value::Float(x) => Some(Argument::Number(f64::from(x))),
         Value::Boolean(b) => Some(Argument::Boolean(b)),
-        Value::Null => None,
+        Value::Null | Value::Vector(_) => None,
     }
 }

@@ -2,7 +2,7 @@
 
 use super::diagnostic::Span;
 use super::types::Type;
-use crate::schema::Structure;
+use crate::schema::{ElementKind, Structure};
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Ident {
@@ -57,6 +57,17 @@ pub enum StmtKind {
         target: Ident,
         value: Expr,
     },
+    /// `e.leftSuccessor := f`, `v.position := p`: a write into a record.
+    /// `target` is the lookup written to.
+    Write {
+        base: Expr,
+        field: Ident,
+        value: Expr,
+    },
+    /// `delete x`: the row stays as a gap until the ids are compacted.
+    Delete {
+        target: Expr,
+    },
     /// `if c then … else if c then … else … end`, or the half-edge paper's
     /// `if (c) statement else statement`.
     If {
@@ -85,6 +96,11 @@ pub enum StmtKind {
     },
     /// `message` items: strings and values, shown separated by spaces.
     Message {
+        parts: Vec<MessagePart>,
+    },
+    /// `refuse "reason", value, …`: stops the run, reporting why an
+    /// operation's precondition does not hold.
+    Refuse {
         parts: Vec<MessagePart>,
     },
     /// A statement that did not parse (already reported).
@@ -120,6 +136,8 @@ pub enum BinaryOp {
     Add,
     Sub,
     Mul,
+    /// `/`: Float division.
+    Divide,
     Div,
     Mod,
     And,
@@ -138,6 +156,7 @@ impl BinaryOp {
             BinaryOp::Add => "+",
             BinaryOp::Sub => "-",
             BinaryOp::Mul => "*",
+            BinaryOp::Divide => "/",
             BinaryOp::Div => "div",
             BinaryOp::Mod => "mod",
             BinaryOp::And => "and",
@@ -166,8 +185,16 @@ pub enum ExprKind {
         field: Ident,
     },
     Integer(i32),
+    Float(f32),
     Boolean(bool),
     Null,
+    /// `new Vertex`, `new Edge`, `new Face`.
+    New(ElementKind),
+    /// A built-in function: `vector(x, y, z)`, `float(n)`.
+    Call {
+        name: Ident,
+        args: Vec<Expr>,
+    },
     Unary {
         op: UnaryOp,
         operand: Box<Expr>,

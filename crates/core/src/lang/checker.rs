@@ -7,10 +7,11 @@
 use std::collections::{HashMap, HashSet};
 
 use super::ast::*;
+use super::builtin::{Axis, Builtin};
 use super::diagnostic::{Diagnostic, Span, nearest};
 use super::parser::MAX_ERRORS;
 use super::types::Type;
-use crate::schema::{Column, ElementKind, NameError, Structure};
+use crate::schema::{Column, ElementKind, NameError, Storage, Structure};
 
 /// A parameter or declared variable. Parameters come first, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -48,6 +49,7 @@ impl Scope {
 pub fn with_article(ty: Type) -> String {
     match ty {
         Type::Edge | Type::Integer => format!("an {ty}"),
+        Type::Vector => "a Vector".to_owned(),
         Type::Null => "null".to_owned(),
         _ => format!("a {ty}"),
     }
@@ -184,6 +186,20 @@ impl Checker<'_> {
     fn statement(&mut self, statement: &Stmt) {
         match &statement.kind {
             StmtKind::Assign { target, value } => self.assignment(target, value),
+            StmtKind::Write { base, field, value } => self.write(base, field, value),
+            StmtKind::Delete { target } => match self.expr(target) {
+                None | Some(Type::Vertex | Type::Edge | Type::Face) => {}
+                Some(ty) => {
+                    let text = self.text(target.span);
+                    self.error(
+                        target.span,
+                        format!(
+                            "only vertices, edges and faces can be deleted; `{text}` is {}",
+                            describe_value(ty)
+                        ),
+                    );
+                }
+            },
             StmtKind::If { arms, otherwise } => {
                 for (cond, body) in arms {
                     self.condition(cond);
@@ -217,7 +233,7 @@ impl Checker<'_> {
                 }
             }
             StmtKind::Action { action, target } => self.action(*action, target),
-            StmtKind::Message { parts } => {
+            StmtKind::Message { parts } | StmtKind::Refuse { parts } => {
                 for part in parts {
                     if let MessagePart::Value(value) = part {
                         self.expr(value);
@@ -242,6 +258,53 @@ impl Checker<'_> {
                     describe_value(value_type),
                     target.name,
                     with_article(target_type)
+                ),
+            );
+        }
+    }
+
+    /// `base.field := value`: the field must be stored (not derived) in
+    /// this structure, and the value must fit the column.
+    fn write(&mut self, base: &Expr, field: &Ident, value: &Expr) {
+        let value_type = self.expr(value);
+        let column = self.column(base, field);
+        let (Some((column, kind)), Some(value_type)) = (column, value_type) else {
+            return;
+        };
+        let Some(structure) = self.structure else {
+            return;
+        };
+        let target = self.text(base.span);
+        if column.storage(structure) == Some(Storage::Derived) {
+            self.error_with_hint(
+                field.span,
+                format!(
+                    "`{}` is worked out from other columns in a {structure} structure, so it cannot be written",
+                    field.name
+                ),
+                derived_hint(column).to_owned(),
+            );
+            return;
+        }
+        let wanted = column.target().map_or(Type::Vector, Type::of_kind);
+        if value_type == Type::Null && !column.nullable_in(kind) {
+            self.error(
+                value.span,
+                format!(
+                    "`{target}.{}` cannot be null: every {} has a {}",
+                    field.name,
+                    kind.prose(),
+                    column.key()
+                ),
+            );
+        } else if !wanted.accepts(value_type) {
+            self.error(
+                value.span,
+                format!(
+                    "`{target}.{}` holds {}, not {}",
+                    field.name,
+                    with_article(wanted),
+                    describe_value(value_type)
                 ),
             );
         }
@@ -324,29 +387,35 @@ impl Checker<'_> {
         match &expr.kind {
             ExprKind::Name(name) => self.variable(name, expr.span),
             ExprKind::Integer(_) => Some(Type::Integer),
+            ExprKind::Float(_) => Some(Type::Float),
+            ExprKind::New(kind) => Some(Type::of_kind(*kind)),
+            ExprKind::Call { name, args } => self.call(name, args),
             ExprKind::Boolean(_) => Some(Type::Boolean),
             ExprKind::Null => Some(Type::Null),
             ExprKind::Error => None,
             ExprKind::Lookup { base, field } => self.lookup(base, field),
             ExprKind::Unary { op, operand } => {
                 let ty = self.expr(operand)?;
-                let (wanted, word) = match op {
-                    UnaryOp::Neg => (Type::Integer, "-"),
-                    UnaryOp::Not => (Type::Boolean, "not"),
+                let fits = match op {
+                    UnaryOp::Neg => ty.is_number() || ty == Type::Vector,
+                    UnaryOp::Not => ty == Type::Boolean,
                 };
-                if ty != wanted {
+                if !fits {
+                    let (wanted, word) = match op {
+                        UnaryOp::Neg => ("a number or a Vector", "-"),
+                        UnaryOp::Not => ("a Boolean", "not"),
+                    };
                     let text = self.text(operand.span);
                     self.error(
                         operand.span,
                         format!(
-                            "`{word}` needs {}, but `{text}` is {}",
-                            with_article(wanted),
+                            "`{word}` needs {wanted}, but `{text}` is {}",
                             with_article(ty)
                         ),
                     );
                     return None;
                 }
-                Some(wanted)
+                Some(ty)
             }
             ExprKind::Binary { op, left, right } => {
                 let left_type = self.expr(left);
@@ -368,6 +437,7 @@ impl Checker<'_> {
             BinaryOp::Eq | BinaryOp::NotEq => {
                 let (l, r) = (left.1, right.1);
                 let comparable = l == r
+                    || (l.is_number() && r.is_number())
                     || (l == Type::Null && (r.element_kind().is_some() || r == Type::Null))
                     || (r == Type::Null && l.element_kind().is_some());
                 if !comparable {
@@ -390,15 +460,50 @@ impl Checker<'_> {
                 }
                 return Some(Type::Boolean);
             }
-            BinaryOp::Lt
-            | BinaryOp::Le
-            | BinaryOp::Gt
-            | BinaryOp::Ge
-            | BinaryOp::Add
-            | BinaryOp::Sub
-            | BinaryOp::Mul
-            | BinaryOp::Div
-            | BinaryOp::Mod => Type::Integer,
+            BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Divide => {
+                if let Some(ty) = arithmetic(op, left.1, right.1) {
+                    return Some(ty);
+                }
+                let (l, r) = (left.1, right.1);
+                let (side, ty) = if l.is_number() || (l == Type::Vector && op != BinaryOp::Divide) {
+                    (right.0, r)
+                } else {
+                    (left.0, l)
+                };
+                let text = self.text(side.span);
+                let mut message = format!(
+                    "`{symbol}` needs numbers or Vectors, but `{text}` is {}",
+                    with_article(ty)
+                );
+                if l == Type::Vector
+                    && r == Type::Vector
+                    && matches!(op, BinaryOp::Mul | BinaryOp::Divide)
+                {
+                    message = format!(
+                        "`{symbol}` cannot combine two Vectors; scale a Vector by a number"
+                    );
+                }
+                self.error(side.span, message);
+                return None;
+            }
+            BinaryOp::Lt | BinaryOp::Le | BinaryOp::Gt | BinaryOp::Ge => {
+                for (side, ty) in [left, right] {
+                    if !ty.is_number() {
+                        let text = self.text(side.span);
+                        let mut message = format!(
+                            "`{symbol}` needs numbers, but `{text}` is {}",
+                            with_article(ty)
+                        );
+                        if ty.element_kind().is_some() {
+                            message.push_str("; elements can only be compared with `=` and `<>`");
+                        }
+                        self.error(side.span, message);
+                        return None;
+                    }
+                }
+                return Some(Type::Boolean);
+            }
+            BinaryOp::Div | BinaryOp::Mod => Type::Integer,
             BinaryOp::And | BinaryOp::Or => Type::Boolean,
         };
         for (side, ty) in [left, right] {
@@ -409,18 +514,85 @@ impl Checker<'_> {
                     operand,
                     with_article(ty)
                 );
-                if op.is_comparison() && ty.element_kind().is_some() {
-                    message.push_str("; elements can only be compared with `=` and `<>`");
+                if ty == Type::Float && operand == Type::Integer {
+                    message.push_str("; Floats divide with `/`");
                 }
                 self.error(side.span, message);
                 return None;
             }
         }
-        Some(if op.is_comparison() {
-            Type::Boolean
-        } else {
-            operand
-        })
+        Some(operand)
+    }
+
+    /// `vector(x, y, z)`, `float(n)`, `sqrt(x)`.
+    fn call(&mut self, name: &Ident, args: &[Expr]) -> Option<Type> {
+        let types: Vec<Option<Type>> = args.iter().map(|arg| self.expr(arg)).collect();
+        let Some(builtin) = Builtin::parse(&name.name) else {
+            self.error_with_hint(
+                name.span,
+                format!("unknown function `{}`", name.name),
+                format!("the built-in functions are {}", Builtin::NAMES.join(", ")),
+            );
+            return None;
+        };
+        let wanted = builtin.parameters();
+        if args.len() != wanted.len() {
+            self.error(
+                name.span,
+                format!(
+                    "`{}` takes {} argument{} ({}), but was given {}",
+                    builtin.name(),
+                    wanted.len(),
+                    if wanted.len() == 1 { "" } else { "s" },
+                    builtin.signature(),
+                    args.len()
+                ),
+            );
+            return None;
+        }
+        for ((arg, ty), want) in args.iter().zip(types).zip(wanted) {
+            let ty = ty?;
+            if !want.accepts(ty) {
+                let text = self.text(arg.span);
+                self.error(
+                    arg.span,
+                    format!(
+                        "`{}` needs {} here, but `{text}` is {}",
+                        builtin.name(),
+                        with_article(*want),
+                        describe_value(ty)
+                    ),
+                );
+                return None;
+            }
+        }
+        Some(builtin.result())
+    }
+
+    /// The column `base.field` names, with the kind of element it is on,
+    /// reporting what is wrong with it.
+    fn column(&mut self, base: &Expr, field: &Ident) -> Option<(Column, ElementKind)> {
+        let base_type = self.expr(base)?;
+        let name = field.name.as_str();
+        let Some(kind) = base_type.element_kind() else {
+            let text = self.text(base.span);
+            self.error(
+                field.span,
+                format!(
+                    "`{text}` is {}; only vertices, edges and faces have fields to write",
+                    with_article(base_type)
+                ),
+            );
+            return None;
+        };
+        let structure = self.structure?;
+        match Column::resolve(structure, kind, name) {
+            Ok(column) => Some((column, kind)),
+            Err(error) => {
+                self.lookup_error(structure, kind, field, &error);
+                None
+            }
+        }
     }
 
     fn lookup(&mut self, base: &Expr, field: &Ident) -> Option<Type> {
@@ -430,6 +602,17 @@ impl Checker<'_> {
             self.error(
                 field.span,
                 format!("`.{name}` is a statement of its own, not a value"),
+            );
+            return None;
+        }
+        if base_type == Type::Vector {
+            if Axis::parse(name).is_some() {
+                return Some(Type::Float);
+            }
+            self.error_with_hint(
+                field.span,
+                format!("a Vector has no `{name}`"),
+                "its coordinates are `.x`, `.y` and `.z`".to_owned(),
             );
             return None;
         }
@@ -446,7 +629,7 @@ impl Checker<'_> {
         };
         let structure = self.structure?;
         match Column::resolve(structure, kind, name) {
-            Ok(field) => field.target().map(Type::of_kind),
+            Ok(field) => Some(field.target().map_or(Type::Vector, Type::of_kind)),
             Err(error) => {
                 self.lookup_error(structure, kind, field, &error);
                 None
@@ -516,6 +699,33 @@ fn canonical_names(structure: Structure, kind: ElementKind) -> Vec<&'static str>
     names
 }
 
+/// Where a derived column's value is written instead.
+fn derived_hint(column: Column) -> &'static str {
+    match column {
+        Column::StartVertex => {
+            "a half-edge's start vertex is its pair's end vertex: write `h.pair.vertex`"
+        }
+        Column::PredecessorEdge => {
+            "a half-edge's predecessor is the half-edge whose successor it is: write that one's `successor`"
+        }
+        _ => "write the columns it is worked out from",
+    }
+}
+
+/// The type of `left op right` for `+ - * /`, if the operands fit.
+fn arithmetic(op: BinaryOp, left: Type, right: Type) -> Option<Type> {
+    use Type::{Float, Integer, Vector};
+    match (op, left, right) {
+        (BinaryOp::Divide, l, r) if l.is_number() && r.is_number() => Some(Float),
+        (_, Integer, Integer) => Some(Integer),
+        (_, l, r) if l.is_number() && r.is_number() => Some(Float),
+        (BinaryOp::Add | BinaryOp::Sub, Vector, Vector) => Some(Vector),
+        (BinaryOp::Mul, Vector, n) | (BinaryOp::Mul, n, Vector) if n.is_number() => Some(Vector),
+        (BinaryOp::Divide, Vector, n) if n.is_number() => Some(Vector),
+        _ => None,
+    }
+}
+
 fn describe_value(ty: Type) -> String {
     match ty {
         Type::Null => "null".to_owned(),
@@ -579,7 +789,7 @@ mod tests {
                 "a condition must be Boolean, but `v.incidentEdge` is an Edge (to test for a missing element, write `v.incidentEdge <> null`)",
                 "`break` can only be used inside a loop",
                 "only vertices, edges and faces can be marked; `n` is an Integer (to show a value, write `message \"…\", n`)",
-                "`+` needs Integer operands, but `true` is a Boolean",
+                "`+` needs numbers or Vectors, but `true` is a Boolean",
             ]
         );
     }

@@ -4,10 +4,11 @@
 //! exactly that piece of the line (the journal's Fig. 7).
 
 use super::ast::*;
+use super::builtin::{Axis, Builtin};
 use super::checker::Scope;
 use super::diagnostic::{Diagnostic, LineIndex, Span};
 use super::types::{Type, Value};
-use crate::schema::{Column, Structure};
+use crate::schema::{Column, ElementKind, Structure};
 use std::sync::Arc;
 
 /// A register number. Registers hold the variables (parameters first), then
@@ -37,16 +38,21 @@ impl CompareOp {
     }
 }
 
-/// Integer and Boolean arithmetic. `Neg` and `Not` use only the left operand.
+/// Arithmetic on Integers, Floats and Vectors, and `not`. The unary ones
+/// (`Neg`, `Not`, a coordinate) use only the left operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ComputeOp {
     Add,
     Sub,
     Mul,
+    /// `/`: Float division.
+    Divide,
     Div,
     Mod,
     Neg,
     Not,
+    /// A Vector's coordinate: `p.x`.
+    Coordinate(Axis),
 }
 
 impl ComputeOp {
@@ -55,22 +61,48 @@ impl ComputeOp {
             ComputeOp::Add => "+",
             ComputeOp::Sub | ComputeOp::Neg => "-",
             ComputeOp::Mul => "*",
+            ComputeOp::Divide => "/",
             ComputeOp::Div => "div",
             ComputeOp::Mod => "mod",
             ComputeOp::Not => "not",
+            ComputeOp::Coordinate(axis) => axis.name(),
         }
     }
 
     pub fn is_unary(self) -> bool {
-        matches!(self, ComputeOp::Neg | ComputeOp::Not)
+        matches!(
+            self,
+            ComputeOp::Neg | ComputeOp::Not | ComputeOp::Coordinate(_)
+        )
     }
 }
 
-/// One instruction. Lookup, Assign, Compare, Compute, Mark, Highlight,
-/// Message and Done each produce one trace step; Move and the jumps are
-/// bookkeeping and produce none.
+/// One instruction. Every instruction but Move and the jumps (bookkeeping)
+/// produces one trace step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Op {
+    /// `base.field := src`: a write into a record (or a vertex's position).
+    Write {
+        base: Reg,
+        field: Column,
+        src: Reg,
+    },
+    /// `new Vertex`: a row with the next free id.
+    New {
+        dst: Reg,
+        kind: ElementKind,
+    },
+    /// `delete x`.
+    Delete {
+        element: Reg,
+    },
+    /// A built-in function; `args` holds `argc` registers.
+    Call {
+        dst: Reg,
+        builtin: Builtin,
+        args: [Reg; 3],
+        argc: u8,
+    },
     Lookup {
         dst: Reg,
         base: Reg,
@@ -105,6 +137,10 @@ pub enum Op {
     Message {
         index: u32,
     },
+    /// Stops the run with message `index` as the reason.
+    Refuse {
+        index: u32,
+    },
     Jump {
         target: u32,
     },
@@ -120,6 +156,11 @@ impl Op {
     /// Whether executing this instruction records a trace step.
     pub fn is_step(self) -> bool {
         !matches!(self, Op::Move { .. } | Op::Jump { .. } | Op::JumpIf { .. })
+    }
+
+    /// Whether it changes the mesh.
+    pub fn is_edit(self) -> bool {
+        matches!(self, Op::Write { .. } | Op::New { .. } | Op::Delete { .. })
     }
 }
 
@@ -178,6 +219,12 @@ pub struct Algorithm {
 impl Algorithm {
     pub fn params(&self) -> impl Iterator<Item = &VariableInfo> {
         self.variables.iter().take_while(|v| v.is_param)
+    }
+
+    /// Whether running it changes the mesh (it writes a record, or makes or
+    /// deletes an element).
+    pub fn edits(&self) -> bool {
+        self.code.iter().any(|instr| instr.op.is_edit())
     }
 
     pub fn param_count(&self) -> usize {
@@ -378,6 +425,27 @@ impl Compiler<'_> {
                 let var = self.variable(&target.name);
                 self.emit(Op::Assign { var, src }, span);
             }
+            StmtKind::Write { base, field, value } => {
+                let src = self.expr(value);
+                let base_reg = self.expr(base);
+                let kind = self.register_type(base_reg).element_kind();
+                if let Some(field) =
+                    kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok())
+                {
+                    self.emit(
+                        Op::Write {
+                            base: base_reg,
+                            field,
+                            src,
+                        },
+                        span,
+                    );
+                }
+            }
+            StmtKind::Delete { target } => {
+                let element = self.expr(target);
+                self.emit(Op::Delete { element }, span);
+            }
             StmtKind::If { arms, otherwise } => {
                 let end = self.new_label();
                 for (i, (cond, body)) in arms.iter().enumerate() {
@@ -436,7 +504,8 @@ impl Compiler<'_> {
                 };
                 self.emit(op, span);
             }
-            StmtKind::Message { parts } => {
+            StmtKind::Message { parts } | StmtKind::Refuse { parts } => {
+                let refuse = matches!(statement.kind, StmtKind::Refuse { .. });
                 let items = parts
                     .iter()
                     .map(|part| match part {
@@ -446,7 +515,11 @@ impl Compiler<'_> {
                     .collect();
                 let index = u32::try_from(self.messages.len()).unwrap_or(u32::MAX);
                 self.messages.push(MessageTemplate { items });
-                self.emit(Op::Message { index }, span);
+                if refuse {
+                    self.emit(Op::Refuse { index }, span);
+                } else {
+                    self.emit(Op::Message { index }, span);
+                }
             }
             StmtKind::Error => {}
         }
@@ -511,17 +584,60 @@ impl Compiler<'_> {
         match &expr.kind {
             ExprKind::Name(name) => self.variable(name),
             ExprKind::Integer(n) => self.constant(Value::Integer(*n), Type::Integer),
+            ExprKind::Float(x) => self.constant(Value::Float(*x), Type::Float),
+            ExprKind::New(kind) => {
+                let dst = self.register(Type::of_kind(*kind));
+                self.emit(Op::New { dst, kind: *kind }, span);
+                dst
+            }
+            ExprKind::Call { name, args } => {
+                let Some(builtin) = Builtin::parse(&name.name) else {
+                    return self.constant(Value::Null, Type::Null);
+                };
+                let mut regs = [0; 3];
+                for (slot, arg) in regs.iter_mut().zip(args) {
+                    *slot = self.expr(arg);
+                }
+                let dst = self.register(builtin.result());
+                self.emit(
+                    Op::Call {
+                        dst,
+                        builtin,
+                        args: regs,
+                        argc: args.len().min(3) as u8,
+                    },
+                    span,
+                );
+                dst
+            }
             ExprKind::Boolean(b) => self.constant(Value::Boolean(*b), Type::Boolean),
             ExprKind::Null | ExprKind::Error => self.constant(Value::Null, Type::Null),
             ExprKind::Lookup { base, field } => {
                 let base_reg = self.expr(base);
-                let kind = self.register_type(base_reg).element_kind();
+                let base_type = self.register_type(base_reg);
+                if base_type == Type::Vector {
+                    let Some(axis) = Axis::parse(&field.name) else {
+                        return self.constant(Value::Null, Type::Null);
+                    };
+                    let dst = self.register(Type::Float);
+                    self.emit(
+                        Op::Compute {
+                            dst,
+                            op: ComputeOp::Coordinate(axis),
+                            left: base_reg,
+                            right: base_reg,
+                        },
+                        span,
+                    );
+                    return dst;
+                }
+                let kind = base_type.element_kind();
                 let resolved =
                     kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok());
-                let Some((field, target)) = resolved.and_then(|f| Some((f, f.target()?))) else {
+                let Some(field) = resolved else {
                     return self.constant(Value::Null, Type::Null);
                 };
-                let dst = self.register(Type::of_kind(target));
+                let dst = self.register(field.target().map_or(Type::Vector, Type::of_kind));
                 self.emit(
                     Op::Lookup {
                         dst,
@@ -535,7 +651,7 @@ impl Compiler<'_> {
             ExprKind::Unary { op, operand } => {
                 let left = self.expr(operand);
                 let (op, ty) = match op {
-                    UnaryOp::Neg => (ComputeOp::Neg, Type::Integer),
+                    UnaryOp::Neg => (ComputeOp::Neg, self.register_type(left)),
                     UnaryOp::Not => (ComputeOp::Not, Type::Boolean),
                 };
                 let dst = self.register(ty);
@@ -597,14 +713,17 @@ impl Compiler<'_> {
                     );
                     return dst;
                 }
+                let (left_type, right_type) = (self.register_type(left), self.register_type(right));
+                let ty = result_type(*op, left_type, right_type);
                 let op = match op {
                     BinaryOp::Add => ComputeOp::Add,
                     BinaryOp::Sub => ComputeOp::Sub,
                     BinaryOp::Mul => ComputeOp::Mul,
+                    BinaryOp::Divide => ComputeOp::Divide,
                     BinaryOp::Div => ComputeOp::Div,
                     _ => ComputeOp::Mod,
                 };
-                let dst = self.register(Type::Integer);
+                let dst = self.register(ty);
                 self.emit(
                     Op::Compute {
                         dst,
@@ -624,5 +743,17 @@ impl Compiler<'_> {
             .get(usize::from(reg))
             .copied()
             .unwrap_or(Type::Null)
+    }
+}
+
+/// The type `+ - * /` give: Integer only from two Integers, a Vector if
+/// either side is one, otherwise Float.
+fn result_type(op: BinaryOp, left: Type, right: Type) -> Type {
+    if left == Type::Vector || right == Type::Vector {
+        Type::Vector
+    } else if op == BinaryOp::Divide || left == Type::Float || right == Type::Float {
+        Type::Float
+    } else {
+        Type::Integer
     }
 }

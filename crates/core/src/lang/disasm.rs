@@ -2,6 +2,7 @@
 //! want to see the "assembly" the papers' system ran.
 
 use super::compiler::{Algorithm, MessageItem, Op};
+use super::types::Type;
 use std::fmt::Write as _;
 
 /// Lists an algorithm's registers and instructions, one instruction a line,
@@ -71,6 +72,30 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
             format!("lookup   {} := {}.{field}", name(dst), name(base))
         }
         Op::Assign { var, src } => format!("assign   {} := {}", name(var), name(src)),
+        Op::Write { base, field, src } => {
+            let field = field.language_name().unwrap_or(field.record_name());
+            format!("write    {}.{field} := {}", name(base), name(src))
+        }
+        Op::New { dst, kind } => format!("new      {} := {}", name(dst), Type::of_kind(kind)),
+        Op::Delete { element } => format!("delete   {}", name(element)),
+        Op::Call {
+            dst,
+            builtin,
+            args,
+            argc,
+        } => {
+            let args: Vec<String> = args
+                .iter()
+                .take(usize::from(argc))
+                .map(|&reg| name(reg))
+                .collect();
+            format!(
+                "call     {} := {}({})",
+                name(dst),
+                builtin.name(),
+                args.join(", ")
+            )
+        }
         Op::Compare {
             dst,
             op,
@@ -106,6 +131,7 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
         Op::Move { dst, src } => format!("move     {} := {}", name(dst), name(src)),
         Op::Mark { element } => format!("mark     {}", name(element)),
         Op::Highlight { element } => format!("highlight {}", name(element)),
+        Op::Refuse { index } => format!("refuse   message {index}"),
         Op::Message { index } => {
             let items: Vec<String> = algorithm
                 .messages

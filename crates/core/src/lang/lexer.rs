@@ -76,23 +76,7 @@ impl Lexer<'_> {
                     let kind = TokenKind::keyword(word).unwrap_or(TokenKind::Ident);
                     self.push(kind, start);
                 }
-                b'0'..=b'9' => {
-                    while self.peek(0).is_ascii_digit() {
-                        self.pos += 1;
-                    }
-                    let span = Span::new(start, self.pos);
-                    if span.text(self.source).parse::<i32>().is_err() {
-                        self.report(Diagnostic::error(
-                            span,
-                            format!(
-                                "the number {} is too large (Integer holds up to {})",
-                                shorten(span.text(self.source), 20),
-                                i32::MAX
-                            ),
-                        ));
-                    }
-                    self.push(TokenKind::Integer, start);
-                }
+                b'0'..=b'9' => self.number(start),
                 b'"' => self.string(start),
                 _ => self.operator(start, c),
             }
@@ -101,6 +85,48 @@ impl Lexer<'_> {
             kind: TokenKind::Eof,
             span: Span::new(self.pos, self.pos),
         });
+    }
+
+    /// An Integer (`42`) or a Float (`0.5`, `2.0`): a point counts only
+    /// with a digit after it, so `1.x` stays a lookup on `1`.
+    fn number(&mut self, start: usize) {
+        while self.peek(0).is_ascii_digit() {
+            self.pos += 1;
+        }
+        if self.peek(0) == b'.' && self.peek(1).is_ascii_digit() {
+            self.pos += 1;
+            while self.peek(0).is_ascii_digit() {
+                self.pos += 1;
+            }
+            let span = Span::new(start, self.pos);
+            let finite = span
+                .text(self.source)
+                .parse::<f32>()
+                .is_ok_and(f32::is_finite);
+            if !finite {
+                self.report(Diagnostic::error(
+                    span,
+                    format!(
+                        "the number {} is too large for a Float",
+                        shorten(span.text(self.source), 20)
+                    ),
+                ));
+            }
+            self.push(TokenKind::Float, start);
+            return;
+        }
+        let span = Span::new(start, self.pos);
+        if span.text(self.source).parse::<i32>().is_err() {
+            self.report(Diagnostic::error(
+                span,
+                format!(
+                    "the number {} is too large (Integer holds up to {})",
+                    shorten(span.text(self.source), 20),
+                    i32::MAX
+                ),
+            ));
+        }
+        self.push(TokenKind::Integer, start);
     }
 
     /// Records an error; past [`MAX_ERRORS`] it stops reading instead, so a
@@ -167,6 +193,7 @@ impl Lexer<'_> {
             (b'+', _) => (T::Plus, 1),
             (b'-', _) => (T::Minus, 1),
             (b'*', _) => (T::Star, 1),
+            (b'/', _) => (T::Slash, 1),
             _ => {
                 // Skip one whole character, which may be several bytes.
                 let ch = self
@@ -182,9 +209,6 @@ impl Lexer<'_> {
                 );
                 self.report(match ch {
                     '{' | '}' => diagnostic.with_hint("blocks are written `begin … end`"),
-                    '/' => {
-                        diagnostic.with_hint("comments start with `//`; integer division is `div`")
-                    }
                     '%' => diagnostic.with_hint("the remainder operator is `mod`"),
                     '&' => diagnostic.with_hint("use `and`"),
                     '|' => diagnostic.with_hint("use `or`"),

@@ -4,7 +4,7 @@
 use super::{Program, compile_rendered};
 
 /// The library's source files: (file name, text).
-pub const SOURCES: [(&str, &str); 2] = [
+pub const SOURCES: [(&str, &str); 3] = [
     (
         "winged-edge.alg",
         include_str!("../../../../algorithms/winged-edge.alg"),
@@ -12,6 +12,10 @@ pub const SOURCES: [(&str, &str); 2] = [
     (
         "half-edge.alg",
         include_str!("../../../../algorithms/half-edge.alg"),
+    ),
+    (
+        "half-edge-edits.alg",
+        include_str!("../../../../algorithms/half-edge-edits.alg"),
     ),
 ];
 

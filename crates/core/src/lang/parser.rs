@@ -546,7 +546,13 @@ impl Parser<'_> {
                 let target = self.expression();
                 StmtKind::Action { action, target }
             }
-            T::Message => self.message_statement(),
+            T::Message | T::Refuse => self.message_statement(),
+            T::Delete => {
+                self.bump();
+                StmtKind::Delete {
+                    target: self.expression(),
+                }
+            }
             T::Ident => return self.identifier_statement(),
             _ => {
                 return Stmt {
@@ -607,12 +613,21 @@ impl Parser<'_> {
                             value,
                         },
                     ),
+                    ExprKind::Lookup { base, field } => finish(
+                        self,
+                        StmtKind::Write {
+                            base: *base,
+                            field,
+                            value,
+                        },
+                    ),
                     _ => {
                         self.report(
-                            Diagnostic::error(target.span, "only a variable can be assigned to")
-                                .with_hint(
-                                    "algorithms read the mesh's tables but never change them",
-                                ),
+                            Diagnostic::error(
+                                target.span,
+                                "only a variable or a record's field can be assigned to",
+                            )
+                            .with_hint("write `x := …` or `e.leftSuccessor := …`"),
                         );
                         finish(self, StmtKind::Error)
                     }
@@ -657,9 +672,10 @@ impl Parser<'_> {
         }
     }
 
-    // message-statement := message item { , item }, item := string | expr
+    // message-statement := ("message" | "refuse") item { , item },
+    // item := string | expr
     fn message_statement(&mut self) -> StmtKind {
-        self.bump();
+        let refuse = self.bump().kind == T::Refuse;
         let mut parts = Vec::new();
         loop {
             if let Some(token) = self.eat(T::String) {
@@ -668,7 +684,11 @@ impl Parser<'_> {
                 parts.push(MessagePart::Value(self.expression()));
             }
             if self.eat(T::Comma).is_none() {
-                return StmtKind::Message { parts };
+                return if refuse {
+                    StmtKind::Refuse { parts }
+                } else {
+                    StmtKind::Message { parts }
+                };
             }
         }
     }
@@ -954,6 +974,7 @@ impl Parser<'_> {
         loop {
             let op = match self.peek() {
                 T::Star => BinaryOp::Mul,
+                T::Slash => BinaryOp::Divide,
                 T::Div => BinaryOp::Div,
                 T::Mod => BinaryOp::Mod,
                 _ => break,
@@ -983,6 +1004,12 @@ impl Parser<'_> {
             if let ExprKind::Integer(n) = operand.kind {
                 return Expr {
                     kind: ExprKind::Integer(n.wrapping_neg()),
+                    span,
+                };
+            }
+            if let ExprKind::Float(x) = operand.kind {
+                return Expr {
+                    kind: ExprKind::Float(-x),
                     span,
                 };
             }
@@ -1038,7 +1065,10 @@ impl Parser<'_> {
     fn primary(&mut self) -> Expr {
         let token = self.token();
         let kind = match token.kind {
+            T::Ident if self.token_at(1).kind == T::LParen => return self.call(),
             T::Ident => ExprKind::Name(self.text(token.span).to_owned()),
+            T::Float => ExprKind::Float(self.text(token.span).parse().unwrap_or(0.0)),
+            T::New => return self.new_element(),
             // An out-of-range number was reported by the lexer.
             T::Integer => ExprKind::Integer(self.text(token.span).parse().unwrap_or(0)),
             T::True => ExprKind::Boolean(true),
@@ -1063,6 +1093,53 @@ impl Parser<'_> {
         Expr {
             kind,
             span: token.span,
+        }
+    }
+}
+
+impl Parser<'_> {
+    // call := ident "(" [ expr { "," expr } ] ")"
+    fn call(&mut self) -> Expr {
+        let name = self.identifier("as a function name");
+        self.bump();
+        let mut args = Vec::new();
+        if !self.at(T::RParen) {
+            loop {
+                args.push(self.expression());
+                if self.eat(T::Comma).is_none() {
+                    break;
+                }
+            }
+        }
+        self.expect(T::RParen, "to close the argument list");
+        Expr {
+            span: name.span.to(self.previous_span()),
+            kind: ExprKind::Call { name, args },
+        }
+    }
+
+    // new-element := "new" ( "Vertex" | "Edge" | "Face" )
+    fn new_element(&mut self) -> Expr {
+        let start = self.bump().span;
+        let (ty, span) = self.type_name();
+        let span = start.to(span);
+        match ty.and_then(Type::element_kind) {
+            Some(kind) => Expr {
+                kind: ExprKind::New(kind),
+                span,
+            },
+            None => {
+                if ty.is_some() {
+                    self.report(Diagnostic::error(
+                        span,
+                        "`new` makes a Vertex, an Edge or a Face",
+                    ));
+                }
+                Expr {
+                    kind: ExprKind::Error,
+                    span,
+                }
+            }
         }
     }
 }

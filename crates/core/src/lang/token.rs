@@ -10,6 +10,7 @@ use std::fmt;
 pub enum TokenKind {
     Ident,
     Integer,
+    Float,
     String,
     // Keywords.
     Algorithm,
@@ -36,6 +37,9 @@ pub enum TokenKind {
     True,
     False,
     Null,
+    New,
+    Delete,
+    Refuse,
     // Punctuation and operators.
     /// `:=`
     Assign,
@@ -60,6 +64,7 @@ pub enum TokenKind {
     Plus,
     Minus,
     Star,
+    Slash,
     Eof,
 }
 
@@ -89,6 +94,9 @@ pub const KEYWORDS: &[(&str, TokenKind)] = &[
     ("true", TokenKind::True),
     ("false", TokenKind::False),
     ("null", TokenKind::Null),
+    ("new", TokenKind::New),
+    ("delete", TokenKind::Delete),
+    ("refuse", TokenKind::Refuse),
 ];
 
 impl TokenKind {
@@ -112,6 +120,7 @@ impl TokenKind {
         match self {
             T::Ident => "a name",
             T::Integer => "a number",
+            T::Float => "a Float number",
             T::String => "a string",
             T::Assign => ":=",
             T::Colon => ":",
@@ -131,6 +140,7 @@ impl TokenKind {
             T::Plus => "+",
             T::Minus => "-",
             T::Star => "*",
+            T::Slash => "/",
             _ => "end of file",
         }
     }
@@ -139,9 +149,11 @@ impl TokenKind {
 impl fmt::Display for TokenKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            TokenKind::Ident | TokenKind::Integer | TokenKind::String | TokenKind::Eof => {
-                f.write_str(self.describe())
-            }
+            TokenKind::Ident
+            | TokenKind::Integer
+            | TokenKind::Float
+            | TokenKind::String
+            | TokenKind::Eof => f.write_str(self.describe()),
             _ => write!(f, "`{}`", self.describe()),
         }
     }

@@ -3,7 +3,9 @@
 //! half-edge structures (through their [`Records`]) and on anything else with
 //! tables, such as the tests' hand-written meshes.
 
-use crate::mesh::{self, HalfEdgeMesh, WingedEdgeMesh};
+use glam::Vec3;
+
+use crate::mesh::{self, HalfEdgeMesh, VertexId, WingedEdgeMesh};
 use crate::schema::{Column, ElementKind, ElementRef, LookupError, Records, Structure};
 
 /// A mesh the VM can walk.
@@ -20,6 +22,12 @@ pub trait Topology {
         element: ElementRef,
         column: Column,
     ) -> Result<Option<ElementRef>, LookupError>;
+
+    /// A vertex's position, for `v.position`; `None` if the vertex does not
+    /// exist or the mesh has no geometry.
+    fn position(&self, _vertex: VertexId) -> Option<Vec3> {
+        None
+    }
 }
 
 impl<T: Topology + ?Sized> Topology for &T {
@@ -38,6 +46,10 @@ impl<T: Topology + ?Sized> Topology for &T {
         column: Column,
     ) -> Result<Option<ElementRef>, LookupError> {
         (**self).lookup(element, column)
+    }
+
+    fn position(&self, vertex: VertexId) -> Option<Vec3> {
+        (**self).position(vertex)
     }
 }
 
@@ -60,6 +72,13 @@ macro_rules! topology_from_records {
                 column: Column,
             ) -> Result<Option<ElementRef>, LookupError> {
                 self.reference(element, column)
+            }
+
+            fn position(&self, vertex: VertexId) -> Option<Vec3> {
+                if !self.contains(vertex.into()) {
+                    return None;
+                }
+                Records::position(self, vertex)
             }
         }
     )*};

@@ -8,11 +8,14 @@
 //! assignments replayed. Marks and highlights are kept in logs ordered by
 //! step, so the marked set at any step is a prefix found by binary search.
 
+use super::builtin::Builtin;
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Op};
 use super::diagnostic::Span;
-use super::types::Value;
+use super::types::{Type, Value};
 use super::vm::Recorder;
+use crate::mesh::{Change, Edit, EditError};
 use crate::schema::{Column, ElementRef};
+use glam::Vec3;
 use std::fmt;
 use std::sync::Arc;
 
@@ -34,6 +37,8 @@ pub enum RuntimeErrorKind {
     Fault,
     /// The step limit stopped a run that may never end.
     StepLimit,
+    /// The algorithm refused (`refuse`): a precondition does not hold.
+    Refused,
 }
 
 /// An error that stopped a run; the trace keeps every step before it.
@@ -104,6 +109,26 @@ pub enum StepKind<'t> {
     Message {
         text: &'t str,
     },
+    /// `element.field` went from `old` to `new` (a reference, or a
+    /// position).
+    Write {
+        element: Value,
+        field: Column,
+        old: Value,
+        new: Value,
+    },
+    /// `new Vertex` made `element`.
+    New {
+        element: Value,
+    },
+    Delete {
+        element: Value,
+    },
+    /// A built-in function gave `result`.
+    Call {
+        builtin: Builtin,
+        result: Value,
+    },
     Done,
 }
 
@@ -128,6 +153,10 @@ pub struct Trace {
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
+    /// Vector values of steps (their code is an index here).
+    vectors: Vec<Vec3>,
+    /// Every change to the mesh, with the step that made it, in order.
+    changes: Vec<(u32, Change)>,
     final_variables: Vec<Value>,
     outcome: Outcome,
 }
@@ -139,6 +168,7 @@ pub(crate) struct TraceRecorder {
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
+    vectors: Vec<Vec3>,
 }
 
 impl TraceRecorder {
@@ -150,6 +180,18 @@ impl TraceRecorder {
             marks: Vec::new(),
             highlights: Vec::new(),
             messages: Vec::new(),
+            vectors: Vec::new(),
+        }
+    }
+
+    /// A value's 32-bit code; a Vector is stored aside.
+    fn encode(&mut self, value: Value) -> u32 {
+        match value {
+            Value::Vector(v) => {
+                self.vectors.push(v);
+                u32::try_from(self.vectors.len() - 1).unwrap_or(u32::MAX)
+            }
+            other => other.code(),
         }
     }
 
@@ -162,6 +204,7 @@ impl TraceRecorder {
         algorithm: Arc<Algorithm>,
         initial: Vec<Value>,
         final_variables: Vec<Value>,
+        changes: Vec<(u32, Change)>,
         outcome: Outcome,
     ) -> Trace {
         let mut recorder = self;
@@ -179,6 +222,8 @@ impl TraceRecorder {
             marks: recorder.marks,
             highlights: recorder.highlights,
             messages: recorder.messages,
+            vectors: recorder.vectors,
+            changes,
             final_variables,
             outcome,
         }
@@ -187,11 +232,12 @@ impl TraceRecorder {
 
 impl Recorder for TraceRecorder {
     #[inline(always)]
-    fn step(&mut self, pc: u32, a: u32, b: u32, r: u32, variables: &[Value]) {
+    fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]) {
         if self.steps.len().is_multiple_of(SNAPSHOT_INTERVAL) {
             self.snapshots.extend_from_slice(variables);
             debug_assert_eq!(variables.len(), self.variable_count);
         }
+        let (a, b, r) = (self.encode(a), self.encode(b), self.encode(r));
         self.steps.push(Step { pc, a, b, r });
     }
 
@@ -209,6 +255,24 @@ impl Recorder for TraceRecorder {
     fn message(&mut self, text: String) -> u32 {
         self.messages.push(text);
         u32::try_from(self.messages.len() - 1).unwrap_or(u32::MAX)
+    }
+}
+
+/// Reads a step's 32-bit code back as a value of a register's type.
+struct Decoder<'t> {
+    ty: Type,
+    vectors: &'t [Vec3],
+}
+
+impl Decoder<'_> {
+    fn decode(&self, code: u32) -> Value {
+        match self.ty {
+            Type::Vector => self
+                .vectors
+                .get(code as usize)
+                .map_or(Value::Null, |&v| Value::Vector(v)),
+            ty => ty.decode(code),
+        }
     }
 }
 
@@ -234,8 +298,33 @@ impl Trace {
     pub fn step(&self, index: usize) -> Option<StepView<'_>> {
         let step = *self.steps.get(index)?;
         let instr = self.algorithm.code.get(step.pc as usize)?;
-        let ty = |reg| self.algorithm.register_type(reg);
+        let ty = |reg| Decoder {
+            ty: self.algorithm.register_type(reg),
+            vectors: &self.vectors,
+        };
         let kind = match instr.op {
+            Op::Write { base, field, .. } => {
+                let column = Decoder {
+                    ty: field.target().map_or(Type::Vector, Type::of_kind),
+                    vectors: &self.vectors,
+                };
+                StepKind::Write {
+                    element: ty(base).decode(step.a),
+                    field,
+                    old: column.decode(step.b),
+                    new: column.decode(step.r),
+                }
+            }
+            Op::New { dst, .. } => StepKind::New {
+                element: ty(dst).decode(step.r),
+            },
+            Op::Delete { element } => StepKind::Delete {
+                element: ty(element).decode(step.a),
+            },
+            Op::Call { dst, builtin, .. } => StepKind::Call {
+                builtin,
+                result: ty(dst).decode(step.r),
+            },
             Op::Lookup { dst, base, field } => StepKind::Lookup {
                 base: ty(base).decode(step.a),
                 field,
@@ -276,7 +365,11 @@ impl Trace {
                     .get(step.a as usize)
                     .map_or("", String::as_str),
             },
-            Op::Done | Op::Move { .. } | Op::Jump { .. } | Op::JumpIf { .. } => StepKind::Done,
+            Op::Done
+            | Op::Refuse { .. }
+            | Op::Move { .. }
+            | Op::Jump { .. }
+            | Op::JumpIf { .. } => StepKind::Done,
         };
         Some(StepView {
             index,
@@ -290,6 +383,56 @@ impl Trace {
     pub fn line(&self, index: usize) -> Option<u32> {
         let step = self.steps.get(index)?;
         self.algorithm.code.get(step.pc as usize).map(|i| i.line)
+    }
+
+    /// Every change the run made to the mesh, oldest first.
+    pub fn changes(&self) -> impl ExactSizeIterator<Item = &Change> + '_ {
+        self.changes.iter().map(|(_, change)| change)
+    }
+
+    /// How many changes were made up to and including step `index`
+    /// (`None`: before the first step).
+    pub fn changes_through(&self, index: Option<usize>) -> usize {
+        match index {
+            None => 0,
+            Some(index) => self
+                .changes
+                .partition_point(|&(step, _)| step as usize <= index),
+        }
+    }
+
+    /// The changes step `index` made.
+    pub fn changes_at(&self, index: usize) -> impl Iterator<Item = &Change> + '_ {
+        let start = self
+            .changes
+            .partition_point(|&(step, _)| (step as usize) < index);
+        self.changes
+            .get(start..)
+            .unwrap_or(&[])
+            .iter()
+            .take_while(move |&&(step, _)| step as usize == index)
+            .map(|(_, change)| change)
+    }
+
+    /// Moves `mesh` from the state after `from` changes to the state after
+    /// `to` changes (counts from [`Self::changes_through`]), applying or
+    /// reverting changes in order.
+    pub fn seek<M: Edit + ?Sized>(
+        &self,
+        mesh: &mut M,
+        from: usize,
+        to: usize,
+    ) -> Result<(), EditError> {
+        if to >= from {
+            for (_, change) in self.changes.get(from..to).unwrap_or(&[]) {
+                change.apply(mesh)?;
+            }
+        } else {
+            for (_, change) in self.changes.get(to..from).unwrap_or(&[]).iter().rev() {
+                change.revert(mesh)?;
+            }
+        }
+        Ok(())
     }
 
     /// The variables (parameters first) before the first step.
@@ -323,7 +466,11 @@ impl Trace {
                 self.algorithm.code.get(step.pc as usize).map(|i| i.op)
                 && let Some(slot) = state.get_mut(usize::from(var))
             {
-                *slot = self.algorithm.register_type(var).decode(step.r);
+                *slot = Decoder {
+                    ty: self.algorithm.register_type(var),
+                    vectors: &self.vectors,
+                }
+                .decode(step.r);
             }
         }
         state
@@ -388,6 +535,8 @@ impl Trace {
         use std::mem::size_of;
         self.steps.capacity() * size_of::<Step>()
             + self.snapshots.capacity() * size_of::<Value>()
+            + self.vectors.capacity() * size_of::<Vec3>()
+            + self.changes.capacity() * size_of::<(u32, Change)>()
             + (self.marks.capacity() + self.highlights.capacity()) * size_of::<(u32, ElementRef)>()
     }
 
@@ -445,6 +594,18 @@ impl Trace {
             StepKind::Mark { element } => format!("mark {element}"),
             StepKind::Highlight { element } => format!("highlight {element}"),
             StepKind::Message { text } => format!("message \"{text}\""),
+            StepKind::Write {
+                element,
+                field,
+                old,
+                new,
+            } => {
+                let field = field.language_name().unwrap_or(field.record_name());
+                format!("write {element}.{field} := {new} (was {old})")
+            }
+            StepKind::New { element } => format!("new {element}"),
+            StepKind::Delete { element } => format!("delete {element}"),
+            StepKind::Call { result, .. } => format!("call {snippet} -> {result}"),
             StepKind::Done => "done".to_owned(),
         };
         format!("step {}  line {}  {what}", index + 1, view.line)

@@ -2,6 +2,9 @@
 //! ([`crate::schema::Column`]).
 
 use std::fmt;
+use std::hash::{Hash, Hasher};
+
+use glam::Vec3;
 
 use crate::schema::{ElementKind, ElementRef};
 
@@ -14,16 +17,22 @@ pub enum Type {
     Face,
     Integer,
     Boolean,
+    /// A 32-bit floating-point number.
+    Float,
+    /// A point or direction in space: three Floats.
+    Vector,
     Null,
 }
 
 impl Type {
-    pub const DECLARABLE: [Type; 5] = [
+    pub const DECLARABLE: [Type; 7] = [
         Type::Vertex,
         Type::Edge,
         Type::Face,
         Type::Integer,
         Type::Boolean,
+        Type::Float,
+        Type::Vector,
     ];
 
     pub fn name(self) -> &'static str {
@@ -33,6 +42,8 @@ impl Type {
             Type::Face => "Face",
             Type::Integer => "Integer",
             Type::Boolean => "Boolean",
+            Type::Float => "Float",
+            Type::Vector => "Vector",
             Type::Null => "null",
         }
     }
@@ -60,9 +71,17 @@ impl Type {
         }
     }
 
-    /// Whether a value of type `value` may be stored in a variable of this type.
+    /// Whether Integer and Float arithmetic applies.
+    pub fn is_number(self) -> bool {
+        matches!(self, Type::Integer | Type::Float)
+    }
+
+    /// Whether a value of type `value` may be stored in a variable of this
+    /// type. An Integer widens to a Float.
     pub fn accepts(self, value: Type) -> bool {
-        self == value || (value == Type::Null && self.element_kind().is_some())
+        self == value
+            || (value == Type::Null && self.element_kind().is_some())
+            || (self == Type::Float && value == Type::Integer)
     }
 
     /// The initial value of a variable of this type.
@@ -70,20 +89,26 @@ impl Type {
         match self {
             Type::Integer => Value::Integer(0),
             Type::Boolean => Value::Boolean(false),
+            Type::Float => Value::Float(0.0),
+            Type::Vector => Value::Vector(Vec3::ZERO),
             _ => Value::Null,
         }
     }
 
     /// Packs a value of this type into 32 bits, for compact trace steps.
+    /// A Vector does not fit; traces keep Vectors in a table and store the
+    /// index.
     pub fn encode(self, value: Value) -> u32 {
         value.code()
     }
 
-    /// The inverse of [`Type::encode`].
+    /// The inverse of [`Type::encode`] for every type but Vector.
     pub fn decode(self, code: u32) -> Value {
         match self {
             Type::Integer => Value::Integer(code.cast_signed()),
             Type::Boolean => Value::Boolean(code != 0),
+            Type::Float => Value::Float(f32::from_bits(code)),
+            Type::Vector => Value::Vector(Vec3::ZERO),
             Type::Null => Value::Null,
             _ if code == NULL_CODE => Value::Null,
             Type::Vertex => Value::Vertex(code),
@@ -102,8 +127,9 @@ impl fmt::Display for Type {
     }
 }
 
-/// A run-time value: 8 bytes, copied freely.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// A run-time value: 16 bytes, copied freely. Floats compare by their bits
+/// here (so values can be map keys); the language's `=` compares numbers.
+#[derive(Clone, Copy, Debug)]
 pub enum Value {
     Null,
     Vertex(u32),
@@ -111,6 +137,47 @@ pub enum Value {
     Face(u32),
     Integer(i32),
     Boolean(bool),
+    Float(f32),
+    Vector(Vec3),
+}
+
+impl Value {
+    /// The bits that identify a value, for equality and hashing.
+    fn identity(self) -> (u8, [u32; 3]) {
+        match self {
+            Value::Null => (0, [0; 3]),
+            Value::Vertex(i) => (1, [i, 0, 0]),
+            Value::Edge(i) => (2, [i, 0, 0]),
+            Value::Face(i) => (3, [i, 0, 0]),
+            Value::Integer(n) => (4, [n.cast_unsigned(), 0, 0]),
+            Value::Boolean(b) => (5, [u32::from(b), 0, 0]),
+            Value::Float(x) => (6, [x.to_bits(), 0, 0]),
+            Value::Vector(v) => (7, [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]),
+        }
+    }
+
+    /// A Float, or an Integer widened to one.
+    pub fn number(self) -> Option<f32> {
+        match self {
+            Value::Float(x) => Some(x),
+            Value::Integer(n) => Some(n as f32),
+            _ => None,
+        }
+    }
+}
+
+impl PartialEq for Value {
+    fn eq(&self, other: &Self) -> bool {
+        self.identity() == other.identity()
+    }
+}
+
+impl Eq for Value {}
+
+impl Hash for Value {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.identity().hash(state);
+    }
 }
 
 impl Value {
@@ -123,6 +190,8 @@ impl Value {
             Value::Vertex(i) | Value::Edge(i) | Value::Face(i) => i,
             Value::Integer(n) => n.cast_unsigned(),
             Value::Boolean(b) => u32::from(b),
+            Value::Float(x) => x.to_bits(),
+            Value::Vector(_) => 0,
         }
     }
 
@@ -159,11 +228,31 @@ impl fmt::Display for Value {
             Value::Null => f.write_str("null"),
             Value::Integer(n) => write!(f, "{n}"),
             Value::Boolean(b) => write!(f, "{b}"),
+            Value::Float(x) => write_float(f, *x),
+            Value::Vector(v) => {
+                f.write_str("(")?;
+                write_float(f, v.x)?;
+                f.write_str(", ")?;
+                write_float(f, v.y)?;
+                f.write_str(", ")?;
+                write_float(f, v.z)?;
+                f.write_str(")")
+            }
             _ => match self.element() {
                 Some(element) => element.fmt(f),
                 None => Ok(()),
             },
         }
+    }
+}
+
+/// A Float as a reader expects it: `0.5`, `2.0`, `-1.25`; always with a
+/// point so it is not mistaken for an Integer.
+fn write_float(f: &mut fmt::Formatter<'_>, x: f32) -> fmt::Result {
+    if x.is_finite() && x == x.trunc() && x.abs() < 1e9 {
+        write!(f, "{x:.1}")
+    } else {
+        write!(f, "{x}")
     }
 }
 
@@ -178,9 +267,20 @@ mod tests {
             (Type::Face, Value::Null),
             (Type::Integer, Value::Integer(-3)),
             (Type::Boolean, Value::Boolean(true)),
+            (Type::Float, Value::Float(-0.25)),
             (Type::Null, Value::Null),
         ] {
             assert_eq!(ty.decode(ty.encode(value)), value);
         }
+    }
+
+    #[test]
+    fn floats_and_vectors_show_a_point() {
+        assert_eq!(Value::Float(2.0).to_string(), "2.0");
+        assert_eq!(Value::Float(-0.125).to_string(), "-0.125");
+        assert_eq!(
+            Value::Vector(Vec3::new(0.5, 1.0, -2.0)).to_string(),
+            "(0.5, 1.0, -2.0)"
+        );
     }
 }

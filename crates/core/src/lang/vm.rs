@@ -6,7 +6,8 @@ use super::diagnostic::Span;
 use super::topology::Topology;
 use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
 use super::types::{Type, Value};
-use crate::schema::{ElementKind, ElementRef};
+use crate::mesh::{Change, EditError, Editor, Mesh, VertexId};
+use crate::schema::{Column, ElementKind, ElementRef, LookupError};
 use std::fmt;
 use std::sync::Arc;
 
@@ -144,6 +145,13 @@ impl Algorithm {
         };
         let parsed = match param.ty {
             Type::Integer => Value::Integer(value.parse().map_err(|_| wrong())?),
+            Type::Float => Value::Float(
+                value
+                    .parse::<f32>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(wrong)?,
+            ),
             Type::Boolean => Value::Boolean(match value.to_ascii_lowercase().as_str() {
                 "true" => true,
                 "false" => false,
@@ -216,8 +224,15 @@ impl Algorithm {
                     ty: variable.ty,
                 });
             };
+            let value = match (variable.ty, value) {
+                (Type::Float, Value::Integer(n)) => Value::Float(n as f32),
+                _ => value,
+            };
             let fits = match (variable.ty, value) {
-                (Type::Integer, Value::Integer(_)) | (Type::Boolean, Value::Boolean(_)) => true,
+                (Type::Integer, Value::Integer(_))
+                | (Type::Boolean, Value::Boolean(_))
+                | (Type::Float, Value::Float(_))
+                | (Type::Vector, Value::Vector(_)) => true,
                 (ty, value) => value
                     .element()
                     .is_some_and(|e| Some(e.kind) == ty.element_kind()),
@@ -231,7 +246,11 @@ impl Algorithm {
             }
             if let Some(element) = value.element() {
                 let count = topology.count(element.kind);
-                if element.id as usize >= count {
+                let deleted = matches!(
+                    topology.lookup(element, Column::IncidentEdge),
+                    Err(LookupError::Deleted(_))
+                );
+                if element.id as usize >= count || deleted {
                     return Err(InputError::OutOfRange {
                         name,
                         element,
@@ -246,6 +265,8 @@ impl Algorithm {
 }
 
 /// Runs an algorithm and records every step, for stepping back and forth.
+/// The mesh is only read; an algorithm that edits stops at its first edit
+/// (use [`run_editing`]).
 pub fn run<T: Topology + ?Sized>(
     algorithm: &Arc<Algorithm>,
     topology: &T,
@@ -253,22 +274,39 @@ pub fn run<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let mut machine = Machine::new(
+    let machine = Machine::new(
         algorithm,
-        topology,
+        Reading(topology),
         &variables,
         TraceRecorder::new(algorithm.variables.len()),
         options,
     );
-    let outcome = machine.run();
-    let final_variables = machine.variables().to_vec();
-    Ok(machine
-        .recorder
-        .finish(Arc::clone(algorithm), variables, final_variables, outcome))
+    Ok(machine.into_trace(algorithm, variables))
+}
+
+/// Runs an algorithm that may change the mesh, recording every step and
+/// every change ([`Trace::changes`]). `mesh` is left as the run left it,
+/// even if it stopped on an error; reverting the trace's changes newest
+/// first restores it.
+pub fn run_editing(
+    algorithm: &Arc<Algorithm>,
+    mesh: &mut Mesh,
+    inputs: &[(&str, Value)],
+    options: RunOptions,
+) -> Result<Trace, InputError> {
+    let variables = algorithm.bind_inputs(&*mesh, inputs)?;
+    let machine = Machine::new(
+        algorithm,
+        Editing::new(mesh),
+        &variables,
+        TraceRecorder::new(algorithm.variables.len()),
+        options,
+    );
+    Ok(machine.into_trace(algorithm, variables))
 }
 
 /// The result of [`execute`]: what a run produced, without its steps.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Execution {
     pub marked: Vec<ElementRef>,
     pub highlighted: Vec<ElementRef>,
@@ -277,6 +315,8 @@ pub struct Execution {
     pub variables: Vec<Value>,
     /// The number of operations performed.
     pub steps: usize,
+    /// What an editing run changed, oldest first ([`execute_editing`]).
+    pub changes: Vec<Change>,
     pub outcome: Outcome,
 }
 
@@ -297,35 +337,111 @@ pub fn execute<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let mut machine = Machine::new(
+    let machine = Machine::new(
         algorithm,
-        topology,
+        Reading(topology),
         &variables,
         OutputRecorder::default(),
         options,
     );
-    let outcome = machine.run();
-    let variables = machine.variables().to_vec();
-    let steps = machine.steps;
-    let OutputRecorder {
-        marked,
-        highlighted,
-        messages,
-    } = machine.recorder;
-    Ok(Execution {
-        marked,
-        highlighted,
-        messages,
-        variables,
-        steps,
-        outcome,
-    })
+    Ok(machine.into_execution())
+}
+
+/// [`execute`] for an algorithm that may change the mesh: `mesh` is left
+/// as the run left it, and [`Execution::changes`] says how.
+pub fn execute_editing(
+    algorithm: &Algorithm,
+    mesh: &mut Mesh,
+    inputs: &[(&str, Value)],
+    options: RunOptions,
+) -> Result<Execution, InputError> {
+    let variables = algorithm.bind_inputs(&*mesh, inputs)?;
+    let machine = Machine::new(
+        algorithm,
+        Editing::new(mesh),
+        &variables,
+        OutputRecorder::default(),
+        options,
+    );
+    Ok(machine.into_execution())
+}
+
+/// Where the VM reads the mesh and, when it may, changes it.
+trait Store {
+    type Mesh: Topology + ?Sized;
+
+    fn mesh(&self) -> &Self::Mesh;
+
+    /// Applies an edit, or gives `None` when the run may only read.
+    fn edit<R>(
+        &mut self,
+        edit: impl FnOnce(&mut Editor<'_, Mesh>) -> Result<R, EditError>,
+    ) -> Option<Result<R, EditError>>;
+
+    /// The changes made so far.
+    fn journal(&self) -> &[Change];
+}
+
+/// A run that only reads.
+struct Reading<'a, T: ?Sized>(&'a T);
+
+impl<T: Topology + ?Sized> Store for Reading<'_, T> {
+    type Mesh = T;
+
+    #[inline(always)]
+    fn mesh(&self) -> &T {
+        self.0
+    }
+
+    fn edit<R>(
+        &mut self,
+        _edit: impl FnOnce(&mut Editor<'_, Mesh>) -> Result<R, EditError>,
+    ) -> Option<Result<R, EditError>> {
+        None
+    }
+
+    fn journal(&self) -> &[Change] {
+        &[]
+    }
+}
+
+/// A run that may change the mesh, through a journaling editor.
+struct Editing<'m> {
+    editor: Editor<'m, Mesh>,
+}
+
+impl<'m> Editing<'m> {
+    fn new(mesh: &'m mut Mesh) -> Self {
+        Self {
+            editor: Editor::new(mesh),
+        }
+    }
+}
+
+impl Store for Editing<'_> {
+    type Mesh = Mesh;
+
+    #[inline(always)]
+    fn mesh(&self) -> &Mesh {
+        self.editor.mesh()
+    }
+
+    fn edit<R>(
+        &mut self,
+        edit: impl FnOnce(&mut Editor<'_, Mesh>) -> Result<R, EditError>,
+    ) -> Option<Result<R, EditError>> {
+        Some(edit(&mut self.editor))
+    }
+
+    fn journal(&self) -> &[Change] {
+        self.editor.journal()
+    }
 }
 
 /// Receives the VM's steps. `step` is called before the step changes any
 /// variable, with the variables as they are, so a recorder can snapshot them.
 pub(crate) trait Recorder {
-    fn step(&mut self, pc: u32, a: u32, b: u32, r: u32, variables: &[Value]);
+    fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]);
     fn mark(&mut self, element: ElementRef);
     fn highlight(&mut self, element: ElementRef);
     /// Stores a message's text and returns its number.
@@ -333,7 +449,7 @@ pub(crate) trait Recorder {
 }
 
 #[derive(Default)]
-struct OutputRecorder {
+pub(crate) struct OutputRecorder {
     marked: Vec<ElementRef>,
     highlighted: Vec<ElementRef>,
     messages: Vec<String>,
@@ -341,7 +457,7 @@ struct OutputRecorder {
 
 impl Recorder for OutputRecorder {
     #[inline]
-    fn step(&mut self, _pc: u32, _a: u32, _b: u32, _r: u32, _variables: &[Value]) {}
+    fn step(&mut self, _pc: u32, _a: Value, _b: Value, _r: Value, _variables: &[Value]) {}
 
     fn mark(&mut self, element: ElementRef) {
         self.marked.push(element);
@@ -372,9 +488,11 @@ enum NullOrigin {
     },
 }
 
-struct Machine<'a, T: ?Sized, R> {
+struct Machine<'a, S, R> {
     algorithm: &'a Algorithm,
-    topology: &'a T,
+    store: S,
+    /// The step each journal entry was made at.
+    change_steps: Vec<u32>,
     registers: Vec<Value>,
     variable_count: usize,
     null_origins: Vec<NullOrigin>,
@@ -384,10 +502,10 @@ struct Machine<'a, T: ?Sized, R> {
     back_jumps: usize,
 }
 
-impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
+impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     fn new(
         algorithm: &'a Algorithm,
-        topology: &'a T,
+        store: S,
         variables: &[Value],
         recorder: R,
         options: RunOptions,
@@ -408,7 +526,8 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
         let variable_count = algorithm.variables.len().min(registers.len());
         Machine {
             algorithm,
-            topology,
+            store,
+            change_steps: Vec::new(),
             registers,
             variable_count,
             null_origins: vec![NullOrigin::Unassigned; variable_count],
@@ -421,6 +540,73 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
 
     fn variables(&self) -> &[Value] {
         self.registers.get(..self.variable_count).unwrap_or(&[])
+    }
+
+    fn into_trace(mut self, algorithm: &Arc<Algorithm>, initial: Vec<Value>) -> Trace
+    where
+        R: Into<TraceRecorder>,
+    {
+        let outcome = self.run();
+        let final_variables = self.variables().to_vec();
+        let changes: Vec<(u32, Change)> = self
+            .change_steps
+            .iter()
+            .copied()
+            .zip(self.store.journal().iter().copied())
+            .collect();
+        let recorder: TraceRecorder = self.recorder.into();
+        recorder.finish(
+            Arc::clone(algorithm),
+            initial,
+            final_variables,
+            changes,
+            outcome,
+        )
+    }
+
+    fn into_execution(mut self) -> Execution
+    where
+        R: Into<OutputRecorder>,
+    {
+        let outcome = self.run();
+        let variables = self.variables().to_vec();
+        let changes = self.store.journal().to_vec();
+        let OutputRecorder {
+            marked,
+            highlighted,
+            messages,
+        } = self.recorder.into();
+        Execution {
+            marked,
+            highlighted,
+            messages,
+            variables,
+            steps: self.steps,
+            changes,
+            outcome,
+        }
+    }
+
+    /// Ties the journal entries an edit just made to the step it recorded.
+    fn note_changes(&mut self) {
+        let step = u32::try_from(self.steps.saturating_sub(1)).unwrap_or(u32::MAX);
+        let made = self.store.journal().len() - self.change_steps.len();
+        self.change_steps.extend(std::iter::repeat_n(step, made));
+    }
+
+    /// Applies an edit, or explains why it cannot be made.
+    fn edit<X>(
+        &mut self,
+        edit: impl FnOnce(&mut Editor<'_, Mesh>) -> Result<X, EditError>,
+    ) -> Result<X, String> {
+        match self.store.edit(edit) {
+            Some(Ok(done)) => Ok(done),
+            Some(Err(error)) => Err(error.to_string()),
+            None => Err(
+                "this run can only read the mesh; algorithms that change it run as edits"
+                    .to_owned(),
+            ),
+        }
     }
 
     #[inline(always)]
@@ -439,7 +625,7 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
     }
 
     #[inline(always)]
-    fn record(&mut self, pc: usize, a: u32, b: u32, r: u32) {
+    fn record(&mut self, pc: usize, a: Value, b: Value, r: Value) {
         self.steps += 1;
         let variables = self.registers.get(..self.variable_count).unwrap_or(&[]);
         self.recorder.step(pc as u32, a, b, r, variables);
@@ -466,16 +652,114 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                         let message = self.explain_null(base);
                         return self.fail(pc, message);
                     };
-                    let result = match self.topology.lookup(element, field) {
-                        Ok(result) => Value::from(result),
-                        Err(error) => return self.fail(pc, format!("lookup failed: {error}")),
+                    let result = if field == Column::Position {
+                        match self.store.mesh().position(VertexId::new(element.id)) {
+                            Some(position) => Value::Vector(position),
+                            None => {
+                                return self.fail(pc, format!("{element} has no position"));
+                            }
+                        }
+                    } else {
+                        match self.store.mesh().lookup(element, field) {
+                            Ok(result) => Value::from(result),
+                            Err(error) => {
+                                return self.fail(pc, format!("lookup failed: {error}"));
+                            }
+                        }
                     };
-                    self.record(pc, base_value.code(), 0, result.code());
+                    self.record(pc, base_value, Value::Null, result);
+                    self.set(dst, result);
+                }
+                Op::Write { base, field, src } => {
+                    let base_value = self.get(base);
+                    let Some(element) = base_value.element() else {
+                        let message =
+                            format!("cannot write into null: {}", self.explain_null(base));
+                        return self.fail(pc, message);
+                    };
+                    let value = self.get(src);
+                    let old = if field == Column::Position {
+                        let position = match value {
+                            Value::Vector(v) => v,
+                            other => glam::Vec3::splat(other.number().unwrap_or(0.0)),
+                        };
+                        let vertex = VertexId::new(element.id);
+                        let old = self
+                            .store
+                            .mesh()
+                            .position(vertex)
+                            .map_or(Value::Null, Value::Vector);
+                        if let Err(error) =
+                            self.edit(|editor| editor.set_position(vertex, position))
+                        {
+                            return self.fail(pc, error);
+                        }
+                        old
+                    } else {
+                        let old = self
+                            .store
+                            .mesh()
+                            .lookup(element, field)
+                            .map_or(Value::Null, Value::from);
+                        let target = value.element();
+                        if let Err(error) = self.edit(|editor| editor.set(element, field, target)) {
+                            return self.fail(pc, self.write_refused(error, value, src));
+                        }
+                        old
+                    };
+                    self.record(pc, base_value, old, value);
+                    self.note_changes();
+                }
+                Op::New { dst, kind } => {
+                    let element = match self.edit(|editor| editor.create(kind)) {
+                        Ok(element) => element,
+                        Err(error) => return self.fail(pc, error),
+                    };
+                    let value = Value::from(element);
+                    self.record(pc, Value::Null, Value::Null, value);
+                    self.note_changes();
+                    self.set(dst, value);
+                }
+                Op::Delete { element } => {
+                    let value = self.get(element);
+                    let Some(target) = value.element() else {
+                        let message = self.cannot_act_message("delete", element);
+                        return self.fail(pc, message);
+                    };
+                    if let Err(error) = self.edit(|editor| editor.delete(target)) {
+                        return self.fail(pc, error);
+                    }
+                    self.record(pc, value, Value::Null, Value::Null);
+                    self.note_changes();
+                }
+                Op::Call {
+                    dst,
+                    builtin,
+                    args,
+                    argc,
+                } => {
+                    let mut values = [Value::Null; 3];
+                    for (slot, &reg) in values.iter_mut().zip(&args).take(usize::from(argc)) {
+                        *slot = self.get(reg);
+                    }
+                    let result = match builtin.apply(&values[..usize::from(argc)]) {
+                        Ok(result) => result,
+                        Err(problem) => {
+                            let message =
+                                format!("{problem} in {}", self.algorithm.snippet(instr.span));
+                            return self.fail(pc, message);
+                        }
+                    };
+                    self.record(pc, values[0], values[1], result);
                     self.set(dst, result);
                 }
                 Op::Assign { var, src } => {
                     let value = self.get(src);
-                    self.record(pc, 0, 0, value.code());
+                    let value = match (self.algorithm.register_type(var), value) {
+                        (Type::Float, Value::Integer(n)) => Value::Float(n as f32),
+                        _ => value,
+                    };
+                    self.record(pc, Value::Null, Value::Null, value);
                     if value == Value::Null {
                         self.note_null(pc, var, src);
                     }
@@ -489,7 +773,7 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                 } => {
                     let (l, r) = (self.get(left), self.get(right));
                     let result = compare(op, l, r);
-                    self.record(pc, l.code(), r.code(), u32::from(result));
+                    self.record(pc, l, r, Value::Boolean(result));
                     self.set(dst, Value::Boolean(result));
                 }
                 Op::Compute {
@@ -507,7 +791,7 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                             return self.fail(pc, message);
                         }
                     };
-                    self.record(pc, l.code(), r.code(), result.code());
+                    self.record(pc, l, r, result);
                     self.set(dst, result);
                 }
                 Op::Move { dst, src } => {
@@ -525,17 +809,26 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                         let message = self.cannot_act_message(word, element);
                         return self.fail(pc, message);
                     };
-                    self.record(pc, value.code(), 0, 0);
+                    self.record(pc, value, Value::Null, Value::Null);
                     if matches!(op, Op::Mark { .. }) {
                         self.recorder.mark(target);
                     } else {
                         self.recorder.highlight(target);
                     }
                 }
+                Op::Refuse { index } => {
+                    let (span, line) = self.location(pc);
+                    return Outcome::Error(RuntimeError {
+                        kind: RuntimeErrorKind::Refused,
+                        span,
+                        line,
+                        message: self.format_message(index),
+                    });
+                }
                 Op::Message { index } => {
                     let text = self.format_message(index);
                     let number = self.recorder.message(text);
-                    self.record(pc, number, 0, 0);
+                    self.record(pc, Value::Integer(number as i32), Value::Null, Value::Null);
                 }
                 Op::Jump { target } => {
                     if let Some(outcome) = self.jump(pc, target) {
@@ -554,7 +847,7 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
                     }
                 }
                 Op::Done => {
-                    self.record(pc, 0, 0, 0);
+                    self.record(pc, Value::Null, Value::Null, Value::Null);
                     return Outcome::Finished;
                 }
             }
@@ -698,6 +991,14 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
         "null has no lookups".to_owned()
     }
 
+    /// Why a write was refused; a null value says where the null came from.
+    fn write_refused(&self, error: String, value: Value, src: Reg) -> String {
+        if value == Value::Null && error.contains("cannot be empty") {
+            return format!("{error}: {}", self.explain_null(src));
+        }
+        error
+    }
+
     fn cannot_act_message(&self, word: &str, reg: Reg) -> String {
         format!("cannot {word} null: {}", self.explain_null(reg))
     }
@@ -705,34 +1006,49 @@ impl<'a, T: Topology + ?Sized, R: Recorder> Machine<'a, T, R> {
 
 #[inline]
 fn compare(op: CompareOp, left: Value, right: Value) -> bool {
+    if let (Value::Integer(l), Value::Integer(r)) = (left, right) {
+        return match op {
+            CompareOp::Eq => l == r,
+            CompareOp::NotEq => l != r,
+            CompareOp::Lt => l < r,
+            CompareOp::Le => l <= r,
+            CompareOp::Gt => l > r,
+            CompareOp::Ge => l >= r,
+        };
+    }
+    if let (Some(l), Some(r)) = (left.number(), right.number()) {
+        return match op {
+            CompareOp::Eq => l == r,
+            CompareOp::NotEq => l != r,
+            CompareOp::Lt => l < r,
+            CompareOp::Le => l <= r,
+            CompareOp::Gt => l > r,
+            CompareOp::Ge => l >= r,
+        };
+    }
     match op {
         CompareOp::Eq => left == right,
         CompareOp::NotEq => left != right,
-        _ => {
-            let (Value::Integer(l), Value::Integer(r)) = (left, right) else {
-                return false;
-            };
-            match op {
-                CompareOp::Lt => l < r,
-                CompareOp::Le => l <= r,
-                CompareOp::Gt => l > r,
-                _ => l >= r,
-            }
-        }
+        _ => false,
     }
 }
 
 fn compute(op: ComputeOp, left: Value, right: Value) -> Result<Value, String> {
-    if let (ComputeOp::Not, Value::Boolean(b)) = (op, left) {
-        return Ok(Value::Boolean(!b));
+    match (op, left, right) {
+        (ComputeOp::Not, Value::Boolean(b), _) => Ok(Value::Boolean(!b)),
+        (ComputeOp::Coordinate(axis), Value::Vector(v), _) => Ok(Value::Float(axis.of(v))),
+        (ComputeOp::Neg, Value::Vector(v), _) => Ok(Value::Vector(-v)),
+        (ComputeOp::Neg, Value::Float(x), _) => Ok(Value::Float(-x)),
+        (_, Value::Integer(l), Value::Integer(r)) if op != ComputeOp::Divide => integer(op, l, r),
+        (_, Value::Vector(_), _) | (_, _, Value::Vector(_)) => vector(op, left, right),
+        _ => match (left.number(), right.number()) {
+            (Some(l), Some(r)) => float(op, l, r),
+            _ => Err("not a number".to_owned()),
+        },
     }
-    let Value::Integer(l) = left else {
-        return Err("not a number".to_owned());
-    };
-    let r = match right {
-        Value::Integer(r) => r,
-        _ => 0,
-    };
+}
+
+fn integer(op: ComputeOp, l: i32, r: i32) -> Result<Value, String> {
     let result = match op {
         ComputeOp::Add => l.checked_add(r),
         ComputeOp::Sub => l.checked_sub(r),
@@ -743,7 +1059,7 @@ fn compute(op: ComputeOp, left: Value, right: Value) -> Result<Value, String> {
         ComputeOp::Div => l.checked_div(r),
         ComputeOp::Mod => l.checked_rem(r),
         ComputeOp::Neg => l.checked_neg(),
-        ComputeOp::Not => None,
+        _ => None,
     };
     result.map(Value::Integer).ok_or_else(|| {
         if op.is_unary() {
@@ -752,4 +1068,50 @@ fn compute(op: ComputeOp, left: Value, right: Value) -> Result<Value, String> {
             format!("integer overflow ({l} {} {r})", op.symbol())
         }
     })
+}
+
+fn float(op: ComputeOp, l: f32, r: f32) -> Result<Value, String> {
+    let result = match op {
+        ComputeOp::Add => l + r,
+        ComputeOp::Sub => l - r,
+        ComputeOp::Mul => l * r,
+        ComputeOp::Divide if r == 0.0 => {
+            return Err(format!("division by zero ({} / 0)", Value::Float(l)));
+        }
+        ComputeOp::Divide => l / r,
+        _ => return Err("not a Float operation".to_owned()),
+    };
+    if result.is_finite() {
+        Ok(Value::Float(result))
+    } else {
+        Err(format!(
+            "Float overflow ({} {} {})",
+            Value::Float(l),
+            op.symbol(),
+            Value::Float(r)
+        ))
+    }
+}
+
+fn vector(op: ComputeOp, left: Value, right: Value) -> Result<Value, String> {
+    let result = match (op, left, right) {
+        (ComputeOp::Add, Value::Vector(a), Value::Vector(b)) => a + b,
+        (ComputeOp::Sub, Value::Vector(a), Value::Vector(b)) => a - b,
+        (ComputeOp::Mul, Value::Vector(a), n) | (ComputeOp::Mul, n, Value::Vector(a)) => {
+            a * n.number().ok_or("a Vector is scaled by a number")?
+        }
+        (ComputeOp::Divide, Value::Vector(a), n) => {
+            let n = n.number().ok_or("a Vector is divided by a number")?;
+            if n == 0.0 {
+                return Err(format!("division by zero ({left} / 0)"));
+            }
+            a / n
+        }
+        _ => return Err("not a Vector operation".to_owned()),
+    };
+    if result.is_finite() {
+        Ok(Value::Vector(result))
+    } else {
+        Err(format!("Float overflow ({left} {} {right})", op.symbol()))
+    }
 }
