@@ -20,7 +20,10 @@ use crate::{
     samples::{self, SampleData},
     selection::Role,
     settings::Settings,
-    state::{AppState, Counts, DialogState, HighlightState, PendingState, TraceState},
+    state::{
+        AppState, BrokenState, Counts, DialogState, HighlightState, PendingState, StatsState,
+        TraceState,
+    },
     tables::{self, TablesResponse},
     theme::Theme,
     view3d::{DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, ViewOptions},
@@ -28,6 +31,7 @@ use crate::{
 
 pub mod algorithm_ui;
 pub mod course;
+mod edit_ui;
 pub mod embed;
 pub mod execute;
 pub mod files;
@@ -336,6 +340,12 @@ impl EdgewiseApp {
     }
 
     /// A snapshot of the observable state.
+    /// The active tab's mesh as it is shown (mid-edit during an editing
+    /// trace), or `None` before any mesh is open.
+    pub fn mesh(&self) -> Option<&Mesh> {
+        self.tab().document.as_ref().map(Document::mesh)
+    }
+
     pub fn state(&self) -> AppState {
         let doc = self.tab().document.as_ref();
         let counts = doc.map_or_else(Counts::default, |d| counts(d.mesh()));
@@ -361,6 +371,8 @@ impl EdgewiseApp {
                 })
                 .collect(),
             error: self.tab().error.clone(),
+            broken: self.tab().broken.iter().map(BrokenState::new).collect(),
+            stats: doc.map(|d| StatsState::new(d.mesh())),
             trace: self.trace_state(),
             pending: self.pending_state(),
             tabs: self.tab_states(),
@@ -396,32 +408,47 @@ impl EdgewiseApp {
         })
     }
 
-    /// The selection's paint, or the current trace step's.
+    /// The selection's paint, or the current trace step's, with broken
+    /// and deleted records marked.
     fn current_paint(&self) -> Paint {
-        if let Some(frame) = self.tab().run.current_frame(&self.theme) {
-            return frame.into_owned().paint;
+        let tab = self.tab();
+        let Some(document) = &tab.document else {
+            return Paint::default();
+        };
+        let mut paint = match tab.run.current_frame(&self.theme) {
+            Some(frame) => frame.into_owned().paint,
+            None => Paint::from_selection(document.highlights(), &self.theme),
+        };
+        if !tab.broken.is_empty() {
+            paint.add_broken(&tab.broken, &self.theme);
         }
-        match &self.tab().document {
-            Some(document) => Paint::from_selection(document.highlights(), &self.theme),
-            None => Paint::default(),
-        }
+        paint.add_deleted(
+            edgewise_core::mesh::Edit::deleted_rows(document.mesh()).iter(),
+            &self.theme,
+        );
+        paint
     }
 
     /// Re-derives colours and labels when the selection, the trace step or
     /// the theme changed.
     fn refresh_styles(&mut self) {
-        let theme = &self.theme;
-        let tab = &mut self.tabs[self.active_tab];
+        self.tab_mut().sync_edit();
+        let tab = &self.tabs[self.active_tab];
         let Some(document) = &tab.document else {
             return;
         };
-        let key = (document.generation(), tab.run.generation(), theme.key());
+        let key = (
+            document.generation(),
+            tab.run.generation(),
+            self.theme.key(),
+        );
         if tab.paint_key == Some(key) {
             return;
         }
-        let paint = match tab.run.frame(theme) {
-            Some(frame) => frame.paint.clone(),
-            None => Paint::from_selection(document.highlights(), theme),
+        let paint = self.current_paint();
+        let tab = &mut self.tabs[self.active_tab];
+        let Some(document) = &tab.document else {
+            return;
         };
         let styles = scene_styles(document.mesh(), &paint, tab.styles.generation + 1);
         tab.table_scroll = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]

@@ -82,6 +82,8 @@ pub enum Command {
     /// Saves the open mesh in a format: a download in the browser, a file
     /// natively.
     SaveAs(SaveFormat),
+    /// Puts back the mesh from before the last edit an algorithm made.
+    RestoreBeforeEdit,
 }
 
 /// What a command that succeeded has to say.

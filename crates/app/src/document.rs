@@ -143,6 +143,36 @@ impl Document {
         Ok((twin, correspondence))
     }
 
+    /// Moves the mesh through an editing trace's changes, from the state
+    /// after `from` of them to the state after `to`. The selection is kept
+    /// if its element still exists.
+    pub fn seek(
+        &mut self,
+        trace: &edgewise_core::lang::Trace,
+        from: usize,
+        to: usize,
+    ) -> Result<(), String> {
+        let result = trace
+            .seek(&mut self.mesh, from, to)
+            .map_err(|error| format!("the trace could not be replayed: {error}"));
+        self.mesh_id = next_mesh_id();
+        self.sample = None;
+        let selection = self.selection.filter(|&s| self.mesh.contains(s));
+        self.select(selection)?;
+        result
+    }
+
+    /// Replaces the mesh with one derived from it (an edit's result or what
+    /// it replaced), keeping the name.
+    pub fn replace_mesh(&mut self, mesh: Mesh) {
+        self.mesh = mesh;
+        self.mesh_id = next_mesh_id();
+        self.sample = None;
+        let selection = self.selection.filter(|&s| self.mesh.contains(s));
+        // The selection was just checked against the new mesh.
+        let _kept = self.select(selection);
+    }
+
     /// Identifies the mesh itself: it changes when the mesh is replaced or
     /// converted, not when the selection changes.
     pub fn mesh_id(&self) -> u64 {

@@ -10,7 +10,9 @@ use egui::Color32;
 use crate::{
     selection::{self, Highlight, Role},
     theme::Theme,
+    trace_role::TraceRole,
 };
+use edgewise_core::mesh::Issue;
 
 /// One coloured element and why, for the views and `state().highlights`.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,6 +37,11 @@ pub struct Paint {
     pub pointers: Vec<(ElementRef, Color32)>,
     /// Whether everything not painted fades into the background.
     pub fade_others: bool,
+    /// The old value of each cell the current step wrote, shown struck
+    /// through before the new one.
+    pub struck: HashMap<(ElementRef, Role), String>,
+    /// The rules each broken record breaks, one line each.
+    pub broken: HashMap<ElementRef, Vec<String>>,
 }
 
 impl Paint {
@@ -64,6 +71,49 @@ impl Paint {
             });
         }
         paint
+    }
+
+    /// Marks every record that breaks a rule: red in both views, its
+    /// offending cell tinted, and the rule kept for the tables' tooltip.
+    /// They rank below the current step's colours but above the rest.
+    pub fn add_broken(&mut self, issues: &[Issue], theme: &Theme) {
+        let colour = theme.trace_colour(TraceRole::Broken);
+        let mut marked = Vec::new();
+        for issue in issues {
+            let element = ElementRef::from(issue.element);
+            self.cells
+                .insert((element, Role::Column(issue.field)), colour);
+            let rules = self.broken.entry(element).or_default();
+            if rules.is_empty() {
+                marked.push(Painted {
+                    element,
+                    colour,
+                    role: TraceRole::Broken.key().to_owned(),
+                });
+            }
+            rules.push(format!("{}: {}", issue.field.key(), issue.message));
+        }
+        // After the current operation's entries, which come first.
+        let at = self
+            .painted
+            .iter()
+            .position(|p| p.role == TraceRole::Variable.key() || p.role == TraceRole::Output.key())
+            .unwrap_or(self.painted.len());
+        self.painted.splice(at..at, marked);
+        self.fade_others = true;
+    }
+
+    /// Greys out deleted rows; they stay in the tables as gaps.
+    pub fn add_deleted(&mut self, deleted: impl IntoIterator<Item = ElementRef>, theme: &Theme) {
+        let colour = theme.trace_colour(TraceRole::Deleted);
+        for element in deleted {
+            self.painted.push(Painted {
+                element,
+                colour,
+                role: TraceRole::Deleted.key().to_owned(),
+            });
+            self.labels.insert(element, "deleted".to_owned());
+        }
     }
 
     /// The colour of `element`, if it is painted.

@@ -51,6 +51,11 @@ pub const SAMPLES: &[Sample] = &[
         include_bytes!("../../../meshes/double-torus.obj"),
     ),
     Sample::file(
+        "hexagon",
+        "hexagon.obj",
+        include_bytes!("../../../meshes/hexagon.obj"),
+    ),
+    Sample::file(
         "icosahedron",
         "icosahedron.ply",
         include_bytes!("../../../meshes/icosahedron.ply"),

@@ -7,6 +7,7 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use edgewise_core::lang::Algorithm;
+use edgewise_core::mesh::{Issue, Mesh};
 use serde::Serialize;
 
 use crate::{algorithm::TraceFrame, code_editor::Diagnostic};
@@ -31,6 +32,11 @@ pub struct AppState {
     pub highlights: Vec<HighlightState>,
     /// The message of the last failed load or command, or null.
     pub error: Option<String>,
+    /// Every record that breaks a rule of the structure at the editing
+    /// trace's current step (empty otherwise).
+    pub broken: Vec<BrokenState>,
+    /// V, E, F and the invariants of the mesh as it is now, or null.
+    pub stats: Option<StatsState>,
     /// The trace being stepped through, or null.
     pub trace: Option<TraceState>,
     /// An algorithm waiting for its inputs, or null.
@@ -49,6 +55,61 @@ pub struct AppState {
     pub diagnostics: Vec<Diagnostic>,
     /// The dialog waiting for an answer, or null.
     pub dialog: Option<DialogState>,
+}
+
+/// A broken record: the row, the column (as the language names it) and
+/// the rule, in one sentence.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct BrokenState {
+    pub kind: ElementKind,
+    pub id: u32,
+    pub column: &'static str,
+    pub rule: String,
+}
+
+impl BrokenState {
+    pub fn new(issue: &Issue) -> Self {
+        let element = ElementRef::from(issue.element);
+        Self {
+            kind: element.kind,
+            id: element.id,
+            column: issue
+                .field
+                .language_name()
+                .unwrap_or(issue.field.record_name()),
+            rule: issue.message.clone(),
+        }
+    }
+}
+
+/// Counts and invariants, without deleted rows.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct StatsState {
+    pub vertices: usize,
+    pub edges: usize,
+    pub faces: usize,
+    /// V − E + F.
+    pub euler: i64,
+    /// Each component's genus, or null where it has a boundary.
+    pub genus: Vec<Option<u64>>,
+    #[serde(rename = "boundaryLoops")]
+    pub boundary_loops: usize,
+    pub components: usize,
+}
+
+impl StatsState {
+    pub fn new(mesh: &Mesh) -> Self {
+        let stats = mesh.live_stats();
+        Self {
+            vertices: stats.vertices,
+            edges: stats.edges,
+            faces: stats.faces,
+            euler: stats.euler_characteristic,
+            genus: stats.components.iter().map(|c| c.genus).collect(),
+            boundary_loops: stats.boundary_loops,
+            components: stats.components.len(),
+        }
+    }
 }
 
 /// One tab.

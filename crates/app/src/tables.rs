@@ -107,12 +107,19 @@ pub fn table_ui(
                         let dim = derived.get(i).copied().unwrap_or_default();
                         match cell {
                             Cell::Id(element) => {
-                                let label = ui
-                                    .selectable_label(
-                                        selected_row,
-                                        RichText::new(element.id.to_string()).monospace(),
-                                    )
-                                    .on_hover_text(format!("select {element}"));
+                                let rules = paint.broken.get(&element);
+                                let mut id = RichText::new(element.id.to_string()).monospace();
+                                if rules.is_some() {
+                                    id = id.color(ui.visuals().error_fg_color).strong();
+                                }
+                                let hover = match rules {
+                                    Some(rules) => {
+                                        format!("{element} breaks a rule:\n{}", rules.join("\n"))
+                                    }
+                                    None => format!("select {element}"),
+                                };
+                                let label =
+                                    ui.selectable_label(selected_row, id).on_hover_text(hover);
                                 if label.clicked() {
                                     clicked_link = Some(element);
                                 }
@@ -124,8 +131,22 @@ pub fn table_ui(
                                 }
                                 ui.label(text);
                             }
-                            Cell::Link(None, _) => {
-                                ui.label(RichText::new(NONE).monospace().weak());
+                            Cell::Link(target, column)
+                                if paint.struck.contains_key(&(element, Role::Column(column))) =>
+                            {
+                                let cell = (element, Role::Column(column));
+                                let old = paint.struck.get(&cell).cloned().unwrap_or_default();
+                                let tint = paint.cells.get(&cell).copied();
+                                written_cell_ui(ui, &old, target, tint);
+                            }
+                            Cell::Link(None, column) => {
+                                let text = RichText::new(NONE).monospace();
+                                match paint.cells.get(&(element, Role::Column(column))) {
+                                    Some(tint) => ui.label(
+                                        text.background_color(tint.gamma_multiply(0.55)).strong(),
+                                    ),
+                                    None => ui.label(text.weak()),
+                                };
                             }
                             Cell::Link(Some(target), column) => {
                                 let mut text = RichText::new(target.id.to_string()).monospace();
@@ -169,6 +190,10 @@ pub fn table_ui(
 /// labels.
 fn row_cells(mesh: &Mesh, element: ElementRef) -> Vec<Cell> {
     if !mesh.contains(element) {
+        if (element.id as usize) < mesh.count(element.kind) {
+            // A deleted row keeps its number until the ids are compacted.
+            return vec![Cell::Id(element), Cell::Text("deleted".to_owned())];
+        }
         return Vec::new();
     }
     let mut cells = vec![Cell::Id(element)];
@@ -183,6 +208,25 @@ fn row_cells(mesh: &Mesh, element: ElementRef) -> Vec<Cell> {
     }
     cells.push(Cell::Text(String::new()));
     cells
+}
+
+/// A cell the current step wrote: the old value struck through, then the
+/// new one, on the write colour.
+fn written_cell_ui(
+    ui: &mut egui::Ui,
+    old: &str,
+    new: Option<ElementRef>,
+    tint: Option<egui::Color32>,
+) {
+    let new = new.map_or_else(|| NONE.to_owned(), |target| target.id.to_string());
+    ui.spacing_mut().item_spacing.x = 3.0;
+    ui.label(RichText::new(old).monospace().strikethrough().weak());
+    let mut text = RichText::new(new.clone()).monospace().strong();
+    if let Some(tint) = tint {
+        text = text.background_color(tint.gamma_multiply(0.55));
+    }
+    ui.label(text)
+        .on_hover_text(format!("was {old}, now {new}"));
 }
 
 fn coordinate(value: f32) -> Cell {

@@ -15,15 +15,27 @@ pub enum TraceRole {
     Variable,
     /// Light blue: a side of the current comparison.
     Compared,
+    /// Orange: the record (and the reference) the current step writes.
+    Written,
+    /// Teal: the element the current step creates.
+    Created,
+    /// Gray: a deleted row, kept as a gap until the ids are compacted.
+    Deleted,
+    /// Red: a record that breaks one of the structure's rules.
+    Broken,
 }
 
 impl TraceRole {
-    pub const ALL: [TraceRole; 5] = [
+    pub const ALL: [TraceRole; 9] = [
         TraceRole::Output,
         TraceRole::Lookup,
         TraceRole::Highlighted,
         TraceRole::Variable,
         TraceRole::Compared,
+        TraceRole::Written,
+        TraceRole::Created,
+        TraceRole::Deleted,
+        TraceRole::Broken,
     ];
 
     /// The name in `state().highlights` and in the colour settings.
@@ -34,6 +46,10 @@ impl TraceRole {
             TraceRole::Highlighted => "highlighted",
             TraceRole::Variable => "variable",
             TraceRole::Compared => "compared",
+            TraceRole::Written => "written",
+            TraceRole::Created => "created",
+            TraceRole::Deleted => "deleted",
+            TraceRole::Broken => "broken",
         }
     }
 
@@ -50,6 +66,10 @@ impl TraceRole {
             TraceRole::Highlighted => "highlighted",
             TraceRole::Variable => "a variable refers to it",
             TraceRole::Compared => "in a comparison",
+            TraceRole::Written => "a record written (old value struck through)",
+            TraceRole::Created => "just created",
+            TraceRole::Deleted => "deleted (a gap until compacted)",
+            TraceRole::Broken => "breaks a rule of the structure",
         }
     }
 }

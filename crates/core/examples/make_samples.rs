@@ -124,6 +124,12 @@ fn samples() -> Vec<Sample> {
             &generate::grid(4, 4),
         ),
         sample(
+            "hexagon.obj",
+            "Six triangles around a centre vertex: the half-edge explainer's example, \
+             where its edge flip happens.",
+            &generate::hexagon(),
+        ),
+        sample(
             "open-square.wtb",
             "Two triangles making a square, with the boundary as -.",
             &generate::open_square(),

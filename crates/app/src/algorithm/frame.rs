@@ -75,6 +75,15 @@ pub fn value_text(value: Value) -> String {
     }
 }
 
+/// A value as a table cell shows it: an id, `∅` for none, or coordinates.
+fn cell_text(value: Value) -> String {
+    match value {
+        Value::Null => "∅".to_owned(),
+        Value::Vertex(i) | Value::Edge(i) | Value::Face(i) => i.to_string(),
+        other => other.to_string(),
+    }
+}
+
 /// Builds the frame of step `step` (clamped to the trace's length).
 pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     let algorithm = trace.algorithm();
@@ -134,6 +143,34 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
                 }
                 if let Some(result) = result.element() {
                     push(&mut paint, result, TraceRole::Lookup);
+                }
+            }
+            StepKind::Write {
+                element,
+                field,
+                old,
+                new,
+            } => {
+                if let Some(element) = element.element() {
+                    push(&mut paint, element, TraceRole::Written);
+                    let cell = (element, Role::Column(field));
+                    paint
+                        .cells
+                        .insert(cell, theme.trace_colour(TraceRole::Written));
+                    paint.struck.insert(cell, cell_text(old));
+                }
+                if let Some(target) = new.element() {
+                    push(&mut paint, target, TraceRole::Written);
+                }
+            }
+            StepKind::New { element } => {
+                if let Some(element) = element.element() {
+                    push(&mut paint, element, TraceRole::Created);
+                }
+            }
+            StepKind::Delete { element } => {
+                if let Some(element) = element.element() {
+                    push(&mut paint, element, TraceRole::Deleted);
                 }
             }
             StepKind::Compare { left, right, .. } => {

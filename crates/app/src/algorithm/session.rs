@@ -88,16 +88,22 @@ impl PendingRun {
     }
 
     /// Records the whole run on `mesh`. Input errors (a wrong structure, an
-    /// id the mesh lacks) come back as messages.
+    /// id the mesh lacks) come back as messages. An algorithm that changes
+    /// the mesh runs on a copy; the trace's changes then move the shown mesh
+    /// step by step ([`TraceSession::changes_wanted`]).
     pub fn start(&self, mesh: &Mesh) -> Result<TraceSession, String> {
         let inputs: Vec<(&str, Value)> = self
             .inputs
             .iter()
             .map(|(name, value)| (name.as_str(), *value))
             .collect();
-        let trace = lang::run(&self.algorithm, mesh, &inputs, RunOptions::default())
-            .map_err(|err| err.to_string())?;
-        Ok(TraceSession::new(trace))
+        let trace = if self.algorithm.edits() {
+            let mut copy = mesh.clone();
+            lang::run_editing(&self.algorithm, &mut copy, &inputs, RunOptions::default())
+        } else {
+            lang::run(&self.algorithm, mesh, &inputs, RunOptions::default())
+        };
+        Ok(TraceSession::new(trace.map_err(|err| err.to_string())?))
     }
 }
 
@@ -124,6 +130,16 @@ impl TraceSession {
 
     pub fn step(&self) -> usize {
         self.step
+    }
+
+    /// Whether the algorithm changes the mesh.
+    pub fn edits(&self) -> bool {
+        self.trace.algorithm().edits()
+    }
+
+    /// How many of the trace's changes the mesh shows at the current step.
+    pub fn changes_wanted(&self) -> usize {
+        self.trace.changes_through(self.step.checked_sub(1))
     }
 
     /// The number of operations; the last step number.

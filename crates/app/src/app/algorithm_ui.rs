@@ -267,6 +267,8 @@ impl EdgewiseApp {
         ui.separator();
         match self.algorithm_tab {
             AlgorithmTab::Run => {
+                self.mesh_status_ui(ui);
+                ui.separator();
                 let tab = &mut self.tabs[self.active_tab];
                 let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
                 if let Some(command) = self

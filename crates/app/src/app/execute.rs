@@ -13,7 +13,14 @@ impl EdgewiseApp {
     /// Carries out `command` on the active tab and asks for a frame to show
     /// it. A refusal is recorded as the tab's error, then returned.
     pub fn execute(&mut self, command: Command) -> Result<Reply, CommandError> {
+        if matches!(
+            command,
+            Command::Abort | Command::RunAlgorithm { .. } | Command::Start
+        ) {
+            self.tab_mut().finish_edit();
+        }
         let result = self.dispatch(command);
+        self.tab_mut().sync_edit();
         if let Err(error) = &result {
             self.report(error.to_string());
         }
@@ -70,6 +77,7 @@ impl EdgewiseApp {
             Command::CloseTab(index) => done(self.remove_tab(index)),
             Command::SetSideBySide(on) => done(self.show_twin(on)),
             Command::SaveAs(format) => done(self.save_as(format)),
+            Command::RestoreBeforeEdit => done(self.tab_mut().restore_before_edit()),
         }
     }
 
@@ -175,6 +183,11 @@ impl EdgewiseApp {
     /// Shorthand for [`Command::Abort`].
     pub fn abort_algorithm(&mut self) -> Result<(), CommandError> {
         self.execute(Command::Abort).map(drop)
+    }
+
+    /// Shorthand for [`Command::RestoreBeforeEdit`].
+    pub fn restore_before_edit(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::RestoreBeforeEdit).map(drop)
     }
 
     /// Shorthand for [`Command::NewTab`]; returns the new tab's index.

@@ -2,7 +2,7 @@
 //! belongs to one mesh; the app draws and commands the active one, so a tab
 //! switch only changes which one that is.
 
-use edgewise_core::mesh::Structure;
+use edgewise_core::mesh::{Issue, Mesh, MeshStats, Structure};
 use edgewise_core::schema::{ElementKind, ElementRef};
 
 use super::{EdgewiseApp, twin::Twin};
@@ -13,7 +13,7 @@ use crate::{
     obj_editor::ObjEditor,
     paint::Paint,
     state::TabState,
-    view3d::{SceneStyles, View3d},
+    view3d::{MeshGeometry, SceneStyles, View3d},
 };
 
 /// One open mesh and everything shown for it: its document, 3D view and
@@ -40,6 +40,15 @@ pub(crate) struct Tab {
     pub(crate) twin: Option<Twin>,
     /// The element under the pointer in the 3D view, for the message line.
     pub(crate) hovered: Option<ElementRef>,
+    /// How many of an editing trace's changes the document's mesh shows.
+    pub(crate) edit_applied: usize,
+    /// The mesh before the last edit that was kept, and what made it: the
+    /// previous mesh stays one click away.
+    pub(crate) before_edit: Option<(String, Mesh)>,
+    /// Every rule the mesh breaks at the editing trace's current step.
+    pub(crate) broken: Vec<Issue>,
+    /// The statistics of the mesh with this mesh id.
+    stats: Option<(u64, MeshStats)>,
 }
 
 impl Tab {
@@ -61,7 +70,97 @@ impl Tab {
             error: None,
             twin: None,
             hovered: None,
+            edit_applied: 0,
+            before_edit: None,
+            broken: Vec::new(),
+            stats: None,
         }
+    }
+
+    /// V, E, F, genus, boundary loops and components of the shown mesh,
+    /// worked out once per mesh (an edit's every step is a new mesh id).
+    /// Deleted rows do not count.
+    pub(crate) fn stats(&mut self) -> Option<&MeshStats> {
+        let document = self.document.as_ref()?;
+        let id = document.mesh_id();
+        if self.stats.as_ref().is_none_or(|(cached, _)| *cached != id) {
+            self.stats = Some((id, document.mesh().live_stats()));
+        }
+        self.stats.as_ref().map(|(_, stats)| stats)
+    }
+
+    /// Keeps the document's mesh at the editing trace's current step: the
+    /// changes up to it applied, the later ones not.
+    pub(crate) fn sync_edit(&mut self) {
+        let (Some(document), Some(session)) = (&mut self.document, self.run.session()) else {
+            self.edit_applied = 0;
+            self.broken.clear();
+            return;
+        };
+        if !session.edits() {
+            self.edit_applied = 0;
+            self.broken.clear();
+            return;
+        }
+        let wanted = session.changes_wanted();
+        if wanted == self.edit_applied {
+            return;
+        }
+        if let Err(error) = document.seek(&session.trace, self.edit_applied, wanted) {
+            self.error = Some(error);
+        }
+        self.edit_applied = wanted;
+        self.broken = document.mesh().validate();
+        self.view
+            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        self.paint_key = None;
+    }
+
+    /// Ends an editing run: a run that finished and left a sound mesh keeps
+    /// its result (the mesh before it stays in [`Self::before_edit`]); any
+    /// other goes back to the mesh it started from.
+    pub(crate) fn finish_edit(&mut self) {
+        self.sync_edit();
+        let (Some(document), Some(session)) = (&mut self.document, self.run.session()) else {
+            return;
+        };
+        if !session.edits() || self.edit_applied == 0 {
+            self.edit_applied = 0;
+            return;
+        }
+        let trace = &session.trace;
+        let finished = session.at_end() && trace.outcome().error().is_none();
+        let mut before = document.mesh().clone();
+        let restored = trace.seek(&mut before, self.edit_applied, 0);
+        if finished && document.mesh().validate().is_empty() {
+            if restored.is_ok() {
+                self.before_edit = Some((trace.algorithm().name.clone(), before));
+            }
+        } else if restored.is_ok() {
+            document.replace_mesh(before);
+            self.view
+                .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        }
+        self.edit_applied = 0;
+        self.broken.clear();
+        self.paint_key = None;
+    }
+
+    /// Puts back the mesh from before the last kept edit.
+    pub(crate) fn restore_before_edit(&mut self) -> Result<(), CommandError> {
+        let (name, mesh) = self
+            .before_edit
+            .take()
+            .ok_or("no edit to take back: no algorithm has changed this mesh")?;
+        let document = self.document.as_mut().ok_or("no mesh is open")?;
+        self.run.mesh_changed();
+        document.replace_mesh(mesh);
+        self.view
+            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        self.paint_key = None;
+        self.error = None;
+        log::info!("restored the mesh from before {name}");
+        Ok(())
     }
 }
 
@@ -70,7 +169,7 @@ impl Tab {
     /// mesh is open.
     pub(crate) fn with_mesh(
         &mut self,
-        f: impl FnOnce(&mut AlgorithmRun, &edgewise_core::mesh::Mesh) -> Result<(), String>,
+        f: impl FnOnce(&mut AlgorithmRun, &Mesh) -> Result<(), String>,
     ) -> Result<(), CommandError> {
         let mesh = self.document.as_ref().map(Document::mesh);
         let mesh = mesh.ok_or("no mesh is open")?;

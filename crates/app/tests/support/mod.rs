@@ -18,6 +18,9 @@ use edgewise_core::{
 };
 use egui_kittest::{Harness, kittest::Queryable as _};
 
+/// The app under test.
+pub type AppHarness = Harness<'static, EdgewiseApp>;
+
 /// The app headless (no 3D rendering), in a window `width` by `height`.
 pub fn harness_sized(width: f32, height: f32) -> Harness<'static, EdgewiseApp> {
     Harness::builder()

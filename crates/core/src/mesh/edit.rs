@@ -519,6 +519,19 @@ impl Edit for Mesh {
     }
 }
 
+impl Mesh {
+    /// [`Mesh::stats`] of the rows that are not deleted: the counts a
+    /// student expects mid-edit, before the ids are compacted.
+    pub fn live_stats(&self) -> super::stats::MeshStats {
+        if self.deleted_rows().is_empty() {
+            return self.stats();
+        }
+        let mut live = self.clone();
+        live.compact();
+        live.stats()
+    }
+}
+
 /// Applies primitive changes to a mesh and journals them.
 ///
 /// `new Edge` in a half-edge mesh makes two rows whose pair edges name each

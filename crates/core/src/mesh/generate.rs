@@ -255,6 +255,34 @@ pub fn open_square() -> Polygons {
 /// assert_eq!((grid.vertex_count(), grid.face_count()), (12, 6));
 /// assert_eq!(grid.face(0), Some(&[0, 1, 5, 4][..]));
 /// ```
+/// The half-edge explainer's example mesh: six triangles around a centre
+/// vertex (3) in the plane, an open hexagon; where its edge-flip
+/// walkthrough happens.
+pub fn hexagon() -> Polygons {
+    let positions = [
+        [1.0, 4.0],
+        [3.0, 4.0],
+        [0.0, 2.0],
+        [2.0, 2.0],
+        [4.0, 2.0],
+        [1.0, 0.0],
+        [3.0, 0.0],
+    ]
+    .map(|[x, y]| Vec3::new(x, y, 0.0))
+    .to_vec();
+    Polygons::from_triangles(
+        positions,
+        &[
+            [0, 2, 3],
+            [0, 3, 1],
+            [1, 3, 4],
+            [2, 5, 3],
+            [3, 5, 6],
+            [3, 6, 4],
+        ],
+    )
+}
+
 pub fn grid(nx: u32, ny: u32) -> Polygons {
     let (columns, rows) = (u64::from(nx) + 1, u64::from(ny) + 1);
     if columns * rows > TORUS_MAX_VERTICES {

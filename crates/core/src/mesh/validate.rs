@@ -37,6 +37,17 @@ impl fmt::Display for Element {
     }
 }
 
+impl From<Element> for ElementRef {
+    fn from(element: Element) -> Self {
+        match element {
+            Element::Vertex(id) => id.into(),
+            Element::Edge(id) => id.into(),
+            Element::HalfEdge(id) => id.into(),
+            Element::Face(id) => id.into(),
+        }
+    }
+}
+
 /// One violated rule.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Issue {

@@ -1,0 +1,125 @@
+//! Editing algorithms traced in the app: the shown mesh follows the trace
+//! step by step, every broken record is reported while the edit is half
+//! done, a finished sound edit is kept with the previous mesh one click
+//! away, and an edit abandoned half way is taken back.
+
+mod support;
+
+use edgewise_app::Argument;
+use edgewise_core::mesh::{HalfEdgeId, Mesh, Structure, VertexId};
+
+fn end_vertex(harness: &support::AppHarness, h: u32) -> Option<VertexId> {
+    let app = harness.state();
+    match app.mesh() {
+        Some(Mesh::Half(mesh)) => mesh.half_edge(HalfEdgeId::new(h)).map(|h| h.end_vertex),
+        _ => None,
+    }
+}
+
+fn start_flip(harness: &mut support::AppHarness) {
+    harness
+        .state_mut()
+        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(2.0))])
+        .expect("the flip starts");
+    harness.run();
+}
+
+#[test]
+fn a_traced_flip_breaks_the_records_then_mends_them() {
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    let before = harness.state().mesh().cloned().expect("a mesh");
+    start_flip(&mut harness);
+    // Up to the first write, the tables are sound.
+    let mut writes = 0;
+    loop {
+        harness.state_mut().trace_step(1).expect("steps");
+        harness.run();
+        let state = harness.state().state();
+        let trace = state.trace.expect("tracing");
+        if trace.operation == "write" {
+            writes += 1;
+            if writes == 1 {
+                assert!(!state.broken.is_empty(), "the first write breaks a record");
+                assert!(
+                    state
+                        .broken
+                        .iter()
+                        .any(|b| b.kind == edgewise_core::schema::ElementKind::Edge && b.id == 2),
+                    "{:#?}",
+                    state.broken
+                );
+                assert!(state.broken.iter().all(|b| !b.rule.is_empty()));
+                assert!(
+                    state.highlights.iter().any(|h| h.role == "broken"),
+                    "broken records are painted"
+                );
+                assert_eq!(end_vertex(&harness, 2), Some(VertexId::new(2)));
+            }
+        } else if writes == 0 {
+            assert!(state.broken.is_empty(), "{:#?}", state.broken);
+        }
+        if trace.done || trace.error.is_some() {
+            assert!(trace.error.is_none(), "{:?}", trace.error);
+            break;
+        }
+    }
+    assert!(writes >= 12, "only {writes} writes");
+    let state = harness.state().state();
+    assert!(state.broken.is_empty(), "{:#?}", state.broken);
+    let stats = state.stats.expect("stats");
+    assert_eq!((stats.vertices, stats.edges, stats.faces), (7, 12, 6));
+    assert_eq!(stats.boundary_loops, 1);
+    // Stepping back to the start shows the original tables again.
+    harness.state_mut().trace_goto(0).expect("goto");
+    harness.run();
+    assert_eq!(harness.state().mesh(), Some(&before));
+    harness.state_mut().trace_goto(usize::MAX).expect("goto");
+    harness.run();
+    let after = harness.state().mesh().cloned().expect("a mesh");
+    assert_ne!(after, before);
+    // A finished, sound edit is kept; the previous mesh is one click away.
+    harness.state_mut().abort_algorithm().expect("abort");
+    harness.run();
+    assert_eq!(harness.state().mesh(), Some(&after));
+    harness.state_mut().restore_before_edit().expect("restore");
+    harness.run();
+    assert_eq!(harness.state().mesh(), Some(&before));
+    assert!(harness.state_mut().restore_before_edit().is_err());
+}
+
+#[test]
+fn an_edit_abandoned_half_way_is_taken_back() {
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    let before = harness.state().mesh().cloned().expect("a mesh");
+    start_flip(&mut harness);
+    harness.state_mut().trace_goto(70).expect("goto");
+    harness.run();
+    assert_ne!(harness.state().mesh(), Some(&before));
+    assert!(!harness.state().state().broken.is_empty());
+    harness.state_mut().abort_algorithm().expect("abort");
+    harness.run();
+    assert_eq!(harness.state().mesh(), Some(&before));
+    let state = harness.state().state();
+    assert!(state.broken.is_empty());
+    assert!(harness.state_mut().restore_before_edit().is_err());
+}
+
+#[test]
+fn a_refused_edit_changes_nothing_and_says_why() {
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    let before = harness.state().mesh().cloned().expect("a mesh");
+    // Half-edge 0 runs along the boundary: its pair has no face.
+    harness
+        .state_mut()
+        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(0.0))])
+        .expect("starts");
+    harness.state_mut().trace_goto(usize::MAX).expect("goto");
+    harness.run();
+    let state = harness.state().state();
+    let error = state.trace.and_then(|t| t.error).expect("refused");
+    assert!(
+        error.contains("is on the boundary; a flip needs two faces"),
+        "{error}"
+    );
+    assert_eq!(harness.state().mesh(), Some(&before));
+}
