@@ -1,0 +1,551 @@
+//! The local operations on both structures: every operation on every
+//! sample and every element where it applies, checked against the
+//! validator and its count formula; each refusal's message; the Euler
+//! operators undoing each other; journals reverting; and random sequences of
+//! operations (proptest).
+
+mod golden;
+
+use std::path::PathBuf;
+
+use edgewise_core::formats;
+use edgewise_core::mesh::operations::{self, Operation, Refusal};
+use edgewise_core::mesh::{
+    EdgeId, Edit, FaceId, HalfEdgeId, Mesh, MeshStats, Navigation, Polygons, Structure, VertexId,
+    WingedEdgeMesh, generate,
+};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// A sample in both structures: the same vertex and face numbers, and
+/// each winged edge's first half-edge (the one running from its start to
+/// its end, as the winged edge's left side does).
+struct Sample {
+    name: String,
+    winged: Mesh,
+    half: Mesh,
+    first_halves: Vec<u32>,
+}
+
+impl Sample {
+    fn new(name: &str, winged: WingedEdgeMesh) -> Self {
+        let (half, correspondence) = winged
+            .to_half_edge_with_correspondence()
+            .expect("a sample converts");
+        let first_halves = (0..winged.edge_count() as u32)
+            .map(|e| {
+                correspondence
+                    .half_edges(EdgeId::new(e))
+                    .expect("every edge has half-edges")
+                    .0
+                    .raw()
+            })
+            .collect();
+        Self {
+            name: name.to_owned(),
+            winged: Mesh::Winged(winged),
+            half: Mesh::Half(half),
+            first_halves,
+        }
+    }
+
+    /// The half-edge mesh's ids for the winged-edge mesh's `ids`.
+    fn half_ids(&self, op: Operation, ids: &[u32]) -> Vec<u32> {
+        ids.iter()
+            .zip(op.arguments())
+            .map(|(&id, argument)| match argument.kind {
+                ElementKind::Edge => self.first_halves[id as usize],
+                _ => id,
+            })
+            .collect()
+    }
+}
+
+/// The generated fixtures and the small sample files.
+fn samples() -> Vec<Sample> {
+    let mut list = Vec::new();
+    let generated: [(&str, Polygons); 8] = [
+        ("tetrahedron", generate::tetrahedron()),
+        ("unit-tetrahedron", generate::unit_tetrahedron()),
+        ("regular-tetrahedron", generate::regular_tetrahedron()),
+        ("cube", generate::cube()),
+        ("cube-zyx", generate::cube_zyx()),
+        ("open-square", generate::open_square()),
+        ("grid-3x2", generate::grid(3, 2)),
+        ("torus-4x3", generate::torus(4, 3)),
+    ];
+    for (name, polygons) in generated {
+        let (mesh, _) = WingedEdgeMesh::build(&polygons).expect("a fixture builds");
+        list.push(Sample::new(name, mesh));
+    }
+    list.push(Sample::new("table-2", generate::table_2()));
+    let mut files: Vec<String> = std::fs::read_dir(root().join("meshes"))
+        .expect("meshes/")
+        .map(|entry| {
+            entry
+                .expect("entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .filter(|name| !name.ends_with(".md") && !name.starts_with("icosphere-20k"))
+        .collect();
+    files.sort();
+    for name in files {
+        let bytes = std::fs::read(root().join("meshes").join(&name)).expect("sample");
+        let loaded = formats::load(&bytes, &name, Structure::WingedEdge).expect("a sample loads");
+        let Mesh::Winged(mesh) = loaded.mesh else {
+            panic!("{name} did not load as winged-edge");
+        };
+        list.push(Sample::new(&name, mesh));
+    }
+    list
+}
+
+fn edge_rows(mesh: &Mesh) -> u32 {
+    mesh.count(ElementKind::Edge) as u32
+}
+
+/// The faces beside an edge row (the first half's, then the second's),
+/// each with its number of edges.
+fn sides(mesh: &Mesh, edge: u32) -> [Option<(FaceId, usize)>; 2] {
+    match mesh {
+        Mesh::Winged(m) => {
+            let edge = m.edges()[edge as usize];
+            [edge.left_face, edge.right_face].map(|f| f.map(|f| (f, m.around_face(f).count())))
+        }
+        Mesh::Half(m) => {
+            let h = m.half_edges()[edge as usize];
+            let pair = m.half_edges()[h.pair_edge.index()];
+            [h.face, pair.face].map(|f| f.map(|f| (f, m.around_face(f).count())))
+        }
+    }
+}
+
+fn triangles_beside(mesh: &Mesh, edge: u32) -> i64 {
+    sides(mesh, edge)
+        .iter()
+        .filter(|side| side.is_some_and(|(_, n)| n == 3))
+        .count() as i64
+}
+
+fn valence(mesh: &Mesh, v: VertexId) -> i64 {
+    match mesh {
+        Mesh::Winged(m) => m.around_vertex(v).count() as i64,
+        Mesh::Half(m) => m.around_vertex(v).count() as i64,
+    }
+}
+
+fn face_vertices(mesh: &Mesh, f: FaceId) -> Vec<u32> {
+    match mesh {
+        Mesh::Winged(m) => m.face_vertices(f).map(VertexId::raw).collect(),
+        Mesh::Half(m) => m.face_vertices(f).map(VertexId::raw).collect(),
+    }
+}
+
+/// The edge rows at a vertex, in turn around it.
+fn edges_at(mesh: &Mesh, v: VertexId) -> Vec<u32> {
+    match mesh {
+        Mesh::Winged(m) => m.around_vertex(v).map(EdgeId::raw).collect(),
+        Mesh::Half(m) => m.around_vertex(v).map(HalfEdgeId::raw).collect(),
+    }
+}
+
+/// Vertices on a boundary loop, each once.
+fn boundary_vertices(mesh: &Mesh) -> Vec<u32> {
+    let mut found = Vec::new();
+    for v in 0..mesh.vertex_count() as u32 {
+        let on = match mesh {
+            Mesh::Winged(m) => m.around_vertex(VertexId::new(v)).any(|e| {
+                m.edges()[e.index()].left_face.is_none()
+                    || m.edges()[e.index()].right_face.is_none()
+            }),
+            Mesh::Half(m) => m
+                .around_vertex(VertexId::new(v))
+                .any(|h| m.half_edges()[h.index()].face.is_none()),
+        };
+        if on {
+            found.push(v);
+        }
+    }
+    found
+}
+
+/// V, E, F and boundary loops.
+fn counts(stats: &MeshStats) -> [i64; 4] {
+    [
+        stats.vertices as i64,
+        stats.edges as i64,
+        stats.faces as i64,
+        stats.boundary_loops as i64,
+    ]
+}
+
+/// The change an operation must make to the counts, from the mesh before.
+fn expected_delta(mesh: &Mesh, op: Operation, ids: &[u32]) -> [i64; 4] {
+    if let Some(delta) = op.delta() {
+        return [
+            delta.vertices,
+            delta.edges,
+            delta.faces,
+            delta.boundary_loops,
+        ];
+    }
+    match op {
+        Operation::SplitEdge => {
+            let k = triangles_beside(mesh, ids[0]);
+            [1, 1 + k, k, 0]
+        }
+        Operation::CollapseEdge => {
+            let k = triangles_beside(mesh, ids[0]);
+            [-1, -1 - k, -k, 0]
+        }
+        Operation::RemoveVertex => {
+            let k = valence(mesh, VertexId::new(ids[0]));
+            [-1, -k, 1 - k, 0]
+        }
+        _ => unreachable!("{op} has a fixed delta"),
+    }
+}
+
+/// Every component with faces keeps V − E + F = 2 − 2g − b with g ≥ 0.
+fn assert_euler(stats: &MeshStats, context: &str) {
+    for c in &stats.components {
+        let twice_genus = 2 - c.euler_characteristic - c.boundary_loops as i64;
+        assert!(
+            c.faces == 0 || (twice_genus >= 0 && twice_genus % 2 == 0),
+            "{context}: component from {} has χ {} and {} boundary loops",
+            c.first_vertex,
+            c.euler_characteristic,
+            c.boundary_loops
+        );
+    }
+}
+
+/// Applies `op` to a copy of `mesh`. Accepted: the result validates before
+/// and after compacting, the counts change by the formula, the Euler
+/// relation holds, and reverting the journal restores `mesh` exactly.
+/// Refused: the copy is untouched. Returns the compacted result.
+fn check(name: &str, mesh: &Mesh, op: Operation, ids: &[u32]) -> Result<Mesh, Refusal> {
+    let context = format!("{name}: {op} {ids:?}");
+    let mut edited = mesh.clone();
+    let applied = match operations::apply(&mut edited, op, ids) {
+        Ok(applied) => applied,
+        Err(refusal) => {
+            assert!(
+                &edited == mesh,
+                "{context}: refused ({refusal}) but changed the mesh"
+            );
+            return Err(refusal);
+        }
+    };
+    let issues = edited.validate();
+    assert!(
+        issues.is_empty(),
+        "{context}: before compacting: {issues:#?}"
+    );
+    let mut reverted = edited.clone();
+    for change in applied.journal.iter().rev() {
+        change.revert(&mut reverted).expect("a change reverts");
+    }
+    assert!(&reverted == mesh, "{context}: the journal does not revert");
+    let mut compacted = edited;
+    compacted.compact();
+    let issues = compacted.validate();
+    assert!(
+        issues.is_empty(),
+        "{context}: after compacting: {issues:#?}"
+    );
+    let (before, after) = (mesh.stats(), compacted.stats());
+    let change: Vec<i64> = counts(&before)
+        .iter()
+        .zip(counts(&after))
+        .map(|(b, a)| a - b)
+        .collect();
+    assert_eq!(
+        change,
+        expected_delta(mesh, op, ids),
+        "{context}: V, E, F, loops"
+    );
+    assert_euler(&after, &context);
+    Ok(compacted)
+}
+
+/// Every `step`-th item, so the large samples are sampled, not exhausted.
+fn every<T>(items: Vec<T>, step: usize) -> impl Iterator<Item = T> {
+    items.into_iter().step_by(step.max(1))
+}
+
+/// Every argument list `op` takes on `mesh`, thinned to about `budget`.
+fn arguments(mesh: &Mesh, op: Operation, budget: usize) -> Vec<Vec<u32>> {
+    let mut all: Vec<Vec<u32>> = Vec::new();
+    let faces = 0..mesh.face_count() as u32;
+    let vertices = 0..mesh.vertex_count() as u32;
+    match op {
+        Operation::FlipEdge
+        | Operation::SplitEdge
+        | Operation::CollapseEdge
+        | Operation::Kev
+        | Operation::Kef
+        | Operation::Kemr => all.extend((0..edge_rows(mesh)).map(|e| vec![e])),
+        Operation::RemoveVertex => all.extend(vertices.map(|v| vec![v])),
+        Operation::SplitFace | Operation::Mef => {
+            for f in faces {
+                let corners = face_vertices(mesh, FaceId::new(f));
+                for &u in &corners {
+                    for &w in &corners {
+                        all.push(vec![f, u, w]);
+                    }
+                }
+            }
+        }
+        Operation::Mev => {
+            for v in vertices {
+                let around = edges_at(mesh, VertexId::new(v));
+                all.push(vec![v, around.first().copied().unwrap_or(0)]);
+                for &x in &around {
+                    for &y in &around {
+                        all.push(vec![v, x, y]);
+                    }
+                }
+            }
+        }
+        Operation::Mekr => {
+            let boundary = boundary_vertices(mesh);
+            for f in faces {
+                for u in face_vertices(mesh, FaceId::new(f)) {
+                    for &b in &boundary {
+                        all.push(vec![f, u, b]);
+                    }
+                }
+            }
+        }
+    }
+    let step = all.len().div_ceil(budget.max(1));
+    every(all, step).collect()
+}
+
+/// The faces as vertex lists, each turned to start at its least rotation,
+/// in order, with the positions: what two structures' meshes share. The
+/// face numbers may differ, as operations keep the face an incident edge is
+/// on and the structures pick incident edges differently.
+fn shape(mesh: &Mesh) -> (Vec<Vec<u32>>, Vec<[u32; 3]>) {
+    let mut faces: Vec<Vec<u32>> = (0..mesh.face_count() as u32)
+        .map(|f| {
+            let corners = face_vertices(mesh, FaceId::new(f));
+            (0..corners.len())
+                .map(|turn| {
+                    let mut turned = corners.clone();
+                    turned.rotate_left(turn);
+                    turned
+                })
+                .min()
+                .unwrap_or_default()
+        })
+        .collect();
+    faces.sort();
+    let positions = mesh
+        .positions()
+        .iter()
+        .map(|p| p.to_array().map(f32::to_bits))
+        .collect();
+    (faces, positions)
+}
+
+#[test]
+fn every_operation_on_every_sample_validates_and_keeps_its_formula() {
+    let mut accepted = vec![0usize; Operation::ALL.len()];
+    let mut refused = vec![0usize; Operation::ALL.len()];
+    for sample in samples() {
+        let name = &sample.name;
+        assert_eq!(sample.winged.validate(), vec![], "{name}");
+        let small = sample.winged.edge_count() <= 100;
+        for (i, op) in Operation::ALL.into_iter().enumerate() {
+            let budget = if small { 300 } else { 40 };
+            for ids in arguments(&sample.winged, op, budget) {
+                let winged = check(&format!("{name} (winged)"), &sample.winged, op, &ids);
+                let half_ids = sample.half_ids(op, &ids);
+                let half = check(&format!("{name} (half)"), &sample.half, op, &half_ids);
+                match (winged, half) {
+                    (Ok(winged), Ok(half)) => {
+                        assert!(
+                            shape(&winged) == shape(&half),
+                            "{name}: {op} {ids:?} makes different meshes in the two structures"
+                        );
+                        accepted[i] += 1;
+                    }
+                    (Err(_), Err(_)) => refused[i] += 1,
+                    (winged, half) => panic!(
+                        "{name}: {op} {ids:?}: winged-edge {:?}, half-edge {:?}",
+                        winged.map(drop),
+                        half.map(drop)
+                    ),
+                }
+            }
+            // A half-edge mesh also names each edge by its second half,
+            // which runs the other way.
+            if op.arguments() == Operation::FlipEdge.arguments() {
+                let seconds: Vec<u32> = sample
+                    .first_halves
+                    .iter()
+                    .map(|&h| {
+                        sample
+                            .half
+                            .reference(ElementRef::new(ElementKind::Edge, h), Column::PairEdge)
+                    })
+                    .map(|pair| pair.expect("exists").expect("paired").id)
+                    .collect();
+                let step = seconds.len().div_ceil(budget);
+                for second in every(seconds, step) {
+                    let _ = check(&format!("{name} (half)"), &sample.half, op, &[second]);
+                }
+            }
+        }
+    }
+    for (i, op) in Operation::ALL.into_iter().enumerate() {
+        eprintln!("{op}: {} accepted, {} refused", accepted[i], refused[i]);
+        // KEMR needs a bridge, which no sample has (see the MEKR tests).
+        if op != Operation::Kemr {
+            assert!(accepted[i] > 0, "{op} was never accepted");
+        }
+    }
+}
+
+// ------------------------------------------------------------ Euler pairs
+
+/// Small samples in both structures.
+fn small_meshes() -> Vec<(String, Mesh)> {
+    let mut list = Vec::new();
+    for sample in samples() {
+        if sample.winged.edge_count() <= 40 {
+            list.push((format!("{} (winged)", sample.name), sample.winged));
+            list.push((format!("{} (half)", sample.name), sample.half));
+        }
+    }
+    list
+}
+
+/// The first edge row an operation made.
+fn made_edge(applied: &operations::Applied) -> u32 {
+    applied
+        .made
+        .iter()
+        .find(|row| row.kind == ElementKind::Edge)
+        .expect("the operation made an edge")
+        .id
+}
+
+/// Applies `op` and then `inverse` on the edge it made: once compacted, the
+/// tables are the ones it started from. Returns how many pairs it checked.
+fn assert_undone(name: &str, mesh: &Mesh, op: Operation, inverse: Operation) -> usize {
+    let mut checked = 0;
+    for ids in arguments(mesh, op, 200) {
+        let mut edited = mesh.clone();
+        let Ok(applied) = operations::apply(&mut edited, op, &ids) else {
+            continue;
+        };
+        let edge = made_edge(&applied);
+        if let Err(refusal) = operations::apply(&mut edited, inverse, &[edge]) {
+            panic!("{name}: {inverse} {edge} after {op} {ids:?} was refused: {refusal}");
+        }
+        edited.compact();
+        assert!(
+            &edited == mesh,
+            "{name}: {inverse} {edge} does not undo {op} {ids:?}"
+        );
+        checked += 1;
+    }
+    checked
+}
+
+#[test]
+fn mev_then_kev_restores_the_tables() {
+    let checked: usize = small_meshes()
+        .iter()
+        .map(|(name, mesh)| assert_undone(name, mesh, Operation::Mev, Operation::Kev))
+        .sum();
+    assert!(checked > 500, "{checked}");
+}
+
+#[test]
+fn mef_then_kef_restores_the_tables() {
+    let checked: usize = small_meshes()
+        .iter()
+        .map(|(name, mesh)| assert_undone(name, mesh, Operation::Mef, Operation::Kef))
+        .sum();
+    assert!(checked > 100, "{checked}");
+}
+
+#[test]
+fn mekr_then_kemr_restores_the_tables_and_kemr_then_mekr_too() {
+    let mut checked = 0;
+    for (name, mesh) in small_meshes() {
+        checked += assert_undone(&name, &mesh, Operation::Mekr, Operation::Kemr);
+        for ids in arguments(&mesh, Operation::Mekr, 40) {
+            let mut bridged = mesh.clone();
+            let Ok(applied) = operations::apply(&mut bridged, Operation::Mekr, &ids) else {
+                continue;
+            };
+            bridged.compact();
+            // KEMR on the bridge, then MEKR with the same face and ends.
+            let bridge = made_edge(&applied);
+            let mut edited = bridged.clone();
+            operations::apply(&mut edited, Operation::Kemr, &[bridge]).expect("a bridge");
+            operations::apply(&mut edited, Operation::Mekr, &ids).expect("the ring is back");
+            edited.compact();
+            assert!(
+                edited == bridged,
+                "{name}: MEKR {ids:?} does not undo KEMR {bridge}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 50, "{checked}");
+}
+
+#[test]
+fn kemr_turns_the_inner_cycle_into_a_boundary_loop() {
+    // A 5 × 5 grid without its middle square: face 0 is bridged from its
+    // corner 7 to vertex 14, a corner of the hole.
+    let grid = generate::grid(5, 5);
+    let faces: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .filter(|&(f, _)| f != 12)
+        .map(|(_, face)| face.to_vec())
+        .collect();
+    let polygons = Polygons::from_faces(grid.positions().to_vec(), faces);
+    for structure in Structure::ALL {
+        let (mut mesh, _) = Mesh::build(&polygons, structure).expect("a grid with a hole");
+        let before = mesh.stats();
+        assert_eq!(before.boundary_loops, 2);
+        let applied = operations::apply(&mut mesh, Operation::Mekr, &[0, 7, 14]).expect("joins");
+        assert_eq!(mesh.validate(), vec![]);
+        assert_eq!(mesh.stats().boundary_loops, 1);
+        // The face walks out along the bridge, round the hole and back.
+        let mut corners = face_vertices(&mesh, FaceId::new(0));
+        let at = corners.iter().position(|&v| v == 0).expect("corner 0");
+        corners.rotate_left(at);
+        assert_eq!(
+            corners,
+            [0, 1, 7, 14, 15, 21, 20, 14, 7, 6],
+            "{structure:?}"
+        );
+        let bridge = made_edge(&applied);
+        let killed = operations::apply(&mut mesh, Operation::Kemr, &[bridge]).expect("a bridge");
+        assert_eq!(mesh.validate(), vec![]);
+        assert_eq!(
+            killed.deleted.len(),
+            killed
+                .journal
+                .iter()
+                .filter(|c| matches!(c, edgewise_core::mesh::Change::Delete(_)))
+                .count()
+        );
+        mesh.compact();
+        assert_eq!(mesh.stats(), before);
+    }
+}
