@@ -14,7 +14,7 @@ use edgewise_core::mesh::{
     EdgeId, Edit, FaceId, HalfEdgeId, Mesh, MeshStats, Navigation, Polygons, Structure, VertexId,
     WingedEdgeMesh, generate,
 };
-use edgewise_core::schema::{Column, ElementKind, ElementRef, Records};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, RecordsMut};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -547,5 +547,537 @@ fn kemr_turns_the_inner_cycle_into_a_boundary_loop() {
         );
         mesh.compact();
         assert_eq!(mesh.stats(), before);
+    }
+}
+
+// ------------------------------------------------------------ refusals
+
+fn build(polygons: &Polygons, structure: Structure) -> Mesh {
+    Mesh::build(polygons, structure).expect("builds").0
+}
+
+fn corners(count: usize) -> Vec<glam::Vec3> {
+    (0..count)
+        .map(|i| glam::Vec3::new(i as f32, (i * i % 5) as f32, (i % 3) as f32))
+        .collect()
+}
+
+/// Two triangles on the same three vertices, glued along every edge.
+fn dihedron() -> Polygons {
+    Polygons::from_triangles(corners(3), &[[0, 1, 2], [1, 0, 2]])
+}
+
+/// A quad on one side, two triangles on the other, meeting along 0–2.
+fn quad_pillow() -> Polygons {
+    Polygons::from_faces(corners(4), [vec![0, 1, 2, 3], vec![0, 3, 2], vec![0, 2, 1]])
+}
+
+/// Two tetrahedra glued along triangle 2 3 4, which is not a face: 0 is the
+/// top, 1 the bottom.
+fn bipyramid() -> Polygons {
+    Polygons::from_triangles(
+        corners(5),
+        &[
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 4, 2],
+            [1, 3, 2],
+            [1, 4, 3],
+            [1, 2, 4],
+        ],
+    )
+}
+
+/// The 5 × 5 grid without its middle square (face 12).
+fn grid_with_hole() -> Polygons {
+    let grid = generate::grid(5, 5);
+    let faces: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .filter(|&(f, _)| f != 12)
+        .map(|(_, face)| face.to_vec())
+        .collect();
+    Polygons::from_faces(grid.positions().to_vec(), faces)
+}
+
+/// The edge row running from `a` to `b`: the half-edge, or the winged edge
+/// joining them.
+fn edge_between(mesh: &Mesh, a: u32, b: u32) -> u32 {
+    match mesh {
+        Mesh::Winged(m) => m
+            .edges()
+            .iter()
+            .position(|e| {
+                let ends = [e.start_vertex.raw(), e.end_vertex.raw()];
+                ends == [a, b] || ends == [b, a]
+            })
+            .expect("an edge joins them") as u32,
+        Mesh::Half(m) => m
+            .half_edges()
+            .iter()
+            .enumerate()
+            .position(|(h, half)| {
+                half.end_vertex.raw() == b
+                    && m.start_vertex(HalfEdgeId::new(h as u32)) == Some(VertexId::new(a))
+            })
+            .expect("a half-edge runs from a to b") as u32,
+    }
+}
+
+/// `mesh` after an operation that must be accepted, and what it made.
+fn after(mesh: &Mesh, op: Operation, ids: &[u32]) -> (Mesh, u32) {
+    let mut edited = mesh.clone();
+    let applied = operations::apply(&mut edited, op, ids).expect("the set-up is accepted");
+    let made = applied
+        .made
+        .iter()
+        .find(|row| row.kind == ElementKind::Edge)
+        .map_or(0, |row| row.id);
+    (edited, made)
+}
+
+/// `mesh` with a dangling edge from vertex 0 into the face after its
+/// incident edge's dart; returns it, the dangling edge and that face.
+fn with_dangling_edge(mesh: &Mesh) -> (Mesh, u32, u32) {
+    let first = edges_at(mesh, VertexId::new(0))[0];
+    let (mesh, edge) = after(mesh, Operation::Mev, &[0, first]);
+    let face = sides(&mesh, edge)[0].expect("in a face").0.raw();
+    (mesh, edge, face)
+}
+
+/// The variant's name, for the golden file; the match is exhaustive so a
+/// new variant must be added here and to [`VARIANTS`].
+fn variant(refusal: &Refusal) -> &'static str {
+    match refusal {
+        Refusal::Arguments { .. } => "Arguments",
+        Refusal::NoSuchElement(_) => "NoSuchElement",
+        Refusal::Deleted(_) => "Deleted",
+        Refusal::Broken { .. } => "Broken",
+        Refusal::OnBoundary { .. } => "OnBoundary",
+        Refusal::SameFaceOnBothSides { .. } => "SameFaceOnBothSides",
+        Refusal::NotTriangle { .. } => "NotTriangle",
+        Refusal::SharedCorner { .. } => "SharedCorner",
+        Refusal::EdgeExists { .. } => "EdgeExists",
+        Refusal::LinkCondition { .. } => "LinkCondition",
+        Refusal::BoundaryPinch { .. } => "BoundaryPinch",
+        Refusal::MergedEdge { .. } => "MergedEdge",
+        Refusal::TooSmall { .. } => "TooSmall",
+        Refusal::FaceTooSmall { .. } => "FaceTooSmall",
+        Refusal::NoFaceEither { .. } => "NoFaceEither",
+        Refusal::OnlyDangling { .. } => "OnlyDangling",
+        Refusal::PinchesVertex { .. } => "PinchesVertex",
+        Refusal::NotOnFace { .. } => "NotOnFace",
+        Refusal::PassesTwice { .. } => "PassesTwice",
+        Refusal::SameVertex { .. } => "SameVertex",
+        Refusal::AdjacentOnFace { .. } => "AdjacentOnFace",
+        Refusal::BoundaryVertex { .. } => "BoundaryVertex",
+        Refusal::IsolatedVertex { .. } => "IsolatedVertex",
+        Refusal::NotSimple { .. } => "NotSimple",
+        Refusal::NotAtVertex { .. } => "NotAtVertex",
+        Refusal::CornerOnBoundary { .. } => "CornerOnBoundary",
+        Refusal::BothCornersOnBoundary { .. } => "BothCornersOnBoundary",
+        Refusal::NotBridge { .. } => "NotBridge",
+        Refusal::Dangling { .. } => "Dangling",
+        Refusal::NotOnBoundary { .. } => "NotOnBoundary",
+        Refusal::SeveralBoundaries { .. } => "SeveralBoundaries",
+        Refusal::EditFailed(_) => "EditFailed",
+        Refusal::Numbering { .. } => "Numbering",
+    }
+}
+
+const VARIANTS: [&str; 33] = [
+    "Arguments",
+    "NoSuchElement",
+    "Deleted",
+    "Broken",
+    "OnBoundary",
+    "SameFaceOnBothSides",
+    "NotTriangle",
+    "SharedCorner",
+    "EdgeExists",
+    "LinkCondition",
+    "BoundaryPinch",
+    "MergedEdge",
+    "TooSmall",
+    "FaceTooSmall",
+    "NoFaceEither",
+    "OnlyDangling",
+    "PinchesVertex",
+    "NotOnFace",
+    "PassesTwice",
+    "SameVertex",
+    "AdjacentOnFace",
+    "BoundaryVertex",
+    "IsolatedVertex",
+    "NotSimple",
+    "NotAtVertex",
+    "CornerOnBoundary",
+    "BothCornersOnBoundary",
+    "NotBridge",
+    "Dangling",
+    "NotOnBoundary",
+    "SeveralBoundaries",
+    "EditFailed",
+    "Numbering",
+];
+
+/// Every refusal, each from a real operation on a real mesh where one can
+/// reach it, rendered into tests/golden/operations/refusals.txt
+/// (`EDGEWISE_BLESS=1` rewrites it). A refused operation must leave the
+/// mesh untouched.
+#[test]
+fn every_refusal_has_a_golden_message() {
+    use Operation as Op;
+    use Structure::{HalfEdge as Half, WingedEdge as Winged};
+    let tetrahedron = |s| build(&generate::tetrahedron(), s);
+    let cube = |s| build(&generate::cube(), s);
+    let open_square = |s| build(&generate::open_square(), s);
+    let octahedron = |s| {
+        let bytes = std::fs::read(root().join("meshes/octahedron.obj")).expect("sample");
+        formats::load(&bytes, "octahedron.obj", s)
+            .expect("loads")
+            .mesh
+    };
+
+    let mut cases: Vec<(String, Mesh, Operation, Vec<u32>)> = Vec::new();
+    let mut case = |label: &str, mesh: Mesh, op: Operation, ids: &[u32]| {
+        let structure = match mesh.structure() {
+            Winged => "winged",
+            Half => "half",
+        };
+        cases.push((format!("{label} ({structure})"), mesh, op, ids.to_vec()));
+    };
+
+    case("tetrahedron", tetrahedron(Winged), Op::FlipEdge, &[0, 1]);
+    case("tetrahedron", tetrahedron(Half), Op::Mev, &[0]);
+    case("tetrahedron", tetrahedron(Winged), Op::RemoveVertex, &[12]);
+    case("tetrahedron", tetrahedron(Half), Op::Kev, &[30]);
+    case(
+        "tetrahedron",
+        tetrahedron(Winged),
+        Op::SplitFace,
+        &[9, 0, 1],
+    );
+    let (collapsed, _) = after(&octahedron(Half), Op::CollapseEdge, &[0]);
+    case(
+        "octahedron after collapse-edge 0",
+        collapsed,
+        Op::FlipEdge,
+        &[1],
+    );
+    let mut broken = tetrahedron(Half);
+    broken
+        .set_reference(
+            ElementRef::new(ElementKind::Edge, 1),
+            Column::SuccessorEdge,
+            Some(ElementRef::new(ElementKind::Edge, 99)),
+        )
+        .expect("a stored column");
+    case(
+        "tetrahedron, half-edge 1's successor 99",
+        broken,
+        Op::FlipEdge,
+        &[0],
+    );
+    case("open square", open_square(Winged), Op::FlipEdge, &[0]);
+    case("open square", open_square(Half), Op::Kef, &[0]);
+    for structure in [Winged, Half] {
+        let (dangling, edge, _) = with_dangling_edge(&cube(structure));
+        case(
+            "cube with a dangling edge",
+            dangling.clone(),
+            Op::FlipEdge,
+            &[edge],
+        );
+        case(
+            "cube with a dangling edge",
+            dangling.clone(),
+            Op::Kef,
+            &[edge],
+        );
+        case(
+            "cube with a dangling edge",
+            dangling.clone(),
+            Op::CollapseEdge,
+            &[edge],
+        );
+        case("cube with a dangling edge", dangling, Op::Kemr, &[edge]);
+    }
+    let (bridged, bridge) = after(&build(&grid_with_hole(), Half), Op::Mekr, &[0, 7, 14]);
+    case(
+        "holed grid bridged by mekr 0 7 14",
+        bridged.clone(),
+        Op::Kev,
+        &[bridge],
+    );
+    let along_hole = edge_between(&bridged, 14, 15);
+    let (strut_inside, _) = after(&bridged, Op::Mev, &[15, along_hole]);
+    case(
+        "holed grid bridged, with an edge dangling from 15",
+        strut_inside,
+        Op::Kemr,
+        &[bridge],
+    );
+    // A path of three dangling edges from vertex 0; removing the first,
+    // named from its far end, would leave the face walking only the path.
+    let (path, first) = after(&octahedron(Half), Op::Mev, &[0, 0]);
+    let (path, second) = after(&path, Op::Mev, &[6, first]);
+    let (path, _) = after(&path, Op::Mev, &[7, second]);
+    case(
+        "octahedron with a dangling path from 0",
+        path,
+        Op::Kemr,
+        &[first + 1],
+    );
+    // A bridge from hole corner 14 to the outer boundary at 1: named from
+    // 1, its inner cycle is face 6, which passes the hole at 14.
+    let (bridged, bridge) = after(&build(&grid_with_hole(), Half), Op::Mekr, &[6, 14, 1]);
+    case(
+        "holed grid bridged by mekr 6 14 1",
+        bridged,
+        Op::Kemr,
+        &[bridge + 1],
+    );
+    case("cube", cube(Winged), Op::FlipEdge, &[0]);
+    case("dihedron", build(&dihedron(), Winged), Op::FlipEdge, &[0]);
+    case("dihedron", build(&dihedron(), Half), Op::SplitEdge, &[0]);
+    case("tetrahedron", tetrahedron(Winged), Op::FlipEdge, &[0]);
+    case("tetrahedron", tetrahedron(Half), Op::FlipEdge, &[0]);
+    case(
+        "quad pillow",
+        build(&quad_pillow(), Half),
+        Op::SplitFace,
+        &[0, 0, 2],
+    );
+    case("open square", open_square(Winged), Op::Mekr, &[0, 0, 3]);
+    let pyramid = build(&bipyramid(), Winged);
+    let equator = edge_between(&pyramid, 2, 3);
+    case("bipyramid", pyramid, Op::CollapseEdge, &[equator]);
+    let strip = build(&generate::grid(3, 1), Half);
+    let rung = edge_between(&strip, 1, 5);
+    case("3 × 1 grid", strip, Op::CollapseEdge, &[rung]);
+    let strip = build(&generate::grid(3, 1), Winged);
+    let rung = edge_between(&strip, 1, 5);
+    case("3 × 1 grid", strip, Op::Kev, &[rung]);
+    let triangle = Polygons::from_triangles(corners(3), &[[0, 1, 2]]);
+    case(
+        "one triangle",
+        build(&triangle, Winged),
+        Op::CollapseEdge,
+        &[0],
+    );
+    case("dihedron", build(&dihedron(), Half), Op::CollapseEdge, &[0]);
+    case("tetrahedron", tetrahedron(Winged), Op::CollapseEdge, &[0]);
+    case("tetrahedron", tetrahedron(Half), Op::RemoveVertex, &[0]);
+    case("tetrahedron", tetrahedron(Winged), Op::Kev, &[0]);
+    case("cube", cube(Half), Op::SplitFace, &[0, 0, 7]);
+    let (dangling, _, face) = with_dangling_edge(&cube(Winged));
+    let far = face_vertices(&dangling, FaceId::new(face))
+        .into_iter()
+        .find(|&v| v != 0)
+        .expect("another corner");
+    case(
+        "cube with a dangling edge",
+        dangling,
+        Op::SplitFace,
+        &[face, 0, far],
+    );
+    case("cube", cube(Winged), Op::SplitFace, &[0, 0, 0]);
+    case("cube", cube(Half), Op::SplitFace, &[0, 0, 2]);
+    case("tetrahedron", tetrahedron(Winged), Op::Mef, &[0, 0, 1]);
+    case("open square", open_square(Winged), Op::RemoveVertex, &[0]);
+    let mut lonely = Polygons::from_triangles(corners(3), &[[0, 1, 2]]);
+    lonely.push_vertex(glam::Vec3::ONE);
+    case(
+        "a triangle and a lone vertex",
+        build(&lonely, Half),
+        Op::RemoveVertex,
+        &[3],
+    );
+    let pillow = build(&quad_pillow(), Winged);
+    let shared = edge_between(&pillow, 0, 1);
+    case("quad pillow", pillow, Op::Kef, &[shared]);
+    case("open square", open_square(Half), Op::Mekr, &[0, 1, 3]);
+    let far_edge = edge_between(&cube(Winged), 6, 7);
+    case("cube", cube(Winged), Op::Mev, &[0, far_edge]);
+    let square = open_square(Half);
+    let rim = edge_between(&square, 1, 2);
+    case("open square", square, Op::Mev, &[1, rim]);
+    case("cube", cube(Winged), Op::Kemr, &[0]);
+    case(
+        "2 × 2 grid",
+        build(&generate::grid(2, 2), Winged),
+        Op::Mekr,
+        &[0, 0, 4],
+    );
+
+    let mut lines = vec![
+        "# Every refusal of the local operations: the variant, what was asked, and the".to_owned(),
+        "# message. Written by crates/core/tests/mesh_operations.rs (EDGEWISE_BLESS=1).".to_owned(),
+    ];
+    let mut seen = std::collections::BTreeSet::new();
+    for (label, mesh, op, ids) in cases {
+        let mut edited = mesh.clone();
+        let Err(refusal) = operations::apply(&mut edited, op, &ids) else {
+            panic!("{label}: {op} {ids:?} was accepted");
+        };
+        assert!(edited == mesh, "{label}: the refusal changed the mesh");
+        let ids: Vec<String> = ids.iter().map(ToString::to_string).collect();
+        lines.push(format!(
+            "{}: {label}: {op} {}: {refusal}",
+            variant(&refusal),
+            ids.join(" ")
+        ));
+        seen.insert(variant(&refusal));
+    }
+    // No operation on a mesh that validates reaches these: a vertex where
+    // the boundary passes twice, or a failure while writing.
+    let constructed = [
+        Refusal::BothCornersOnBoundary {
+            vertex: VertexId::new(4),
+        },
+        Refusal::SeveralBoundaries {
+            vertex: VertexId::new(4),
+            count: 2,
+        },
+        Refusal::EditFailed(edgewise_core::mesh::EditError::TableFull(
+            ElementKind::Vertex,
+        )),
+        Refusal::Numbering {
+            planned: ElementRef::new(ElementKind::Face, 6),
+            made: ElementRef::new(ElementKind::Face, 7),
+        },
+    ];
+    for refusal in constructed {
+        lines.push(format!("{}: (constructed): {refusal}", variant(&refusal)));
+        seen.insert(variant(&refusal));
+    }
+    let missing: Vec<&str> = VARIANTS
+        .iter()
+        .copied()
+        .filter(|v| !seen.contains(v))
+        .collect();
+    assert!(missing.is_empty(), "no golden message for {missing:?}");
+    lines.push(String::new());
+    golden::assert_matches(
+        &root().join("tests/golden/operations/refusals.txt"),
+        lines.join("\n"),
+    );
+}
+
+// ------------------------------------------------------------ random sequences
+
+/// The meshes random sequences start from.
+fn start(index: usize, structure: Structure) -> Mesh {
+    let polygons = match index % 6 {
+        0 => generate::tetrahedron(),
+        1 => generate::cube(),
+        2 => generate::open_square(),
+        3 => generate::grid(2, 2),
+        4 => grid_with_hole(),
+        _ => {
+            let bytes = std::fs::read(root().join("meshes/octahedron.obj")).expect("sample");
+            formats::read_polygons(&bytes, formats::Format::Obj).expect("reads")
+        }
+    };
+    build(&polygons, structure)
+}
+
+/// The live edge rows with one face on both sides: bridges and dangling
+/// edges.
+fn one_face_edges(mesh: &Mesh) -> Vec<u32> {
+    (0..edge_rows(mesh))
+        .filter(|&e| mesh.contains(ElementRef::new(ElementKind::Edge, e)))
+        .filter(|&e| matches!(sides(mesh, e), [Some((f, _)), Some((g, _))] if f == g))
+        .collect()
+}
+
+/// Ids for `op` from three random numbers: mostly elements that fit
+/// together (corners of the face chosen, edges at the vertex chosen, a
+/// boundary vertex for MEKR), sometimes any row, deleted ones included.
+fn pick(mesh: &Mesh, op: Operation, picks: [u16; 4]) -> Vec<u32> {
+    let any = |kind, pick: u16| u32::from(pick) % (mesh.count(kind).max(1) as u32);
+    let choose = |list: &[u32], pick: u16, kind| {
+        if list.is_empty() || pick.is_multiple_of(11) {
+            any(kind, pick)
+        } else {
+            list[usize::from(pick) % list.len()]
+        }
+    };
+    let arguments = op.arguments();
+    let count = arguments.len()
+        - usize::from(picks[3].is_multiple_of(2) && arguments.len() == 3 && arguments[2].optional);
+    let mut ids: Vec<u32> = Vec::new();
+    for (i, argument) in arguments.iter().take(count).enumerate() {
+        let pick = picks[i];
+        let id = match (op, i) {
+            (Operation::SplitFace | Operation::Mef | Operation::Mekr, 1)
+            | (Operation::SplitFace | Operation::Mef, 2) => choose(
+                &face_vertices(mesh, FaceId::new(ids[0])),
+                pick,
+                ElementKind::Vertex,
+            ),
+            (Operation::Mekr, 2) => choose(&boundary_vertices(mesh), pick, ElementKind::Vertex),
+            (Operation::Kemr, 0) => choose(&one_face_edges(mesh), pick, ElementKind::Edge),
+            (Operation::Mev, 1 | 2) => choose(
+                &edges_at(mesh, VertexId::new(ids[0])),
+                pick,
+                ElementKind::Edge,
+            ),
+            _ => any(argument.kind, pick),
+        };
+        ids.push(id);
+    }
+    ids
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 48, ..proptest::prelude::ProptestConfig::default() })]
+
+    /// Random operations on random elements of small meshes, in both
+    /// structures, compacting now and then: every accepted operation leaves
+    /// a valid mesh with the counts its formula gives, every refused one
+    /// leaves the mesh as it was.
+    #[test]
+    fn random_operations_keep_the_mesh_valid(
+        index in 0usize..6,
+        half in proptest::prelude::any::<bool>(),
+        steps in proptest::collection::vec(
+            (0usize..Operation::ALL.len(), proptest::prelude::any::<[u16; 4]>()),
+            1..16,
+        ),
+    ) {
+        let structure = if half { Structure::HalfEdge } else { Structure::WingedEdge };
+        let mut mesh = start(index, structure);
+        for (step, (op, picks)) in steps.into_iter().enumerate() {
+            let op = Operation::ALL[op];
+            let ids = pick(&mesh, op, picks);
+            let context = format!("step {step}: {op} {ids:?}");
+            let before = mesh.clone();
+            match operations::apply(&mut mesh, op, &ids) {
+                Ok(_) => {
+                    let issues = mesh.validate();
+                    proptest::prop_assert!(issues.is_empty(), "{}: {:#?}", context, issues);
+                    let (mut old, mut new) = (before.clone(), mesh.clone());
+                    old.compact();
+                    new.compact();
+                    let issues = new.validate();
+                    proptest::prop_assert!(issues.is_empty(), "{} compacted: {:#?}", context, issues);
+                    let change: Vec<i64> = counts(&old.stats())
+                        .iter()
+                        .zip(counts(&new.stats()))
+                        .map(|(b, a)| a - b)
+                        .collect();
+                    proptest::prop_assert_eq!(change, expected_delta(&before, op, &ids).to_vec(), "{}", context);
+                    assert_euler(&new.stats(), &context);
+                }
+                Err(refusal) => {
+                    proptest::prop_assert!(mesh == before, "{}: refused ({}) but changed", context, refusal);
+                }
+            }
+            if picks[3].is_multiple_of(5) {
+                mesh.compact();
+            }
+        }
     }
 }

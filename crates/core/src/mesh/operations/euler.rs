@@ -57,7 +57,8 @@ pub fn mev<M: Edit + ?Sized>(
             Some(edge) => ending_at(patch, edge, v)?,
             None => ha,
         };
-        plan_mev(patch, v, ha, hb)
+        let named = EdgeName(patch.name(patch.edge(first.0)?));
+        plan_mev(patch, v, (ha, named), hb)
     })
 }
 
@@ -85,10 +86,12 @@ fn mean(points: &[Vec3]) -> Vec3 {
     points.iter().copied().sum::<Vec3>() / points.len().max(1) as f32
 }
 
+/// Plans MEV at `v` between the corners after `ha` (named as the user named
+/// its edge) and `hb`.
 fn plan_mev<M: Records + ?Sized>(
     patch: &mut Patch<'_, M>,
     v: VertexId,
-    ha: Dart,
+    (ha, named): (Dart, EdgeName),
     hb: Dart,
 ) -> Result<(), Refusal> {
     let (face_a, face_b) = (patch.face_of(ha)?, patch.face_of(hb)?);
@@ -96,7 +99,7 @@ fn plan_mev<M: Records + ?Sized>(
     if dangling && face_a.is_none() {
         return Err(Refusal::CornerOnBoundary {
             vertex: v,
-            edge: EdgeName(patch.name(ha)),
+            edge: named,
         });
     }
     if face_a.is_none() && face_b.is_none() {
@@ -418,8 +421,11 @@ fn plan_kef<M: Records + ?Sized>(patch: &mut Patch<'_, M>, edge: EdgeRow) -> Res
 ///
 /// Refused when the sides have different faces (see [`kef`]) or are the
 /// boundary, when an end dangles (see [`kev`]), when the face would be left
-/// with fewer than three edges, and when an edge would be left with no face
-/// on either side (the inner cycle walks both sides of an edge).
+/// with fewer than three edges or with only dangling edges (both sides of
+/// each), when an edge would be left with no face on either side (the
+/// inner cycle walks both sides of an edge, or one whose other side is the
+/// boundary), and when a vertex of the inner cycle is on the boundary
+/// already (the boundary would pass it twice).
 ///
 /// Makes nothing. Deletes the edge. Writes, with d and t the edge's first
 /// and second half:
@@ -474,13 +480,31 @@ fn plan_kemr<M: Records + ?Sized>(patch: &mut Patch<'_, M>, edge: EdgeRow) -> Re
             edges: outer.len(),
         });
     }
+    // The inner cycle's darts lose the face, so what is across each must
+    // have one; the outer cycle keeps it, and must border something.
     for &dart in &inner {
-        if inner.contains(&patch.twin(dart)?) {
+        let twin = patch.twin(dart)?;
+        if inner.contains(&twin) || patch.face_of(twin)?.is_none() {
             return Err(Refusal::NoFaceEither {
                 action,
                 edge: EdgeName(patch.name(dart)),
             });
         }
+    }
+    // A vertex of the inner cycle already on the boundary would be passed
+    // by the boundary twice.
+    for &dart in &inner {
+        let vertex = patch.end(dart)?;
+        if patch.on_boundary(vertex)? {
+            return Err(Refusal::PinchesVertex { action, vertex });
+        }
+    }
+    let mut closed = true;
+    for &dart in &outer {
+        closed &= outer.contains(&patch.twin(dart)?);
+    }
+    if closed {
+        return Err(Refusal::OnlyDangling { action, face });
     }
     let (before_d, after_d) = (patch.prev(d)?, patch.next(d)?);
     let (before_t, after_t) = (patch.prev(t)?, patch.next(t)?);

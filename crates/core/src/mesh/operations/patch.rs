@@ -168,19 +168,22 @@ impl<'m, M: Records + ?Sized> Patch<'m, M> {
         row.id as usize >= self.mesh.count(row.kind)
     }
 
-    /// A reference as the mesh holds it; a reference a valid mesh would
-    /// have and this one lacks is a broken table.
+    /// A reference as the mesh holds it. A reference to a row that is not
+    /// there is a broken table, reported where it is stored.
     fn stored(&self, row: ElementRef, column: Column) -> Result<Option<ElementRef>, Refusal> {
-        self.mesh
-            .reference(row, column)
-            .map_err(|error| match error {
+        let broken = Refusal::Broken {
+            element: self.element(row),
+            column,
+        };
+        match self.mesh.reference(row, column) {
+            Ok(Some(target)) if !self.mesh.contains(target) => Err(broken),
+            Ok(target) => Ok(target),
+            Err(
                 LookupError::NoSuchElement(_)
                 | LookupError::Deleted(_)
-                | LookupError::NotApplicable { .. } => Refusal::Broken {
-                    element: self.element(row),
-                    column,
-                },
-            })
+                | LookupError::NotApplicable { .. },
+            ) => Err(broken),
+        }
     }
 
     fn required(&self, row: ElementRef, column: Column) -> Result<ElementRef, Refusal> {

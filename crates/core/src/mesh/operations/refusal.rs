@@ -147,6 +147,16 @@ pub enum Refusal {
         action: Action,
         edge: EdgeName,
     },
+    /// The boundary would pass a vertex twice.
+    PinchesVertex {
+        action: Action,
+        vertex: VertexId,
+    },
+    /// A face would be left walking only edges it has on both sides.
+    OnlyDangling {
+        action: Action,
+        face: FaceId,
+    },
     NotOnFace {
         face: FaceId,
         vertex: VertexId,
@@ -362,6 +372,14 @@ impl fmt::Display for Refusal {
             Self::NoFaceEither { action, edge } => {
                 write!(f, "{action} would leave {edge} with no face on either side")
             }
+            Self::PinchesVertex { action, vertex } => write!(
+                f,
+                "{action} would pinch the surface at {vertex}: the boundary passes it already"
+            ),
+            Self::OnlyDangling { action, face } => write!(
+                f,
+                "{action} would leave {face} bounded only by dangling edges, which it has on both sides"
+            ),
             Self::NotOnFace { face, vertex } => write!(f, "{vertex} is not on {face}"),
             Self::PassesTwice { face, vertex } => write!(
                 f,
@@ -413,7 +431,7 @@ impl fmt::Display for Refusal {
             Self::NotOnBoundary { vertex } => write!(f, "{vertex} is not on a boundary loop"),
             Self::SeveralBoundaries { vertex, count } => write!(
                 f,
-                "the boundary passes {vertex} {count} times, so which boundary corner is meant is ambiguous"
+                "the boundary passes {vertex} at {count} corners, so which one is meant is ambiguous"
             ),
             Self::EditFailed(error) => {
                 write!(
