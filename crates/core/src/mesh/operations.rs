@@ -21,7 +21,7 @@
 //! - **Ids.** New rows take the next free id in each table, in the order
 //!   each operation's documentation lists; a new edge of a half-edge mesh is
 //!   two rows, its first half then its second. Deleted rows stay as gaps
-//!   ([`Editor::delete`]) until [`Edit::compact`](super::Edit::compact).
+//!   ([`Editor::delete`]) until [`Edit::compact`].
 //! - **Writes.** The committed journal holds the new rows, then each changed
 //!   cell once with its final value (cells already holding it are skipped),
 //!   in the order the operation's steps first change them, then the

@@ -36,14 +36,14 @@ struct Triangle {
 /// tetrahedron).
 ///
 /// Makes nothing. Deletes, in order: the edge; for each triangle (the
-/// first half's side first) its edge b–c, then the face; then b. Writes,
-/// with d and t the first and second half of the edge:
+/// first half's side first) its other edge at b, then the face; then b.
+/// Writes, with d and t the first and second half of the edge:
 ///
-/// 1. for each triangle (d's side first): its dart c → a (or, on t's side,
-///    a → x) takes the place of the twin of the deleted edge's dart: that
+/// 1. for each side (d's first), if it is a triangle: its dart c → a (on
+///    t's side a → x) takes the place of the twin of its edge at b: that
 ///    twin's face, and (the dart before it) → it → (the dart after it);
-///    on a side that is not a triangle: (the dart before) → (the dart
-///    after), skipping the edge;
+///    if it is not a triangle (or the boundary): (the dart before) → (the
+///    dart after), skipping the edge;
 /// 2. every other dart that ended at b ends at a, in turn around b from d;
 /// 3. a's position;
 /// 4. incident edges: a's becomes the edge before d on its side if it was
