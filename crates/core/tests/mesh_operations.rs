@@ -1081,3 +1081,75 @@ proptest::proptest! {
         }
     }
 }
+
+/// One accepted example of every operation on a small mesh, in both
+/// structures, with its journal as the app would animate it: the exact
+/// sequence a traced version must reproduce. In
+/// tests/golden/operations/journals.txt (`EDGEWISE_BLESS=1` rewrites it).
+#[test]
+fn journals_match_their_golden_file() {
+    use Operation as Op;
+    let winged = |polygons: &Polygons| WingedEdgeMesh::build(polygons).expect("builds").0;
+    let octahedron = {
+        let bytes = std::fs::read(root().join("meshes/octahedron.obj")).expect("sample");
+        formats::read_polygons(&bytes, formats::Format::Obj).expect("reads")
+    };
+    let square = Sample::new("open square", winged(&generate::open_square()));
+    let cube = Sample::new("cube", winged(&generate::cube()));
+    let octahedron = Sample::new("octahedron", winged(&octahedron));
+    let holed = Sample::new("holed grid", winged(&grid_with_hole()));
+    let examples: [(&Sample, Operation, Vec<u32>); 11] = [
+        (&square, Op::FlipEdge, vec![2]),
+        (&square, Op::SplitEdge, vec![2]),
+        (&cube, Op::SplitFace, vec![0, 0, 3]),
+        (&octahedron, Op::CollapseEdge, vec![0]),
+        (&octahedron, Op::RemoveVertex, vec![0]),
+        (&cube, Op::Mev, vec![0, 0, 3]),
+        (&cube, Op::Mev, vec![0, 0]),
+        (&cube, Op::Kev, vec![0]),
+        (&cube, Op::Mef, vec![0, 0, 3]),
+        (&cube, Op::Kef, vec![0]),
+        (&holed, Op::Mekr, vec![0, 7, 14]),
+    ];
+    let mut text = String::from(
+        "# One example of every operation in both structures, with the journal it\n\
+         # writes. Written by crates/core/tests/mesh_operations.rs (EDGEWISE_BLESS=1).\n",
+    );
+    let mut show = |name: &str, structure: &str, mesh: &Mesh, op: Operation, ids: &[u32]| {
+        let mut edited = mesh.clone();
+        let applied = operations::apply(&mut edited, op, ids)
+            .unwrap_or_else(|refusal| panic!("{name}: {op} {ids:?}: {refusal}"));
+        let listed: Vec<String> = ids.iter().map(ToString::to_string).collect();
+        text.push_str(&format!(
+            "\n{op} {} on the {name} ({structure})\n",
+            listed.join(" ")
+        ));
+        for change in &applied.journal {
+            text.push_str(&format!("  {change}\n"));
+        }
+    };
+    for (sample, op, ids) in examples {
+        show(&sample.name, "winged", &sample.winged, op, &ids);
+        show(
+            &sample.name,
+            "half",
+            &sample.half,
+            op,
+            &sample.half_ids(op, &ids),
+        );
+    }
+    // A bridge does not convert between the structures (its face passes
+    // vertices twice), so each is made in its own.
+    for (structure, mesh) in [("winged", &holed.winged), ("half", &holed.half)] {
+        let (mut bridged, bridge) = after(mesh, Op::Mekr, &[0, 7, 14]);
+        bridged.compact();
+        show(
+            "holed grid bridged by mekr 0 7 14",
+            structure,
+            &bridged,
+            Op::Kemr,
+            &[bridge],
+        );
+    }
+    golden::assert_matches(&root().join("tests/golden/operations/journals.txt"), text);
+}
