@@ -13,7 +13,8 @@ use std::sync::Arc;
 use clap::{Parser, Subcommand, ValueEnum};
 use edgewise_core::formats::{self, Format, Loaded, PlyEncoding, SaveOptions};
 use edgewise_core::lang::{self, Algorithm, Program, RunOptions, Value};
-use edgewise_core::mesh::{Mesh, MeshStats, Structure};
+use edgewise_core::mesh::operations::{self, Operation, Refusal};
+use edgewise_core::mesh::{Edit, Mesh, MeshStats, Structure};
 
 /// Inspect, check, convert and trace winged-edge and half-edge meshes.
 ///
@@ -31,8 +32,10 @@ struct Cli {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 enum StructureArg {
     /// Winged-edge: edge, vertex and face tables.
+    #[value(alias = "winged-edge")]
     Winged,
     /// Half-edge: half-edge, vertex and face tables.
+    #[value(alias = "half-edge")]
     Half,
 }
 
@@ -99,6 +102,28 @@ enum Command {
         #[arg(long, value_enum, default_value = "ascii")]
         ply: PlyArg,
     },
+    /// Apply a local operation to a mesh and write the result, printing V, E
+    /// and F before and after. A refused operation prints why and exits 1.
+    #[command(after_help = operations_help())]
+    Edit {
+        /// The mesh file to read (`-` for standard input).
+        input: PathBuf,
+        /// The file to write: .obj, .ply, .wtb or .htb.
+        output: PathBuf,
+        /// The operation (see below).
+        operation: String,
+        /// The ids it takes, in order. An edge is an edge id, or either of
+        /// its half-edges in a half-edge mesh.
+        #[arg(value_name = "ID", required = true)]
+        ids: Vec<u32>,
+        /// The structure to edit (default: a table file's own, else the
+        /// output's, else winged).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+        /// The PLY encoding to write.
+        #[arg(long, value_enum, default_value = "ascii")]
+        ply: PlyArg,
+    },
     /// Print the vertex, face and edge (or half-edge) tables.
     Tables {
         /// The mesh file (`-` for standard input).
@@ -157,6 +182,14 @@ fn main() -> ExitCode {
             structure,
             ply,
         } => convert(&input, &output, structure, ply),
+        Command::Edit {
+            input,
+            output,
+            operation,
+            ids,
+            structure,
+            ply,
+        } => edit(&input, &output, &operation, &ids, structure, ply),
         Command::Tables { file, structure } => tables(&file, structure),
         Command::Trace {
             algfile,
@@ -341,27 +374,31 @@ fn check(path: &Path, structure: Option<StructureArg>) -> Outcome {
     Ok(())
 }
 
-fn convert(input: &Path, output: &Path, structure: Option<StructureArg>, ply: PlyArg) -> Outcome {
-    let Some(target) =
-        Format::from_name(&output.to_string_lossy()).filter(|_| output.extension().is_some())
-    else {
-        eprintln!(
-            "edgewise: cannot tell the format of {}: give it a .obj, .ply, .wtb or .htb extension",
-            output.display()
-        );
-        return Err(Failure::Usage);
-    };
-    let loaded = load(input, |format| {
-        structure
-            .map(Structure::from)
-            .or(target.native_structure())
-            .or(format.native_structure())
-            .unwrap_or(Structure::HalfEdge)
-    })?;
+/// The format to write, from the output's extension.
+fn output_format(output: &Path) -> Result<Format, Failure> {
+    Format::from_name(&output.to_string_lossy())
+        .filter(|_| output.extension().is_some())
+        .ok_or_else(|| {
+            eprintln!(
+                "edgewise: cannot tell the format of {}: give it a .obj, .ply, .wtb or .htb extension",
+                output.display()
+            );
+            Failure::Usage
+        })
+}
+
+/// Writes `mesh` to `output` in `format`; returns the number of bytes.
+fn write_mesh(
+    mesh: &Mesh,
+    input: &Path,
+    output: &Path,
+    format: Format,
+    ply: PlyArg,
+) -> Result<usize, Failure> {
     let options = SaveOptions {
         ply_encoding: ply.into(),
     };
-    let bytes = formats::save(&loaded.mesh, target, &options).map_err(|error| {
+    let bytes = formats::save(mesh, format, &options).map_err(|error| {
         eprintln!("{}: {error}", shown(input));
         Failure::Input
     })?;
@@ -369,13 +406,97 @@ fn convert(input: &Path, output: &Path, structure: Option<StructureArg>, ply: Pl
         eprintln!("{}: cannot write the file: {error}", output.display());
         Failure::Input
     })?;
+    Ok(bytes.len())
+}
+
+fn convert(input: &Path, output: &Path, structure: Option<StructureArg>, ply: PlyArg) -> Outcome {
+    let target = output_format(output)?;
+    let loaded = load(input, |format| {
+        structure
+            .map(Structure::from)
+            .or(target.native_structure())
+            .or(format.native_structure())
+            .unwrap_or(Structure::HalfEdge)
+    })?;
+    let written = write_mesh(&loaded.mesh, input, output, target, ply)?;
     emit(&format!(
-        "{} -> {}: {} vertices, {} faces, {} bytes\n",
+        "{} -> {}: {} vertices, {} faces, {written} bytes\n",
         shown(input),
         output.display(),
         loaded.mesh.vertex_count(),
         loaded.mesh.face_count(),
-        bytes.len()
+    ));
+    Ok(())
+}
+
+/// The operations, their ids and what they do, for `edit --help`.
+fn operations_help() -> String {
+    let mut text = String::from("Operations, with the ids each takes in order:\n");
+    for operation in Operation::ALL {
+        text.push_str("  ");
+        text.push_str(operation.name());
+        for argument in operation.arguments() {
+            let role = argument.role;
+            text.push_str(&if argument.optional {
+                format!(" [<{role}>]")
+            } else {
+                format!(" <{role}>")
+            });
+        }
+        text.push_str(&format!("\n      {}\n", operation.summary()));
+    }
+    text
+}
+
+/// "V 6, E 12, F 8, V − E + F = 2".
+fn counts_text(stats: &MeshStats) -> String {
+    format!(
+        "V {}, E {}, F {}, V − E + F = {}",
+        stats.vertices, stats.edges, stats.faces, stats.euler_characteristic
+    )
+}
+
+fn edit(
+    input: &Path,
+    output: &Path,
+    operation: &str,
+    ids: &[u32],
+    structure: Option<StructureArg>,
+    ply: PlyArg,
+) -> Outcome {
+    let operation = Operation::parse(operation).map_err(|error| {
+        eprintln!("edgewise: {error}");
+        Failure::Usage
+    })?;
+    let target = output_format(output)?;
+    let mut mesh = load(input, |format| {
+        structure
+            .map(Structure::from)
+            .or(format.native_structure())
+            .or(target.native_structure())
+            .unwrap_or(Structure::WingedEdge)
+    })?
+    .mesh;
+    let before = mesh.stats();
+    let listed: Vec<String> = ids.iter().map(ToString::to_string).collect();
+    let asked = format!("{operation} {}", listed.join(" "));
+    if let Err(refusal) = operations::apply(&mut mesh, operation, ids) {
+        eprintln!("{}: {asked}: {refusal}", shown(input));
+        return Err(match refusal {
+            Refusal::Arguments { .. } => Failure::Usage,
+            _ => Failure::Input,
+        });
+    }
+    mesh.compact();
+    let after = mesh.stats();
+    let written = write_mesh(&mesh, input, output, target, ply)?;
+    emit(&format!(
+        "{}: {asked} ({})\nbefore: {}\nafter:  {}\nwrote {} ({written} bytes)\n",
+        shown(input),
+        mesh.structure().prose(),
+        counts_text(&before),
+        counts_text(&after),
+        output.display(),
     ));
     Ok(())
 }

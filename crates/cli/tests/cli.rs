@@ -440,6 +440,7 @@ fn usage_errors_exit_2() {
         "info",
         "check",
         "convert",
+        "edit",
         "tables",
         "trace",
         "check-alg",
@@ -447,4 +448,142 @@ fn usage_errors_exit_2() {
     ] {
         assert!(stdout(&help).contains(command), "--help lists {command}");
     }
+}
+
+/// A fresh folder for one test's output files.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("edgewise-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+#[test]
+fn edit_flips_an_octahedron_edge_and_writes_the_result() {
+    let dir = scratch("edit-flip");
+    let out = dir.join("flipped.obj");
+    let output = run(&[
+        "edit",
+        "meshes/octahedron.obj",
+        &out.to_string_lossy(),
+        "flip-edge",
+        "0",
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    assert_eq!(
+        stdout(&output),
+        format!(
+            "meshes/octahedron.obj: flip-edge 0 (winged-edge)\n\
+             before: V 6, E 12, F 8, V − E + F = 2\n\
+             after:  V 6, E 12, F 8, V − E + F = 2\n\
+             wrote {} (200 bytes)\n",
+            out.display()
+        )
+    );
+    let check = run(&["check", &out.to_string_lossy()]);
+    assert_eq!(code(&check), 0, "{}", stderr(&check));
+    // A flip keeps the counts but changes the faces.
+    let original = std::fs::read_to_string(root().join("meshes/octahedron.obj")).expect("sample");
+    let flipped = std::fs::read_to_string(&out).expect("written");
+    let faces = |text: &str| text.lines().filter(|l| l.starts_with("f ")).count();
+    assert_eq!(faces(&flipped), faces(&original));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn edit_compacts_the_ids_and_converts_when_asked() {
+    let dir = scratch("edit-collapse");
+    let out = dir.join("collapsed.htb");
+    let output = run(&[
+        "edit",
+        "meshes/quad-grid.obj",
+        &out.to_string_lossy(),
+        "collapse-edge",
+        "13",
+        "--structure",
+        "half-edge",
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(
+        text.starts_with(
+            "meshes/quad-grid.obj: collapse-edge 13 (half-edge)\n\
+             before: V 25, E 40, F 16, V − E + F = 1\n\
+             after:  V 24, E 39, F 16, V − E + F = 1\n"
+        ),
+        "{text}"
+    );
+    let check = run(&["check", &out.to_string_lossy()]);
+    assert_eq!(
+        stdout(&check),
+        format!(
+            "{}: ok (24 vertices, 39 edges, 16 faces; half-edge)\n",
+            out.display()
+        )
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn edit_refuses_a_flip_on_the_tetrahedron_with_exit_1() {
+    let dir = scratch("edit-refused");
+    let out = dir.join("never.wtb");
+    let output = run(&[
+        "edit",
+        "meshes/tetrahedron.wtb",
+        &out.to_string_lossy(),
+        "flip-edge",
+        "0",
+    ]);
+    assert_eq!(code(&output), 1);
+    assert_eq!(
+        stderr(&output),
+        "meshes/tetrahedron.wtb: flip-edge 0: flipping edge 0 would join vertices 1 and 2 \
+         a second time (edge 3 already joins them)\n"
+    );
+    assert_eq!(stdout(&output), "");
+    assert!(!out.exists(), "a refused edit writes nothing");
+    let output = run(&[
+        "edit",
+        "meshes/open-square.wtb",
+        &out.to_string_lossy(),
+        "remove-vertex",
+        "9",
+    ]);
+    assert_eq!(code(&output), 1);
+    assert_eq!(
+        stderr(&output),
+        "meshes/open-square.wtb: remove-vertex 9: vertex 9 does not exist\n"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn edit_command_line_mistakes_are_usage_errors() {
+    let out = std::env::temp_dir().join("edgewise-cli-edit-usage.obj");
+    let out = out.to_string_lossy();
+    for (args, message) in [
+        (
+            vec!["flop", "0"],
+            "no operation is named `flop`; the operations are flip-edge,",
+        ),
+        (
+            vec!["flip-edge", "0", "1"],
+            "flip-edge takes 1 id (edge), not 2",
+        ),
+        (vec!["flip-edge"], "required"),
+    ] {
+        let mut all = vec!["edit", "meshes/cube.htb", &out];
+        all.extend(&args);
+        let output = run(&all);
+        assert_eq!(code(&output), 2, "{args:?}");
+        assert!(
+            stderr(&output).contains(message),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+    }
+    let help = run(&["edit", "--help"]);
+    assert!(
+        stdout(&help).contains("  mekr <face> <vertex on the face> <vertex on a boundary loop>\n")
+    );
 }

@@ -397,3 +397,74 @@ fn two_components_and_an_isolated_vertex() {
     assert_eq!(he.stats(), stats);
     assert_eq!(he.around_vertex(v(13)).count(), 0);
 }
+
+// ------------------------------------------------------------ dangling edge
+
+/// A triangle with an edge dangling into it from vertex 0 (what MEV with
+/// one edge makes): its face walks the dangling edge out and back, so the
+/// edge has face 0 on both sides, and both structures accept that.
+#[test]
+fn a_dangling_edge_has_its_face_on_both_sides() {
+    let positions = [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::splat(0.3)];
+    let vertices = positions
+        .iter()
+        .zip([2, 0, 1, 6])
+        .map(|(&position, incident)| half_edge::Vertex {
+            position,
+            incident_edge: Some(h(incident)),
+        })
+        .collect();
+    let faces = vec![half_edge::Face {
+        incident_edge: h(0),
+    }];
+    // End vertex, face, pair, successor: 0→1→2→0 with 0→3→0 after 2→0,
+    // then the boundary loop 1→0→2→1.
+    let rows = [
+        (1, Some(0), 3, 1),
+        (2, Some(0), 4, 2),
+        (0, Some(0), 5, 6),
+        (0, None, 0, 5),
+        (1, None, 1, 3),
+        (2, None, 2, 4),
+        (3, Some(0), 7, 7),
+        (0, Some(0), 6, 0),
+    ];
+    let half_edges = rows
+        .iter()
+        .map(|&(end, face, pair, successor)| HalfEdge {
+            end_vertex: v(end),
+            face: face.map(f),
+            pair_edge: h(pair),
+            successor_edge: h(successor),
+        })
+        .collect();
+    let he = HalfEdgeMesh::from_raw_parts(vertices, faces, half_edges);
+    assert_eq!(he.validate(), vec![]);
+    assert_eq!(ids(he.face_vertices(f(0))), [0, 1, 2, 0, 3]);
+    let we = he
+        .to_winged_edge()
+        .expect("a valid half-edge mesh converts");
+    assert_eq!(we.validate(), vec![]);
+    let dangling = we.edge(e(3)).expect("the fourth edge");
+    assert_eq!(
+        (dangling.left_face, dangling.right_face),
+        (Some(f(0)), Some(f(0)))
+    );
+    // The walk tells the two sides of the dangling edge apart by the vertex
+    // it arrives at, so it goes out along one and back along the other.
+    let sides: Vec<_> = we.around_face(f(0)).collect();
+    assert_eq!(
+        sides,
+        [
+            (e(0), Side::Left),
+            (e(1), Side::Left),
+            (e(2), Side::Left),
+            (e(3), Side::Left),
+            (e(3), Side::Right)
+        ]
+    );
+    let stats = we.stats();
+    assert_eq!((stats.vertices, stats.edges, stats.faces), (4, 4, 1));
+    assert_eq!(stats.boundary_loops, 1);
+    assert_eq!(he.stats().boundary_loops, 1);
+}

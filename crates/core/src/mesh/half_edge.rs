@@ -221,18 +221,22 @@ impl HalfEdgeMesh {
         }
     }
 
-    /// The predecessor table, built on first use: the first half-edge (in
-    /// number order) naming each half-edge as its successor.
     /// Drops the predecessor table after a successor changed; the next
     /// question rebuilds it.
     pub(crate) fn forget_predecessors(&mut self) {
         self.predecessors = OnceLock::new();
     }
 
+    /// The predecessor table, built on first use: the first live half-edge
+    /// (in number order) naming each half-edge as its successor.
     fn predecessors(&self) -> &[u32] {
         self.predecessors.get_or_init(|| {
             let mut predecessors = vec![NONE; self.half_edges.len()];
             for (h, half_edge) in (0u32..).zip(&self.half_edges) {
+                // A deleted row keeps its contents but is no one's predecessor.
+                if self.deleted.contains(HalfEdgeId::new(h).into()) {
+                    continue;
+                }
                 if let Some(slot) = predecessors.get_mut(half_edge.successor_edge.index())
                     && *slot == NONE
                 {

@@ -91,8 +91,15 @@ impl Navigation for WingedEdgeMesh {
         self.side_bordering(self.face(f)?.incident_edge, f)
     }
 
+    /// The predecessor wing, on the side entered where this edge is left
+    /// (which tells the sides of an edge with `f` on both apart).
     fn face_after(&self, f: FaceId, (e, side): (EdgeId, Side)) -> Option<(EdgeId, Side)> {
-        self.side_bordering(self.edge(e)?.predecessor(side), f)
+        let edge = self.edge(e)?;
+        let next = edge.predecessor(side);
+        let side = self
+            .edge(next)?
+            .side_entered_at(Some(f), edge.ccw_end(side))?;
+        Some((next, side))
     }
 
     /// The face whose counter-clockwise traversal enters `v` along the edge:

@@ -399,18 +399,15 @@ impl WingedEdgeMesh {
                     ),
                 );
             }
-            match (edge.left_face, edge.right_face) {
-                (None, None) => issues.push(
+            // The same face on both sides is allowed: a dangling edge (MEV)
+            // or a bridge to an inner cycle (MEKR) is walked once each way
+            // by its face, and the face cycle below checks that walk.
+            if edge.left_face.is_none() && edge.right_face.is_none() {
+                issues.push(
                     element,
                     Column::LeftFace,
                     "the edge has no face on either side; an edge needs a face on at least one side".to_owned(),
-                ),
-                (Some(left), Some(right)) if left == right => issues.push(
-                    element,
-                    Column::RightFace,
-                    format!("{left} is on both sides of the edge; the two sides need different faces"),
-                ),
-                _ => {}
+                );
             }
             for side in [Side::Left, Side::Right] {
                 self.check_wings(&mut issues, id, edge, side, &mut face_size);
@@ -427,8 +424,10 @@ impl WingedEdgeMesh {
                 Some(None) => format!("its incident edge {start} does not border this face"),
                 Some(Some(side)) => {
                     let (length, closed) = cycle((start, side), size, |(e, side)| {
-                        let next = self.edge(e)?.predecessor(side);
-                        Some((next, self.edge(next)?.side_of(Some(id))?))
+                        let edge = self.edge(e)?;
+                        let next = edge.predecessor(side);
+                        let entered = edge.ccw_end(side);
+                        Some((next, self.edge(next)?.side_entered_at(Some(id), entered)?))
                     });
                     if !closed {
                         format!(
@@ -530,7 +529,7 @@ impl WingedEdgeMesh {
         let field = Column::predecessor_of(side);
         match self.edge(predecessor) {
             None => issues.push(element, field, self.missing(predecessor, ne, "edges")),
-            Some(wing) => match wing.side_of(face) {
+            Some(wing) => match wing.side_entered_at(face, enter) {
                 None => issues.push(
                     element,
                     field,
@@ -570,7 +569,7 @@ impl WingedEdgeMesh {
         let field = Column::successor_of(side);
         match self.edge(successor) {
             None => issues.push(element, field, self.missing(successor, ne, "edges")),
-            Some(wing) => match wing.side_of(face) {
+            Some(wing) => match wing.side_left_at(face, leave) {
                 None => issues.push(
                     element,
                     field,

@@ -333,6 +333,33 @@ impl WingedEdge {
         }
     }
 
+    /// The side bordering `face` whose counter-clockwise traversal enters
+    /// this edge at `vertex`. An edge with the same face on both sides (a
+    /// dangling edge, or a bridge to an inner cycle) is walked once each way
+    /// by that face, so the face alone cannot say which side a walk is on;
+    /// the vertex it arrives at can. When only one side borders `face` that
+    /// side is returned whatever the vertex, so a broken wing is still
+    /// followed and reported.
+    #[inline]
+    pub fn side_entered_at(&self, face: Option<FaceId>, vertex: VertexId) -> Option<Side> {
+        self.side_where(face, |side| self.ccw_start(side) == vertex)
+    }
+
+    /// The side bordering `face` whose counter-clockwise traversal leaves
+    /// this edge at `vertex`: [`Self::side_entered_at`] walking backwards.
+    #[inline]
+    pub fn side_left_at(&self, face: Option<FaceId>, vertex: VertexId) -> Option<Side> {
+        self.side_where(face, |side| self.ccw_end(side) == vertex)
+    }
+
+    fn side_where(&self, face: Option<FaceId>, matches: impl Fn(Side) -> bool) -> Option<Side> {
+        if self.left_face == face && self.right_face == face && matches(Side::Right) {
+            Some(Side::Right)
+        } else {
+            self.side_of(face)
+        }
+    }
+
     /// Where the counter-clockwise traversal of the face on `side` enters
     /// this edge (the start for the left face, the end for the right face).
     #[inline]
