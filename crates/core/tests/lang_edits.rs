@@ -175,3 +175,54 @@ fn traced_edits_render_as_recorded() {
     let problems: Vec<String> = golden::compare(&path, &out).into_iter().collect();
     golden::assert_none(&problems);
 }
+
+/// The traced library edits and the native operations (the CLI's and the
+/// JS API's) agree: on every edge where the native one applies, the traced
+/// one leaves identical tables; where it refuses, so does the traced one.
+#[test]
+fn traced_edits_match_the_native_operations() {
+    use edgewise_core::mesh::operations::{self, Operation};
+    let program = library("half-edge-edits.alg");
+    for (name, operation) in [
+        ("flipEdge", Operation::FlipEdge),
+        ("splitEdge", Operation::SplitEdge),
+    ] {
+        let algorithm = program.algorithm(name).expect("shipped");
+        let mut compared = 0;
+        for (sample, polygons) in closed_samples().into_iter().chain(open_samples()) {
+            let original = half_edge(&polygons);
+            for id in 0..original.count(ElementKind::Edge) as u32 {
+                let context = format!("{name} on {sample}, half-edge {id}");
+                let mut native = original.clone();
+                let native_result = operations::apply(&mut native, operation, &[id]);
+                let mut traced = original.clone();
+                let trace = lang::run_editing(
+                    algorithm,
+                    &mut traced,
+                    &[("h", Value::Edge(id))],
+                    RunOptions::default(),
+                )
+                .expect("inputs fit");
+                match (&native_result, trace.outcome().error()) {
+                    (Ok(_), None) => {
+                        assert_eq!(traced, native, "{context}");
+                        compared += 1;
+                    }
+                    (Err(_), Some(_)) => {}
+                    (Ok(_), Some(error)) => {
+                        panic!("{context}: only the traced one refused: {error}")
+                    }
+                    (Err(refusal), None) => {
+                        // The native edit is stricter where a traced one
+                        // would leave a valid but degenerate mesh.
+                        assert!(
+                            operation == Operation::SplitEdge,
+                            "{context}: only the native one refused: {refusal}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(compared > 100, "{name}: only {compared} compared");
+    }
+}
