@@ -6,7 +6,10 @@
 
 use std::fmt;
 
-use edgewise_core::{mesh::Structure, schema::ElementRef};
+use edgewise_core::{
+    mesh::{Structure, operations::Operation},
+    schema::ElementRef,
+};
 
 use crate::save_format::SaveFormat;
 
@@ -82,7 +85,13 @@ pub enum Command {
     /// Saves the open mesh in a format: a download in the browser, a file
     /// natively.
     SaveAs(SaveFormat),
-    /// Puts back the mesh from before the last edit an algorithm made.
+    /// Applies a local operation (an edge flip, an Euler operator) to the
+    /// open mesh, or refuses with the reason and leaves it as it was.
+    Edit {
+        operation: Operation,
+        ids: Vec<u32>,
+    },
+    /// Puts back the mesh from before the last edit.
     RestoreBeforeEdit,
 }
 

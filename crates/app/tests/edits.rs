@@ -123,3 +123,37 @@ fn a_refused_edit_changes_nothing_and_says_why() {
     );
     assert_eq!(harness.state().mesh(), Some(&before));
 }
+
+#[test]
+fn native_operations_apply_or_refuse_with_the_reason() {
+    use edgewise_core::mesh::operations::Operation;
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    let before = harness.state().mesh().cloned().expect("a mesh");
+    let refused = harness
+        .state_mut()
+        .edit(Operation::FlipEdge, &[0])
+        .expect_err("a boundary edge cannot flip");
+    assert!(refused.starts_with("flip-edge 0: "), "{refused}");
+    assert!(refused.contains("on the boundary"), "{refused}");
+    assert_eq!(
+        harness.state().state().error.as_deref(),
+        Some(refused.as_str())
+    );
+    assert_eq!(harness.state().mesh(), Some(&before));
+
+    harness
+        .state_mut()
+        .edit(Operation::CollapseEdge, &[2])
+        .expect("an inner edge collapses");
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(state.error, None);
+    let stats = state.stats.expect("stats");
+    // One vertex, three edges and two faces fewer; the rows stay as gaps.
+    assert_eq!((stats.vertices, stats.edges, stats.faces), (6, 9, 4));
+    assert_eq!(state.counts.vertices, 7);
+    assert!(state.highlights.iter().any(|h| h.role == "deleted"));
+    harness.state_mut().restore_before_edit().expect("restores");
+    harness.run();
+    assert_eq!(harness.state().mesh(), Some(&before));
+}

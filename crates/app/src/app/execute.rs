@@ -1,7 +1,10 @@
 //! [`EdgewiseApp::execute`]: carrying out a [`Command`] on the active tab,
 //! and the shorthand methods the Rust API offers for each.
 
-use edgewise_core::{mesh::Structure, schema::ElementRef};
+use edgewise_core::{
+    mesh::{Structure, operations::Operation},
+    schema::ElementRef,
+};
 
 use crate::{
     EdgewiseApp,
@@ -15,7 +18,7 @@ impl EdgewiseApp {
     pub fn execute(&mut self, command: Command) -> Result<Reply, CommandError> {
         if matches!(
             command,
-            Command::Abort | Command::RunAlgorithm { .. } | Command::Start
+            Command::Abort | Command::RunAlgorithm { .. } | Command::Start | Command::Edit { .. }
         ) {
             self.tab_mut().finish_edit();
         }
@@ -77,6 +80,9 @@ impl EdgewiseApp {
             Command::CloseTab(index) => done(self.remove_tab(index)),
             Command::SetSideBySide(on) => done(self.show_twin(on)),
             Command::SaveAs(format) => done(self.save_as(format)),
+            Command::Edit { operation, ids } => {
+                done(self.tab_mut().apply_operation(operation, &ids))
+            }
             Command::RestoreBeforeEdit => done(self.tab_mut().restore_before_edit()),
         }
     }
@@ -183,6 +189,15 @@ impl EdgewiseApp {
     /// Shorthand for [`Command::Abort`].
     pub fn abort_algorithm(&mut self) -> Result<(), CommandError> {
         self.execute(Command::Abort).map(drop)
+    }
+
+    /// Shorthand for [`Command::Edit`].
+    pub fn edit(&mut self, operation: Operation, ids: &[u32]) -> Result<(), CommandError> {
+        self.execute(Command::Edit {
+            operation,
+            ids: ids.to_vec(),
+        })
+        .map(drop)
     }
 
     /// Shorthand for [`Command::RestoreBeforeEdit`].

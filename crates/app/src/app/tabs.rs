@@ -2,7 +2,10 @@
 //! belongs to one mesh; the app draws and commands the active one, so a tab
 //! switch only changes which one that is.
 
-use edgewise_core::mesh::{Issue, Mesh, MeshStats, Structure};
+use edgewise_core::mesh::{
+    Issue, Mesh, MeshStats, Structure,
+    operations::{self, Operation},
+};
 use edgewise_core::schema::{ElementKind, ElementRef};
 
 use super::{EdgewiseApp, twin::Twin};
@@ -146,12 +149,36 @@ impl Tab {
         self.paint_key = None;
     }
 
+    /// Applies a native operation to the open mesh; the mesh before it stays
+    /// in [`Self::before_edit`]. A refusal leaves everything as it was.
+    pub(crate) fn apply_operation(
+        &mut self,
+        operation: Operation,
+        ids: &[u32],
+    ) -> Result<(), CommandError> {
+        let document = self.document.as_mut().ok_or("no mesh is open")?;
+        let mut mesh = document.mesh().clone();
+        let shown: Vec<String> = ids.iter().map(ToString::to_string).collect();
+        let call = format!("{} {}", operation.name(), shown.join(" "));
+        operations::apply(&mut mesh, operation, ids)
+            .map_err(|refusal| format!("{call}: {refusal}"))?;
+        let before = document.mesh().clone();
+        self.run.mesh_changed();
+        document.replace_mesh(mesh);
+        self.before_edit = Some((call, before));
+        self.view
+            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        self.paint_key = None;
+        self.error = None;
+        Ok(())
+    }
+
     /// Puts back the mesh from before the last kept edit.
     pub(crate) fn restore_before_edit(&mut self) -> Result<(), CommandError> {
         let (name, mesh) = self
             .before_edit
             .take()
-            .ok_or("no edit to take back: no algorithm has changed this mesh")?;
+            .ok_or("no edit to take back: the mesh has not been edited since it was opened")?;
         let document = self.document.as_mut().ok_or("no mesh is open")?;
         self.run.mesh_changed();
         document.replace_mesh(mesh);

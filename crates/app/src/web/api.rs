@@ -13,7 +13,7 @@ use eframe::wasm_bindgen::{JsValue, closure::Closure};
 use edgewise_core::{
     formats::{Format, MAX_FILE_BYTES},
     lang::MAX_SOURCE_BYTES,
-    mesh::Structure,
+    mesh::{Structure, operations::Operation},
     schema::{ElementKind, ElementRef},
 };
 
@@ -138,6 +138,16 @@ const COMMANDS: &[CommandEntry] = &[
         read: |_, _, _| Ok(Command::Abort),
     },
     CommandEntry {
+        name: "edit",
+        call: "edit(op, ids)",
+        read: read_edit,
+    },
+    CommandEntry {
+        name: "restoreBeforeEdit",
+        call: "restoreBeforeEdit()",
+        read: |_, _, _| Ok(Command::RestoreBeforeEdit),
+    },
+    CommandEntry {
         name: "newTab",
         call: "newTab()",
         read: |_, _, _| Ok(Command::NewTab),
@@ -194,6 +204,41 @@ const QUERIES: &[QueryEntry] = &[
         answer: |runner, format| Ok(export(runner, format).into()),
     },
 ];
+
+/// `edit(op, ids)`: an operation by its command-line name and its ids, an
+/// array (or one id on its own).
+fn read_edit(call: &'static str, op: &JsValue, ids: &JsValue) -> Result<Command, String> {
+    let names: Vec<&str> = Operation::ALL.iter().map(|op| op.name()).collect();
+    let wanted = format!("one of '{}'", names.join("', '"));
+    let name = op
+        .as_string()
+        .filter(|name| name.len() <= MAX_NAME_CHARS)
+        .ok_or_else(|| expected(call, "op", &wanted, op))?;
+    let operation = Operation::parse(&name).map_err(|_| expected(call, "op", &wanted, op))?;
+    let values: Vec<JsValue> = if js_sys::Array::is_array(ids) {
+        js_sys::Array::from(ids)
+            .iter()
+            .take(MAX_EDIT_IDS + 1)
+            .collect()
+    } else {
+        vec![ids.clone()]
+    };
+    if values.len() > MAX_EDIT_IDS {
+        return Err(expected(call, "ids", "at most three ids", ids));
+    }
+    let ids = values
+        .iter()
+        .enumerate()
+        .map(|(i, value)| {
+            let id = whole_number(call, &format!("ids[{i}]"), value)?;
+            u32::try_from(id).map_err(|_| format!("{call}: id {id} is larger than any element id"))
+        })
+        .collect::<Result<Vec<u32>, String>>()?;
+    Ok(Command::Edit { operation, ids })
+}
+
+/// The most ids an operation takes (MEKR: a face and two vertices).
+const MAX_EDIT_IDS: usize = 3;
 
 /// `loadMesh(text, options)`: the text and how to read it.
 fn read_load_mesh(

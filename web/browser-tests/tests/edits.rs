@@ -1,0 +1,72 @@
+//! Editing in the browser: a traced edge flip on the half-edge explainer's
+//! example mesh, whose records break at the first write and mend by the
+//! end, and a native operation refused with its reason.
+
+use edgewise_browser_tests::Browser;
+use serde_json::Value;
+
+#[tokio::test]
+async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    let loaded = browser
+        .eval_async("window.edgewise.loadSample('hexagon', { structure: 'half' })")
+        .await?;
+    assert_eq!(loaded, Value::Null);
+    browser
+        .eval_async("window.edgewise.run('flipEdge', { h: 2 })")
+        .await?;
+
+    // Step to the first write: the tables are sound until then.
+    let mut state = browser.state().await?;
+    while state["trace"]["operation"] != "write" {
+        assert_eq!(state["broken"], serde_json::json!([]), "{state}");
+        assert_eq!(state["trace"]["done"], false, "the flip never wrote");
+        browser.eval_async("window.edgewise.step(1)").await?;
+        state = browser.state().await?;
+    }
+    let broken = state["broken"].as_array().cloned().unwrap_or_default();
+    assert!(
+        !broken.is_empty(),
+        "the first write breaks records: {state}"
+    );
+    assert!(
+        broken
+            .iter()
+            .any(|b| b["kind"] == "edge" && b["id"] == 2 && b["rule"].as_str().is_some()),
+        "{broken:?}"
+    );
+    assert!(
+        state["highlights"]
+            .as_array()
+            .is_some_and(|h| h.iter().any(|h| h["role"] == "broken")),
+        "{state}"
+    );
+    let shot = browser.screenshot("edit-flip-first-write").await?;
+    assert!(shot.distinct_colours(64) > 8, "the view is drawn");
+
+    // At the end every record follows the rules again.
+    browser.eval_async("window.edgewise.goto(100000)").await?;
+    let state = browser.state().await?;
+    assert_eq!(state["trace"]["done"], true, "{state}");
+    assert_eq!(state["broken"], serde_json::json!([]));
+    assert_eq!(state["stats"]["vertices"], 7);
+    assert_eq!(state["stats"]["edges"], 12);
+    assert_eq!(state["stats"]["faces"], 6);
+    browser.screenshot("edit-flip-done").await?;
+
+    // A finished flip is kept; a native flip of a boundary edge is refused.
+    browser.eval_async("window.edgewise.abort()").await?;
+    let refusal = browser
+        .refusal("window.edgewise.edit('flip-edge', [0])")
+        .await?;
+    let message = refusal.as_str().unwrap_or_default();
+    assert!(message.contains("on the boundary"), "{message}");
+    let state = browser.state().await?;
+    assert_eq!(state["error"].as_str(), Some(message));
+    browser
+        .eval_async("window.edgewise.restoreBeforeEdit()")
+        .await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
