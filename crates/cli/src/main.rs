@@ -146,6 +146,11 @@ enum Command {
         /// The most operations to run before stopping the algorithm.
         #[arg(long, default_value_t = lang::DEFAULT_STEP_LIMIT)]
         step_limit: usize,
+        /// For an algorithm that changes the mesh: write the mesh it leaves
+        /// (ids compacted) here, in the format of the extension. Nothing is
+        /// written if the run stops on an error or leaves broken records.
+        #[arg(long, value_name = "OUT")]
+        save: Option<PathBuf>,
     },
     /// Check an algorithm file: print every error and exit 1 if there is any.
     CheckAlg {
@@ -197,7 +202,15 @@ fn main() -> ExitCode {
             meshfile,
             args,
             step_limit,
-        } => trace(&algfile, &name, &meshfile, &args, step_limit),
+            save,
+        } => trace(
+            &algfile,
+            &name,
+            &meshfile,
+            &args,
+            step_limit,
+            save.as_deref(),
+        ),
         Command::CheckAlg { algfile } => check_alg(&algfile),
         Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
     };
@@ -534,7 +547,9 @@ fn trace(
     meshfile: &Path,
     args: &[String],
     step_limit: usize,
+    save: Option<&Path>,
 ) -> Outcome {
+    let target = save.map(output_format).transpose()?;
     let program = compile(algfile)?;
     let algorithm = find(&program, algfile, name)?;
     let mut inputs: Vec<(String, Value)> = Vec::with_capacity(args.len());
@@ -546,12 +561,17 @@ fn trace(
         inputs.push(parsed);
     }
     let structure = algorithm.structure;
-    let loaded = load(meshfile, |_| structure)?;
+    let mut mesh = load(meshfile, |_| structure)?.mesh;
     let inputs: Vec<(&str, Value)> = inputs.iter().map(|(n, v)| (n.as_str(), *v)).collect();
     let options = RunOptions { step_limit };
-    let run = match &loaded.mesh {
-        Mesh::Winged(mesh) => lang::run(algorithm, mesh, &inputs, options),
-        Mesh::Half(mesh) => lang::run(algorithm, mesh, &inputs, options),
+    let before = mesh.live_stats();
+    let run = if algorithm.edits() {
+        lang::run_editing(algorithm, &mut mesh, &inputs, options)
+    } else {
+        match &mesh {
+            Mesh::Winged(mesh) => lang::run(algorithm, mesh, &inputs, options),
+            Mesh::Half(mesh) => lang::run(algorithm, mesh, &inputs, options),
+        }
     };
     let trace = run.map_err(|error| {
         eprintln!("edgewise: {error}");
@@ -564,6 +584,14 @@ fn trace(
     }
     out.push_str(&trace.render_marked());
     out.push('\n');
+    if algorithm.edits() {
+        out.push_str(&format!(
+            "changes: {}\nbefore: {}\nafter:  {}\n",
+            trace.changes().len(),
+            counts_text(&before),
+            counts_text(&mesh.live_stats())
+        ));
+    }
     emit(&out);
     if let Some(error) = trace.outcome().error() {
         eprintln!(
@@ -573,6 +601,24 @@ fn trace(
             error.message
         );
         return Err(Failure::Input);
+    }
+    let broken = mesh.validate();
+    if !broken.is_empty() {
+        eprintln!(
+            "{}: {name} left {} broken record{}:",
+            shown(algfile),
+            broken.len(),
+            if broken.len() == 1 { "" } else { "s" }
+        );
+        for issue in &broken {
+            eprintln!("  {issue}");
+        }
+        return Err(Failure::Input);
+    }
+    if let (Some(path), Some(format)) = (save, target) {
+        mesh.compact();
+        let written = write_mesh(&mesh, meshfile, path, format, PlyArg::Ascii)?;
+        emit(&format!("wrote {} ({written} bytes)\n", path.display()));
     }
     Ok(())
 }

@@ -587,3 +587,88 @@ fn edit_command_line_mistakes_are_usage_errors() {
         stdout(&help).contains("  mekr <face> <vertex on the face> <vertex on a boundary loop>\n")
     );
 }
+
+#[test]
+fn trace_runs_an_editing_algorithm_and_saves_what_it_leaves() {
+    let dir = scratch("trace-save");
+    let out = dir.join("flipped.obj");
+    let output = run(&[
+        "trace",
+        "algorithms/half-edge-edits.alg",
+        "flipEdge",
+        "meshes/hexagon.obj",
+        "--arg",
+        "h=2",
+        "--save",
+        &out.to_string_lossy(),
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(
+        text.contains("write edge 2.endVertex := vertex 2 (was vertex 0)"),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "changes: 12\nbefore: V 7, E 12, F 6, V − E + F = 1\nafter:  V 7, E 12, F 6, V − E + F = 1\n"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.ends_with(&format!("wrote {} (189 bytes)\n", out.display())),
+        "{text}"
+    );
+    let check = run(&["check", &out.to_string_lossy()]);
+    assert_eq!(code(&check), 0, "{}", stderr(&check));
+    let flipped = std::fs::read_to_string(&out).expect("written");
+    assert!(flipped.contains("f 2 3 4\nf 3 2 1\n"), "{flipped}");
+
+    // A refusal is an error at its line, and nothing is written.
+    let refused = dir.join("refused.obj");
+    let output = run(&[
+        "trace",
+        "algorithms/half-edge-edits.alg",
+        "flipEdge",
+        "meshes/hexagon.obj",
+        "--arg",
+        "h=0",
+        "--save",
+        &refused.to_string_lossy(),
+    ]);
+    assert_eq!(code(&output), 1);
+    assert_eq!(
+        stderr(&output),
+        "algorithms/half-edge-edits.alg:18: error: edge 0 is on the boundary; a flip needs two faces\n"
+    );
+    assert!(!refused.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn trace_refuses_to_save_what_an_algorithm_left_broken() {
+    let dir = scratch("trace-broken");
+    let alg = dir.join("broken.alg");
+    std::fs::write(
+        &alg,
+        "algorithm unpair(h : Edge) : HalfEdge;\nbegin\n  h.pair := h.next;\nend;\n",
+    )
+    .expect("scratch file");
+    let out = dir.join("out.obj");
+    let output = run(&[
+        "trace",
+        &alg.to_string_lossy(),
+        "unpair",
+        "meshes/hexagon.obj",
+        "--arg",
+        "h=2",
+        "--save",
+        &out.to_string_lossy(),
+    ]);
+    assert_eq!(code(&output), 1);
+    let message = stderr(&output);
+    assert!(message.contains("unpair left"), "{message}");
+    assert!(message.contains("broken record"), "{message}");
+    assert!(message.contains("edge 2 pair_edge"), "{message}");
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
