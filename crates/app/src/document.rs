@@ -155,8 +155,8 @@ impl Document {
         let result = trace
             .seek(&mut self.mesh, from, to)
             .map_err(|error| format!("the trace could not be replayed: {error}"));
+        // `sample` stays: the trace still starts from it.
         self.mesh_id = next_mesh_id();
-        self.sample = None;
         let selection = self.selection.filter(|&s| self.mesh.contains(s));
         self.select(selection)?;
         result

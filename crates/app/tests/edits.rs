@@ -157,3 +157,55 @@ fn native_operations_apply_or_refuse_with_the_reason() {
     harness.run();
     assert_eq!(harness.state().mesh(), Some(&before));
 }
+
+#[test]
+fn a_course_link_opens_an_edit_at_a_step_and_shares_it_back() {
+    let (mut harness, messages) = support::open_link(
+        "?sample=hexagon&structure=half&algorithm=flipEdge&args=h:2&step=70",
+        "",
+    );
+    assert!(messages.is_empty(), "{messages:?}");
+    let state = harness.state().state();
+    let trace = state.trace.expect("the edit runs");
+    assert_eq!((trace.algorithm.as_str(), trace.step), ("flipEdge", 70));
+    assert!(!state.broken.is_empty(), "half way, records are broken");
+    // The half-done mesh is what the view shows; the link reproduces it.
+    assert_eq!(end_vertex(&harness, 2), Some(VertexId::new(2)));
+    let url = harness
+        .state_mut()
+        .share_url("https://example.org/edgewise/")
+        .expect("a link");
+    assert!(url.contains("algorithm=flipEdge"), "{url}");
+    assert!(url.contains("step=70"), "{url}");
+}
+
+#[test]
+fn a_shared_link_to_a_half_done_edit_carries_the_mesh_it_started_from() {
+    let mut harness = support::harness();
+    let obj = std::fs::read(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../meshes/hexagon.obj"),
+    )
+    .expect("sample");
+    harness
+        .state_mut()
+        .load_mesh(&obj, "pasted.obj", Some(Structure::HalfEdge))
+        .expect("loads");
+    harness.run();
+    start_flip(&mut harness);
+    harness.state_mut().trace_goto(70).expect("goto");
+    harness.run();
+    let shown = harness.state().mesh().cloned().expect("a mesh");
+    let url = harness
+        .state()
+        .share_url("https://example.org/edgewise/")
+        .expect("a link");
+    let (query, fragment) = url
+        .strip_prefix("https://example.org/edgewise/")
+        .and_then(|rest| rest.split_once('#'))
+        .expect("a link with the mesh in its fragment");
+    let (opened, messages) = support::open_link(query, &format!("#{fragment}"));
+    assert!(messages.is_empty(), "{messages:?}");
+    let state = opened.state().state();
+    assert_eq!(state.trace.map(|t| t.step), Some(70));
+    assert_eq!(opened.state().mesh(), Some(&shown));
+}

@@ -269,8 +269,14 @@ pub struct SaveOptions {
 /// Writes `mesh` in `format`, converting it first if the format stores the
 /// other structure (`.wtb` is winged-edge, `.htb` half-edge). PLY and OBJ
 /// store each face counter-clockwise seen from outside, with 0-based PLY and
-/// 1-based OBJ vertex numbers.
+/// 1-based OBJ vertex numbers. Rows an edit deleted are left out and the
+/// ids compacted: files never hold gaps.
 pub fn save(mesh: &Mesh, format: Format, options: &SaveOptions) -> Result<Vec<u8>, SaveError> {
+    if !crate::mesh::Edit::deleted_rows(mesh).is_empty() {
+        let mut compacted = mesh.clone();
+        crate::mesh::Edit::compact(&mut compacted);
+        return save(&compacted, format, options);
+    }
     match format {
         Format::Wtb => match mesh.convert_to(Structure::WingedEdge)? {
             Mesh::Winged(winged) => Ok(tables::write(&winged).into_bytes()),

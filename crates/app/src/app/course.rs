@@ -174,7 +174,9 @@ impl EdgewiseApp {
                         Structure::WingedEdge => Format::Wtb,
                         Structure::HalfEdge => Format::Htb,
                     };
-                    let text = formats::save(document.mesh(), format, &SaveOptions::default())
+                    let mesh = self.tab().mesh_before_trace();
+                    let mesh = mesh.as_deref().unwrap_or(document.mesh());
+                    let text = formats::save(mesh, format, &SaveOptions::default())
                         .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
                         .unwrap_or_default();
                     MeshSource::Inline {

@@ -139,6 +139,7 @@ impl Tab {
             if restored.is_ok() {
                 self.before_edit = Some((trace.algorithm().name.clone(), before));
             }
+            document.sample = None;
         } else if restored.is_ok() {
             document.replace_mesh(before);
             self.view
@@ -171,6 +172,19 @@ impl Tab {
         self.paint_key = None;
         self.error = None;
         Ok(())
+    }
+
+    /// The mesh an editing trace started from (the shown mesh otherwise):
+    /// what a link must carry so that replaying the run reproduces the view.
+    pub(crate) fn mesh_before_trace(&self) -> Option<std::borrow::Cow<'_, Mesh>> {
+        let document = self.document.as_ref()?;
+        let session = self.run.session().filter(|_| self.edit_applied > 0);
+        let Some(session) = session else {
+            return Some(std::borrow::Cow::Borrowed(document.mesh()));
+        };
+        let mut before = document.mesh().clone();
+        session.trace.seek(&mut before, self.edit_applied, 0).ok()?;
+        Some(std::borrow::Cow::Owned(before))
     }
 
     /// Puts back the mesh from before the last kept edit.
