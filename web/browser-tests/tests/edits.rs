@@ -2,12 +2,17 @@
 //! example mesh, whose records break at the first write and mend by the
 //! end, and a native operation refused with its reason.
 
-use edgewise_browser_tests::Browser;
+use edgewise_browser_tests::{Browser, LaunchOptions};
 use serde_json::Value;
 
 #[tokio::test]
 async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()> {
-    let browser = Browser::launch().await?;
+    // A projector-sized window: the README shows these screenshots.
+    let browser = Browser::launch_with(LaunchOptions {
+        window_size: (1600, 1000),
+        ..LaunchOptions::default()
+    })
+    .await?;
     browser.open("").await?;
     let loaded = browser
         .eval_async("window.edgewise.loadSample('hexagon', { structure: 'half' })")
