@@ -12,12 +12,13 @@ use std::fmt;
 use glam::Vec3;
 
 use super::deleted::Deleted;
-use super::half_edge::{self, HalfEdge, HalfEdgeMesh};
-use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use super::half_edge::HalfEdgeMesh;
+use super::ids::VertexId;
 use super::structure::Mesh;
-use super::winged_edge::{self, WingedEdge, WingedEdgeMesh};
+use super::winged_edge::WingedEdgeMesh;
 use crate::schema::{
-    Column, ElementKind, ElementRef, LookupError, Records, RecordsMut, Structure, WriteError,
+    Column, EditHooks, ElementKind, ElementRef, LookupError, Record, Records, RecordsMut, Rows,
+    RowsMut, Structure, WriteError,
 };
 
 /// The most rows one table may grow to by edits: far above any mesh the app
@@ -225,15 +226,6 @@ impl Renumbering {
             faces: Self::for_table(deleted, ElementKind::Face, f),
         }
     }
-
-    fn id<I: Copy + Into<ElementRef>>(&self, id: I, make: fn(u32) -> I) -> Option<I> {
-        self.get(id.into()).map(|r| make(r.id))
-    }
-
-    /// A required reference through the mapping; a deleted target is unset.
-    fn required<I: Copy + Into<ElementRef>>(&self, id: I, make: fn(u32) -> I, unset: I) -> I {
-        self.id(id, make).unwrap_or(unset)
-    }
 }
 
 /// The primitive changes of a structure's tables. Every edit, traced or
@@ -307,171 +299,138 @@ fn retain_rows<T>(rows: &mut Vec<T>, keep: &[Option<u32>]) {
     });
 }
 
-impl Edit for WingedEdgeMesh {
-    fn push_row(&mut self, kind: ElementKind) -> Result<ElementRef, EditError> {
-        let len = self.count(kind);
-        full(kind, len)?;
-        match kind {
-            ElementKind::Vertex => self.vertices.push(winged_edge::Vertex::default()),
-            ElementKind::Face => self.faces.push(winged_edge::Face {
-                incident_edge: EdgeId::UNSET,
-            }),
-            ElementKind::Edge => self.edges.push(WingedEdge {
-                start_vertex: VertexId::UNSET,
-                end_vertex: VertexId::UNSET,
-                left_face: None,
-                right_face: None,
-                left_predecessor: EdgeId::UNSET,
-                left_successor: EdgeId::UNSET,
-                right_predecessor: EdgeId::UNSET,
-                right_successor: EdgeId::UNSET,
-            }),
-        }
-        Ok(ElementRef::new(kind, len as u32))
-    }
+/// A structure's tables as growable vectors: all the generic [`Edit`]
+/// needs besides the schema's column-by-column access to rows.
+pub(crate) trait Tables: RowsMut + EditHooks {
+    fn tables(
+        &mut self,
+    ) -> (
+        &mut Vec<Self::Vertex>,
+        &mut Vec<Self::Face>,
+        &mut Vec<Self::Edge>,
+        &mut Deleted,
+    );
 
-    fn pop_row(&mut self, kind: ElementKind) -> Result<(), EditError> {
-        let len = self.count(kind);
-        let last = ElementRef::new(kind, len.saturating_sub(1) as u32);
-        let popped = match kind {
-            ElementKind::Vertex => self.vertices.pop().is_some(),
-            ElementKind::Face => self.faces.pop().is_some(),
-            ElementKind::Edge => self.edges.pop().is_some(),
-        };
-        self.deleted.remove(last);
-        popped.then_some(()).ok_or(EditError::NoSuchElement(last))
-    }
+    fn position_mut(&mut self, vertex: VertexId) -> Option<&mut Vec3>;
+}
 
-    fn set_deleted(&mut self, element: ElementRef, deleted: bool) -> Result<(), EditError> {
-        let count = self.count(element.kind);
-        mark_deleted(&mut self.deleted, count, element, deleted)
-    }
+macro_rules! tables {
+    ($($mesh:ty: $edges:ident),*) => {$(
+        impl Tables for $mesh {
+            fn tables(
+                &mut self,
+            ) -> (
+                &mut Vec<Self::Vertex>,
+                &mut Vec<Self::Face>,
+                &mut Vec<Self::Edge>,
+                &mut Deleted,
+            ) {
+                (
+                    &mut self.vertices,
+                    &mut self.faces,
+                    &mut self.$edges,
+                    &mut self.deleted,
+                )
+            }
 
-    fn set_position(&mut self, vertex: VertexId, position: Vec3) -> Result<Vec3, EditError> {
-        let deleted = self.deleted.contains(vertex.into());
-        let row = self.vertices.get_mut(vertex.index()).filter(|_| !deleted);
-        move_vertex(row.map(|v| &mut v.position), vertex, position)
-    }
-
-    fn compact(&mut self) -> Renumbering {
-        let map = Renumbering::new(
-            &self.deleted,
-            [self.vertices.len(), self.edges.len(), self.faces.len()],
-        );
-        retain_rows(&mut self.vertices, &map.vertices);
-        retain_rows(&mut self.edges, &map.edges);
-        retain_rows(&mut self.faces, &map.faces);
-        for vertex in &mut self.vertices {
-            vertex.incident_edge = vertex.incident_edge.and_then(|e| map.id(e, EdgeId::new));
-        }
-        for face in &mut self.faces {
-            face.incident_edge = map.required(face.incident_edge, EdgeId::new, EdgeId::UNSET);
-        }
-        for edge in &mut self.edges {
-            edge.start_vertex = map.required(edge.start_vertex, VertexId::new, VertexId::UNSET);
-            edge.end_vertex = map.required(edge.end_vertex, VertexId::new, VertexId::UNSET);
-            edge.left_face = edge.left_face.and_then(|f| map.id(f, FaceId::new));
-            edge.right_face = edge.right_face.and_then(|f| map.id(f, FaceId::new));
-            for wing in [
-                &mut edge.left_predecessor,
-                &mut edge.left_successor,
-                &mut edge.right_predecessor,
-                &mut edge.right_successor,
-            ] {
-                *wing = map.required(*wing, EdgeId::new, EdgeId::UNSET);
+            fn position_mut(&mut self, vertex: VertexId) -> Option<&mut Vec3> {
+                if self.deleted.contains(vertex.into()) {
+                    return None;
+                }
+                self.vertices.get_mut(vertex.index()).map(|v| &mut v.position)
             }
         }
-        self.deleted.clear();
-        map
-    }
+    )*};
+}
 
-    fn deleted_rows(&self) -> &Deleted {
-        &self.deleted
+tables!(WingedEdgeMesh: edges, HalfEdgeMesh: half_edges);
+
+/// A new row: required references unset, optional ones empty.
+fn new_row<R: Record>(structure: Structure, kind: ElementKind) -> R {
+    let mut row = R::default();
+    for entry in Column::table(structure, kind) {
+        row.set(entry.column, None);
+    }
+    row
+}
+
+/// Rewrites every stored reference of `rows` through `map`.
+fn renumber<R: Record>(rows: &mut [R], structure: Structure, kind: ElementKind, map: &Renumbering) {
+    let columns = Column::table(structure, kind);
+    for row in rows {
+        for entry in columns {
+            let (Some(Some(id)), Some(target)) = (row.get(entry.column), entry.column.target())
+            else {
+                continue;
+            };
+            let mapped = map.get(ElementRef::new(target, id)).map(|r| r.id);
+            row.set(entry.column, mapped);
+        }
     }
 }
 
-impl Edit for HalfEdgeMesh {
+impl<T: Tables> Edit for T {
     fn push_row(&mut self, kind: ElementKind) -> Result<ElementRef, EditError> {
         let len = self.count(kind);
         full(kind, len)?;
+        let structure = Rows::structure(self);
+        let (vertices, faces, edges, _) = self.tables();
         match kind {
-            ElementKind::Vertex => self.vertices.push(half_edge::Vertex::default()),
-            ElementKind::Face => self.faces.push(half_edge::Face {
-                incident_edge: HalfEdgeId::UNSET,
-            }),
-            ElementKind::Edge => {
-                self.half_edges.push(HalfEdge {
-                    end_vertex: VertexId::UNSET,
-                    face: None,
-                    pair_edge: HalfEdgeId::UNSET,
-                    successor_edge: HalfEdgeId::UNSET,
-                });
-                self.forget_predecessors();
-            }
+            ElementKind::Vertex => vertices.push(new_row(structure, kind)),
+            ElementKind::Face => faces.push(new_row(structure, kind)),
+            ElementKind::Edge => edges.push(new_row(structure, kind)),
+        }
+        if kind == ElementKind::Edge {
+            self.written(Column::SuccessorEdge);
         }
         Ok(ElementRef::new(kind, len as u32))
     }
 
     fn pop_row(&mut self, kind: ElementKind) -> Result<(), EditError> {
-        let len = self.count(kind);
-        let last = ElementRef::new(kind, len.saturating_sub(1) as u32);
+        let last = ElementRef::new(kind, self.count(kind).saturating_sub(1) as u32);
+        let (vertices, faces, edges, deleted) = self.tables();
         let popped = match kind {
-            ElementKind::Vertex => self.vertices.pop().is_some(),
-            ElementKind::Face => self.faces.pop().is_some(),
-            ElementKind::Edge => {
-                self.forget_predecessors();
-                self.half_edges.pop().is_some()
-            }
+            ElementKind::Vertex => vertices.pop().is_some(),
+            ElementKind::Face => faces.pop().is_some(),
+            ElementKind::Edge => edges.pop().is_some(),
         };
-        self.deleted.remove(last);
+        deleted.remove(last);
+        if kind == ElementKind::Edge {
+            self.written(Column::SuccessorEdge);
+        }
         popped.then_some(()).ok_or(EditError::NoSuchElement(last))
     }
 
     fn set_deleted(&mut self, element: ElementRef, deleted: bool) -> Result<(), EditError> {
         let count = self.count(element.kind);
-        mark_deleted(&mut self.deleted, count, element, deleted)?;
+        mark_deleted(self.tables().3, count, element, deleted)?;
         if element.kind == ElementKind::Edge {
-            self.forget_predecessors();
+            self.written(Column::SuccessorEdge);
         }
         Ok(())
     }
 
     fn set_position(&mut self, vertex: VertexId, position: Vec3) -> Result<Vec3, EditError> {
-        let deleted = self.deleted.contains(vertex.into());
-        let row = self.vertices.get_mut(vertex.index()).filter(|_| !deleted);
-        move_vertex(row.map(|v| &mut v.position), vertex, position)
+        move_vertex(self.position_mut(vertex), vertex, position)
     }
 
     fn compact(&mut self) -> Renumbering {
-        let map = Renumbering::new(
-            &self.deleted,
-            [self.vertices.len(), self.half_edges.len(), self.faces.len()],
-        );
-        retain_rows(&mut self.vertices, &map.vertices);
-        retain_rows(&mut self.half_edges, &map.edges);
-        retain_rows(&mut self.faces, &map.faces);
-        for vertex in &mut self.vertices {
-            vertex.incident_edge = vertex
-                .incident_edge
-                .and_then(|h| map.id(h, HalfEdgeId::new));
-        }
-        for face in &mut self.faces {
-            face.incident_edge =
-                map.required(face.incident_edge, HalfEdgeId::new, HalfEdgeId::UNSET);
-        }
-        for h in &mut self.half_edges {
-            h.end_vertex = map.required(h.end_vertex, VertexId::new, VertexId::UNSET);
-            h.face = h.face.and_then(|f| map.id(f, FaceId::new));
-            h.pair_edge = map.required(h.pair_edge, HalfEdgeId::new, HalfEdgeId::UNSET);
-            h.successor_edge = map.required(h.successor_edge, HalfEdgeId::new, HalfEdgeId::UNSET);
-        }
-        self.deleted.clear();
-        self.forget_predecessors();
+        let structure = Rows::structure(self);
+        let (vertices, faces, edges, deleted) = self.tables();
+        let map = Renumbering::new(deleted, [vertices.len(), edges.len(), faces.len()]);
+        retain_rows(vertices, &map.vertices);
+        retain_rows(edges, &map.edges);
+        retain_rows(faces, &map.faces);
+        renumber(vertices, structure, ElementKind::Vertex, &map);
+        renumber(edges, structure, ElementKind::Edge, &map);
+        renumber(faces, structure, ElementKind::Face, &map);
+        deleted.clear();
+        self.written(Column::SuccessorEdge);
         map
     }
 
     fn deleted_rows(&self) -> &Deleted {
-        &self.deleted
+        Rows::deleted(self)
     }
 }
 
