@@ -299,17 +299,18 @@ fn retain_rows<T>(rows: &mut Vec<T>, keep: &[Option<u32>]) {
     });
 }
 
-/// A structure's tables as growable vectors: all the generic [`Edit`]
-/// needs besides the schema's column-by-column access to rows.
+/// A structure's three tables as growable vectors, and its deleted rows.
+pub(crate) struct TablesMut<'m, V, F, E> {
+    vertices: &'m mut Vec<V>,
+    faces: &'m mut Vec<F>,
+    edges: &'m mut Vec<E>,
+    deleted: &'m mut Deleted,
+}
+
+/// What the generic [`Edit`] needs of a structure besides the schema's
+/// column-by-column access to rows.
 pub(crate) trait Tables: RowsMut + EditHooks {
-    fn tables(
-        &mut self,
-    ) -> (
-        &mut Vec<Self::Vertex>,
-        &mut Vec<Self::Face>,
-        &mut Vec<Self::Edge>,
-        &mut Deleted,
-    );
+    fn tables(&mut self) -> TablesMut<'_, Self::Vertex, Self::Face, Self::Edge>;
 
     fn position_mut(&mut self, vertex: VertexId) -> Option<&mut Vec3>;
 }
@@ -317,20 +318,13 @@ pub(crate) trait Tables: RowsMut + EditHooks {
 macro_rules! tables {
     ($($mesh:ty: $edges:ident),*) => {$(
         impl Tables for $mesh {
-            fn tables(
-                &mut self,
-            ) -> (
-                &mut Vec<Self::Vertex>,
-                &mut Vec<Self::Face>,
-                &mut Vec<Self::Edge>,
-                &mut Deleted,
-            ) {
-                (
-                    &mut self.vertices,
-                    &mut self.faces,
-                    &mut self.$edges,
-                    &mut self.deleted,
-                )
+            fn tables(&mut self) -> TablesMut<'_, Self::Vertex, Self::Face, Self::Edge> {
+                TablesMut {
+                    vertices: &mut self.vertices,
+                    faces: &mut self.faces,
+                    edges: &mut self.$edges,
+                    deleted: &mut self.deleted,
+                }
             }
 
             fn position_mut(&mut self, vertex: VertexId) -> Option<&mut Vec3> {
@@ -374,11 +368,11 @@ impl<T: Tables> Edit for T {
         let len = self.count(kind);
         full(kind, len)?;
         let structure = Rows::structure(self);
-        let (vertices, faces, edges, _) = self.tables();
+        let tables = self.tables();
         match kind {
-            ElementKind::Vertex => vertices.push(new_row(structure, kind)),
-            ElementKind::Face => faces.push(new_row(structure, kind)),
-            ElementKind::Edge => edges.push(new_row(structure, kind)),
+            ElementKind::Vertex => tables.vertices.push(new_row(structure, kind)),
+            ElementKind::Face => tables.faces.push(new_row(structure, kind)),
+            ElementKind::Edge => tables.edges.push(new_row(structure, kind)),
         }
         if kind == ElementKind::Edge {
             self.written(Column::SuccessorEdge);
@@ -388,13 +382,13 @@ impl<T: Tables> Edit for T {
 
     fn pop_row(&mut self, kind: ElementKind) -> Result<(), EditError> {
         let last = ElementRef::new(kind, self.count(kind).saturating_sub(1) as u32);
-        let (vertices, faces, edges, deleted) = self.tables();
+        let tables = self.tables();
         let popped = match kind {
-            ElementKind::Vertex => vertices.pop().is_some(),
-            ElementKind::Face => faces.pop().is_some(),
-            ElementKind::Edge => edges.pop().is_some(),
+            ElementKind::Vertex => tables.vertices.pop().is_some(),
+            ElementKind::Face => tables.faces.pop().is_some(),
+            ElementKind::Edge => tables.edges.pop().is_some(),
         };
-        deleted.remove(last);
+        tables.deleted.remove(last);
         if kind == ElementKind::Edge {
             self.written(Column::SuccessorEdge);
         }
@@ -403,7 +397,7 @@ impl<T: Tables> Edit for T {
 
     fn set_deleted(&mut self, element: ElementRef, deleted: bool) -> Result<(), EditError> {
         let count = self.count(element.kind);
-        mark_deleted(self.tables().3, count, element, deleted)?;
+        mark_deleted(self.tables().deleted, count, element, deleted)?;
         if element.kind == ElementKind::Edge {
             self.written(Column::SuccessorEdge);
         }
@@ -416,15 +410,15 @@ impl<T: Tables> Edit for T {
 
     fn compact(&mut self) -> Renumbering {
         let structure = Rows::structure(self);
-        let (vertices, faces, edges, deleted) = self.tables();
-        let map = Renumbering::new(deleted, [vertices.len(), edges.len(), faces.len()]);
-        retain_rows(vertices, &map.vertices);
-        retain_rows(edges, &map.edges);
-        retain_rows(faces, &map.faces);
-        renumber(vertices, structure, ElementKind::Vertex, &map);
-        renumber(edges, structure, ElementKind::Edge, &map);
-        renumber(faces, structure, ElementKind::Face, &map);
-        deleted.clear();
+        let t = self.tables();
+        let map = Renumbering::new(t.deleted, [t.vertices.len(), t.edges.len(), t.faces.len()]);
+        retain_rows(t.vertices, &map.vertices);
+        retain_rows(t.edges, &map.edges);
+        retain_rows(t.faces, &map.faces);
+        renumber(t.vertices, structure, ElementKind::Vertex, &map);
+        renumber(t.edges, structure, ElementKind::Edge, &map);
+        renumber(t.faces, structure, ElementKind::Face, &map);
+        t.deleted.clear();
         self.written(Column::SuccessorEdge);
         map
     }
