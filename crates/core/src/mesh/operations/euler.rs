@@ -8,7 +8,7 @@ use glam::Vec3;
 
 use super::patch::{Dart, Patch};
 use super::refusal::{Action, EdgeName, Refusal};
-use super::split_face::{corner, cut};
+use super::split_face::corner;
 use super::{Applied, EdgeRow, Operation, run};
 use crate::mesh::edit::{Edit, Editor};
 use crate::mesh::ids::{FaceId, VertexId};
@@ -314,11 +314,7 @@ pub fn mef<M: Edit + ?Sized>(
     u: VertexId,
     w: VertexId,
 ) -> Result<Applied, Refusal> {
-    run(editor, |patch| {
-        let f = patch.face(face.raw())?;
-        let (u, w) = (patch.vertex(u.raw())?, patch.vertex(w.raw())?);
-        cut(patch, f, u, w, Action::SplittingFace(f))
-    })
+    super::split_face::split_face(editor, face, u, w)
 }
 
 /// KEF, kill edge and face: the inverse of [`mef`]. Removes the named edge
