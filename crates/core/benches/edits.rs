@@ -1,0 +1,93 @@
+//! What an edit costs, on the 200k-face benchmark torus (half-edge):
+//!
+//! - a native flip and split (`operations::apply`, which clones nothing:
+//!   the mesh is edited in place and each op is undone to keep it fixed);
+//! - the traced `flipEdge` of the library (`run_editing`, every step and
+//!   change recorded), against the native flip on the same edge;
+//! - what the app does at every step of an editing trace: moving the mesh
+//!   one change (`Trace::seek`) and checking every rule (`validate`) and
+//!   the statistics (`live_stats`) of the whole mesh.
+//!
+//! Run: `cargo bench -p edgewise-core --bench edits`.
+
+use std::hint::black_box;
+use std::sync::Arc;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use edgewise_core::lang::{self, Algorithm, RunOptions, Value};
+use edgewise_core::mesh::operations::{self, Operation};
+use edgewise_core::mesh::{HalfEdgeMesh, Mesh, generate};
+
+fn flip_edge() -> Arc<Algorithm> {
+    let (file, text) = lang::library::SOURCES
+        .iter()
+        .find(|(file, _)| *file == "half-edge-edits.alg")
+        .expect("shipped");
+    let program = lang::compile_rendered(text, Some(file)).expect("the library compiles");
+    Arc::clone(program.algorithm("flipEdge").expect("shipped"))
+}
+
+fn edits(c: &mut Criterion) {
+    let (torus, _) = HalfEdgeMesh::build(&generate::torus(316, 316)).expect("the torus builds");
+    let mut mesh = Mesh::Half(torus);
+    let edge = 1000;
+    let mut group = c.benchmark_group("edits/torus-200k");
+    group.sample_size(20);
+
+    for (label, operation) in [
+        ("native flip", Operation::FlipEdge),
+        ("native split", Operation::SplitEdge),
+    ] {
+        group.bench_function(label, |b| {
+            b.iter(|| {
+                let applied = operations::apply(&mut mesh, operation, &[edge]).expect("it applies");
+                for change in applied.journal.iter().rev() {
+                    change.revert(&mut mesh).expect("reverts");
+                }
+                black_box(applied.journal.len())
+            });
+        });
+    }
+
+    let algorithm = flip_edge();
+    group.bench_function("traced flipEdge (run_editing)", |b| {
+        b.iter(|| {
+            let trace = lang::run_editing(
+                &algorithm,
+                &mut mesh,
+                &[("h", Value::Edge(edge))],
+                RunOptions::default(),
+            )
+            .expect("inputs fit");
+            trace
+                .seek(&mut mesh, trace.changes().len(), 0)
+                .expect("reverts");
+            black_box(trace.len())
+        });
+    });
+
+    let trace = lang::run_editing(
+        &algorithm,
+        &mut mesh,
+        &[("h", Value::Edge(edge))],
+        RunOptions::default(),
+    )
+    .expect("inputs fit");
+    let changes = trace.changes().len();
+    group.bench_function("one step of the trace: seek one change", |b| {
+        b.iter(|| {
+            trace.seek(&mut mesh, changes, changes - 1).expect("seeks");
+            trace.seek(&mut mesh, changes - 1, changes).expect("seeks");
+        });
+    });
+    group.bench_function("one step of the trace: validate the mesh", |b| {
+        b.iter(|| black_box(mesh.validate().len()));
+    });
+    group.bench_function("one step of the trace: live statistics", |b| {
+        b.iter(|| black_box(mesh.live_stats().vertices));
+    });
+    group.finish();
+}
+
+criterion_group!(benches, edits);
+criterion_main!(benches);
