@@ -13,11 +13,18 @@ use lang_support::*;
 use proptest::prelude::*;
 use std::sync::Arc;
 
+/// The traversal libraries of the two structures (the editing ones are
+/// tested in `lang_edits.rs`).
 fn library() -> (Program, Program) {
-    let mut programs = lang::library::load().expect("the library compiles");
-    let half = programs.pop().expect("two library files");
-    let winged = programs.pop().expect("two library files");
-    (winged, half)
+    let programs = lang::library::load().expect("the library compiles");
+    let take = |name: &str| {
+        lang::library::SOURCES
+            .iter()
+            .position(|(file, _)| *file == name)
+            .and_then(|i| programs.get(i).cloned())
+            .expect("shipped")
+    };
+    (take("winged-edge.alg"), take("half-edge.alg"))
 }
 
 fn param_kind(algorithm: &Algorithm) -> ElementKind {
