@@ -9,7 +9,7 @@ use edgewise_core::lang::{
     self, Algorithm, InputError, Program, RunOptions, RuntimeErrorKind, StepKind, Trace, Value,
     execute, run,
 };
-use edgewise_core::mesh::generate;
+use edgewise_core::mesh::{Mesh, generate};
 use lang_support::*;
 use std::sync::Arc;
 
@@ -587,6 +587,61 @@ fn the_started_algorithms_return_goes_on_to_done() {
             value: Some(Value::Boolean(false))
         })
     ));
+}
+
+/// A call that edits: the changes are journaled at the callee's steps, and
+/// the trace seeks the mesh to any step.
+#[test]
+fn edits_inside_calls_are_journaled_at_the_callees_steps() {
+    let (_, text) = lang::library::SOURCES
+        .iter()
+        .find(|(file, _)| *file == "winged-edge-edits.alg")
+        .expect("shipped");
+    let program = program(text);
+    let split = algorithm(&program, "splitEdge");
+    assert!(split.edits());
+    assert!(algorithm(&program, "cutCorner").edits());
+    assert!(!algorithm(&program, "isTriangle").edits());
+    let mut mesh = Mesh::Winged(winged(&generate::tetrahedron()));
+    let original = mesh.clone();
+    let trace = lang::run_editing(
+        &split,
+        &mut mesh,
+        &[("e", Value::Edge(0))],
+        RunOptions::default(),
+    )
+    .expect("fits");
+    assert_eq!(
+        trace.outcome(),
+        &lang::Outcome::Finished,
+        "{}",
+        trace.render()
+    );
+    assert!(mesh.validate().is_empty());
+    let deep: Vec<usize> = (0..trace.len())
+        .filter(|&i| trace.changes_at(i).next().is_some())
+        .map(|i| trace.depth(i).expect("a step"))
+        .collect();
+    assert!(
+        deep.contains(&0) && deep.contains(&1) && deep.contains(&2),
+        "{deep:?}"
+    );
+    let after = mesh.clone();
+    // Step back to before each step and forwards again.
+    for index in (0..trace.len()).rev() {
+        let to = trace.changes_through(index.checked_sub(1));
+        trace
+            .seek(&mut mesh, trace.changes().len(), to)
+            .expect("reverts");
+        trace
+            .seek(&mut mesh, to, trace.changes().len())
+            .expect("replays");
+        assert_eq!(mesh, after);
+    }
+    trace
+        .seek(&mut mesh, trace.changes().len(), 0)
+        .expect("reverts");
+    assert_eq!(mesh, original);
 }
 
 #[test]
