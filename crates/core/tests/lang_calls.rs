@@ -727,3 +727,73 @@ end;
     assert!(!frames.is_empty());
     assert_eq!(trace.variables_at(trace.len() - 1), trace.final_variables());
 }
+
+/// The strips showcase: on closed triangle meshes every face is in exactly
+/// one strip, and each strip's faces follow one another across edges.
+#[test]
+fn triangle_strips_cover_every_face_once() {
+    let (_, text) = lang::library::SOURCES
+        .iter()
+        .find(|(file, _)| *file == "half-edge-strips.alg")
+        .expect("shipped");
+    let program = program(text);
+    let strips = algorithm(&program, "triangleStrips");
+    for (name, polygons) in [
+        ("octahedron", octahedron()),
+        ("icosahedron", icosahedron()),
+        ("tetrahedron", generate::tetrahedron()),
+    ] {
+        let mesh = half(&polygons);
+        let run = execute(
+            &strips,
+            &mesh,
+            &[("f", Value::Face(0))],
+            RunOptions::default(),
+        )
+        .expect("fits");
+        assert_eq!(run.outcome, lang::Outcome::Finished, "{name}");
+        let mut faces: Vec<u32> = run.marked.iter().map(|f| f.id).collect();
+        assert_eq!(faces.len(), polygons.face_count(), "{name}: {faces:?}");
+        faces.sort_unstable();
+        faces.dedup();
+        assert_eq!(faces.len(), polygons.face_count(), "{name}: a face twice");
+        let lengths = run
+            .items(run.variable(&strips, "lengths").expect("a variable"))
+            .expect("an array")
+            .to_vec();
+        let mut marked = run.marked.iter();
+        for length in &lengths {
+            let Value::Integer(length) = *length else {
+                panic!("{length}")
+            };
+            let strip: Vec<u32> = marked
+                .by_ref()
+                .take(length as usize)
+                .map(|f| f.id)
+                .collect();
+            for pair in strip.windows(2) {
+                let shared = polygons
+                    .face(pair[0] as usize)
+                    .expect("a face")
+                    .iter()
+                    .filter(|v| polygons.face(pair[1] as usize).expect("a face").contains(v))
+                    .count();
+                assert_eq!(shared, 2, "{name}: {pair:?} share no edge");
+            }
+        }
+        assert!(marked.next().is_none());
+        eprintln!("{name}: {}", run.messages.last().expect("a summary"));
+    }
+    let cube = half(&generate::cube_zyx());
+    let run = execute(
+        &strips,
+        &cube,
+        &[("f", Value::Face(0))],
+        RunOptions::default(),
+    )
+    .expect("fits");
+    assert_eq!(
+        run.outcome.error().map(|e| e.kind),
+        Some(RuntimeErrorKind::Refused)
+    );
+}
