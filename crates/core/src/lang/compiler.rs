@@ -7,7 +7,7 @@ use super::ast::*;
 use super::builtin::{Axis, Builtin};
 use super::checker::{Scope, Signatures};
 use super::diagnostic::{Diagnostic, LineIndex, Span};
-use super::types::{Type, Value};
+use super::types::{Item, Type, Value};
 use crate::schema::{Column, ElementKind, Structure};
 use std::fmt;
 use std::ops::Deref;
@@ -255,6 +255,8 @@ pub struct Routine {
     /// The register file a run starts from: each type's initial value and
     /// the constants, copied in one go at each call.
     pub(crate) initial: Vec<Value>,
+    /// The array variables, which each run or call gives new arrays.
+    pub(crate) array_variables: Vec<(Reg, Item)>,
     /// The whole file's text, shared by the algorithms compiled from it.
     pub source: Arc<str>,
     /// `algorithm` through the closing `end`.
@@ -497,6 +499,13 @@ fn compile_algorithm(
             *slot = value;
         }
     }
+    let array_variables = (0..)
+        .zip(&variables)
+        .filter_map(|(reg, v)| match v.ty {
+            Type::Array(item) => Some((reg, item)),
+            _ => None,
+        })
+        .collect();
     Ok(Routine {
         name: decl.name.name.clone(),
         description: decl.description.clone(),
@@ -509,6 +518,7 @@ fn compile_algorithm(
         result: decl.returns.and_then(|(ty, _)| ty),
         arguments: compiler.arguments,
         initial,
+        array_variables,
         source: Arc::clone(source),
         span: decl.span,
         first_line: lines.line(decl.span.start),

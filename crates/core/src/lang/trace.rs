@@ -209,7 +209,7 @@ const MAX_INDENT: usize = 16;
 const NONE: u32 = u32::MAX;
 
 /// One run of an algorithm: the started one (frame 0) or a call.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 struct FrameRecord {
     routine: u32,
     parent: u32,
@@ -225,12 +225,43 @@ struct FrameRecord {
     snapshots: Vec<(u32, u32)>,
 }
 
+/// Every frame: the started algorithm's (0) apart, so that a run without
+/// calls allocates nothing for frames, then the calls, numbered from 1.
+#[derive(Clone, Debug, Default)]
+struct Frames {
+    root: FrameRecord,
+    calls: Vec<FrameRecord>,
+}
+
+impl Frames {
+    fn get(&self, id: usize) -> Option<&FrameRecord> {
+        match id.checked_sub(1) {
+            None => Some(&self.root),
+            Some(call) => self.calls.get(call),
+        }
+    }
+
+    fn get_mut(&mut self, id: usize) -> Option<&mut FrameRecord> {
+        match id.checked_sub(1) {
+            None => Some(&mut self.root),
+            Some(call) => self.calls.get_mut(call),
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.calls.len() + 1
+    }
+}
+
 /// From step `start` on, until the next segment, the steps are `frame`'s.
 #[derive(Clone, Copy, Debug)]
 struct Segment {
     start: u32,
     frame: u32,
 }
+
+/// The segments of a run without calls, which keeps none.
+const ROOT_ONLY: [Segment; 1] = [Segment { start: 0, frame: 0 }];
 
 /// One array's history: its item type and every change, in step order.
 #[derive(Clone, Debug)]
@@ -254,9 +285,9 @@ struct ArrayChange {
 #[derive(Clone, Debug)]
 pub struct Trace {
     algorithm: Arc<Algorithm>,
-    initial: Vec<Value>,
     steps: Vec<Step>,
-    frames: Vec<FrameRecord>,
+    frames: Frames,
+    /// Empty when the run made no call: every step is frame 0's.
     segments: Vec<Segment>,
     /// The values of every frame's snapshots.
     values: Vec<Value>,
@@ -276,7 +307,9 @@ pub struct Trace {
 #[derive(Default)]
 pub(crate) struct TraceRecorder {
     steps: Vec<Step>,
-    frames: Vec<FrameRecord>,
+    frames: Frames,
+    /// Whether the started algorithm's frame has begun.
+    started: bool,
     segments: Vec<Segment>,
     values: Vec<Value>,
     arrays: Vec<ArrayLog>,
@@ -284,12 +317,12 @@ pub(crate) struct TraceRecorder {
     highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
     vectors: Vec<Vec3>,
-    /// The callers of the running frame with their own step counts,
-    /// outermost first.
+    /// The callers of the running frame, outermost first, each with how
+    /// many of its own steps remain until its next snapshot.
     callers: Vec<(u32, usize)>,
-    /// The running frame and how many steps it has made.
+    /// The running frame, and the step before which it is snapshotted next.
     frame: u32,
-    own: usize,
+    due: usize,
 }
 
 fn index_u32(n: usize) -> u32 {
@@ -312,10 +345,26 @@ impl TraceRecorder {
         index_u32(self.steps.len().saturating_sub(1))
     }
 
+    /// Snapshots the running frame's variables before the next step; the
+    /// next one is due [`SNAPSHOT_INTERVAL`] of its own steps later.
+    #[cold]
+    fn snapshot(&mut self, variables: &[Value]) {
+        let offset = index_u32(self.values.len());
+        self.values.extend_from_slice(variables);
+        let step = index_u32(self.steps.len());
+        if let Some(frame) = self.frames.get_mut(self.frame as usize) {
+            frame.snapshots.push((step, offset));
+        }
+        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+    }
+
     /// Starts a segment of the running frame's steps at the next step.
     fn segment(&mut self) {
         let start = index_u32(self.steps.len());
         let frame = self.frame;
+        if self.segments.is_empty() {
+            self.segments.extend(ROOT_ONLY);
+        }
         match self.segments.last_mut() {
             // A frame that made no step owns none.
             Some(last) if last.start == start => last.frame = frame,
@@ -326,7 +375,6 @@ impl TraceRecorder {
     pub(crate) fn finish(
         self,
         algorithm: Arc<Algorithm>,
-        initial: Vec<Value>,
         final_variables: Vec<Value>,
         changes: Vec<(u32, Change)>,
         result: Option<Value>,
@@ -338,12 +386,11 @@ impl TraceRecorder {
         recorder.values.shrink_to_fit();
         recorder.marks.shrink_to_fit();
         recorder.highlights.shrink_to_fit();
-        recorder.frames.shrink_to_fit();
+        recorder.frames.calls.shrink_to_fit();
         recorder.segments.shrink_to_fit();
         let recorder = recorder;
         Trace {
             algorithm,
-            initial,
             steps: recorder.steps,
             frames: recorder.frames,
             segments: recorder.segments,
@@ -364,30 +411,25 @@ impl TraceRecorder {
 impl Recorder for TraceRecorder {
     #[inline(always)]
     fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]) {
-        if self.own != 0 && self.own.is_multiple_of(SNAPSHOT_INTERVAL) {
-            let offset = index_u32(self.values.len());
-            self.values.extend_from_slice(variables);
-            let step = index_u32(self.steps.len());
-            if let Some(frame) = self.frames.get_mut(self.frame as usize) {
-                frame.snapshots.push((step, offset));
-            }
+        if self.steps.len() == self.due {
+            self.snapshot(variables);
         }
-        self.own += 1;
         let (a, b, r) = (self.encode(a), self.encode(b), self.encode(r));
         self.steps.push(Step { pc, a, b, r });
     }
 
     fn enter(&mut self, routine: u32, variables: &[Value]) {
-        let id = index_u32(self.frames.len());
-        let (parent, call_step) = if self.frames.is_empty() {
+        let root = !self.started;
+        let (parent, call_step) = if root {
             (NONE, NONE)
         } else {
-            self.callers.push((self.frame, self.own));
+            let left = self.due.saturating_sub(self.steps.len());
+            self.callers.push((self.frame, left));
             (self.frame, self.current_step())
         };
         let entry = index_u32(self.values.len());
         self.values.extend_from_slice(variables);
-        self.frames.push(FrameRecord {
+        let record = FrameRecord {
             routine,
             parent,
             depth: index_u32(self.callers.len()),
@@ -396,16 +438,23 @@ impl Recorder for TraceRecorder {
             entry,
             count: index_u32(variables.len()),
             snapshots: Vec::new(),
-        });
-        self.frame = id;
-        self.own = 0;
-        self.segment();
+        };
+        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+        if root {
+            self.started = true;
+            self.frames.root = record;
+            self.frame = 0;
+        } else {
+            self.frames.calls.push(record);
+            self.frame = index_u32(self.frames.calls.len());
+            self.segment();
+        }
     }
 
     fn leave(&mut self) {
-        if let Some((frame, own)) = self.callers.pop() {
+        if let Some((frame, left)) = self.callers.pop() {
             self.frame = frame;
-            self.own = own;
+            self.due = self.steps.len() + left;
             self.segment();
         }
     }
@@ -507,6 +556,15 @@ impl Trace {
             .map_or(0, |s| s.frame as usize)
     }
 
+    /// The segments, with the one a run without calls leaves implicit.
+    fn segments(&self) -> &[Segment] {
+        if self.segments.is_empty() {
+            &ROOT_ONLY
+        } else {
+            &self.segments
+        }
+    }
+
     fn routine_of(&self, frame: usize) -> Option<&Routine> {
         let record = self.frames.get(frame)?;
         self.algorithm.routines().get(record.routine as usize)
@@ -514,7 +572,7 @@ impl Trace {
 
     /// The frame a call step started.
     fn called_frame(&self, index: usize) -> Option<usize> {
-        let calls = self.frames.get(1..)?;
+        let calls = &self.frames.calls;
         let at = calls.partition_point(|f| (f.call_step as usize) < index);
         calls
             .get(at)
@@ -728,7 +786,11 @@ impl Trace {
     /// The started algorithm's variables (parameters first) before the
     /// first step.
     pub fn initial_variables(&self) -> &[Value] {
-        &self.initial
+        let root = &self.frames.root;
+        let start = root.entry as usize;
+        self.values
+            .get(start..start + root.count as usize)
+            .unwrap_or(&[])
     }
 
     /// The started algorithm's variables when the run stopped.
@@ -792,11 +854,11 @@ impl Trace {
         range: std::ops::Range<usize>,
     ) -> impl Iterator<Item = (std::ops::Range<usize>, usize)> + '_ {
         let end = range.end.min(self.steps.len());
-        let first = self
-            .segments
+        let segments = self.segments();
+        let first = segments
             .partition_point(|s| s.start as usize <= range.start)
             .saturating_sub(1);
-        let segments = self.segments.get(first..).unwrap_or(&[]);
+        let segments = segments.get(first..).unwrap_or(&[]);
         segments
             .iter()
             .enumerate()
@@ -983,9 +1045,8 @@ impl Trace {
     /// counting message texts), for the memory figure in the documentation.
     pub fn memory_bytes(&self) -> usize {
         use std::mem::size_of;
-        let frames: usize = self
-            .frames
-            .iter()
+        let frames: usize = std::iter::once(&self.frames.root)
+            .chain(&self.frames.calls)
             .map(|f| f.snapshots.capacity() * size_of::<(u32, u32)>())
             .sum();
         let arrays: usize = self
@@ -994,7 +1055,7 @@ impl Trace {
             .map(|a| a.changes.capacity() * size_of::<ArrayChange>())
             .sum();
         self.steps.capacity() * size_of::<Step>()
-            + self.frames.capacity() * size_of::<FrameRecord>()
+            + (self.frames.calls.capacity() + 1) * size_of::<FrameRecord>()
             + frames
             + self.segments.capacity() * size_of::<Segment>()
             + self.values.capacity() * size_of::<Value>()

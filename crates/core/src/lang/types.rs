@@ -237,8 +237,23 @@ impl Value {
 }
 
 impl PartialEq for Value {
+    /// The same as comparing identities, matched directly: the VM compares
+    /// values at every loop test, and building two identities costs more
+    /// than the lookup being tested.
+    #[inline]
     fn eq(&self, other: &Self) -> bool {
-        self.identity() == other.identity()
+        match (*self, *other) {
+            (Value::Null, Value::Null) => true,
+            (Value::Vertex(a), Value::Vertex(b))
+            | (Value::Edge(a), Value::Edge(b))
+            | (Value::Face(a), Value::Face(b))
+            | (Value::Array(a), Value::Array(b)) => a == b,
+            (Value::Integer(a), Value::Integer(b)) => a == b,
+            (Value::Boolean(a), Value::Boolean(b)) => a == b,
+            (Value::Float(a), Value::Float(b)) => a.to_bits() == b.to_bits(),
+            (Value::Vector(_), Value::Vector(_)) => self.identity() == other.identity(),
+            _ => false,
+        }
     }
 }
 
@@ -362,6 +377,33 @@ mod tests {
         ] {
             assert_eq!(ty.decode(ty.encode(value)), value);
         }
+    }
+
+    #[test]
+    fn equality_is_identity() {
+        let values = [
+            Value::Null,
+            Value::Vertex(1),
+            Value::Edge(1),
+            Value::Face(1),
+            Value::Array(1),
+            Value::Integer(1),
+            Value::Boolean(true),
+            Value::Float(1.0),
+            Value::Float(-0.0),
+            Value::Float(0.0),
+            Value::Vector(Vec3::ONE),
+            Value::Vector(Vec3::ZERO),
+        ];
+        for a in values {
+            for b in values {
+                assert_eq!(a == b, a.identity() == b.identity(), "{a:?} {b:?}");
+            }
+        }
+        let array = Type::Array(Item::Edge);
+        assert_eq!(array.decode(array.encode(Value::Array(7))), Value::Array(7));
+        assert_eq!(array.name(), "Array of Edge");
+        assert_eq!(Item::of(Type::Null), None);
     }
 
     #[test]

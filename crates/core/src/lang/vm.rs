@@ -219,16 +219,18 @@ impl Algorithm {
             }
             let name = variable.name.clone();
             let given = inputs.iter().find(|(n, _)| *n == variable.name);
-            if variable.ty.item().is_some() {
+            if let Type::Array(_) = variable.ty {
                 // An array parameter of the algorithm started begins empty.
-                if let Some(&(_, value)) = given.filter(|(_, v)| *v != Value::Null) {
-                    return Err(InputError::WrongType {
-                        name,
-                        expected: variable.ty,
-                        found: value.to_string(),
-                    });
+                match given {
+                    Some(&(_, value)) if value != Value::Null => {
+                        return Err(InputError::WrongType {
+                            name,
+                            expected: variable.ty,
+                            found: value.to_string(),
+                        });
+                    }
+                    _ => values.push(Value::Null),
                 }
-                values.push(Value::Null);
                 continue;
             }
             let Some(&(_, value)) = given else {
@@ -287,14 +289,14 @@ pub fn run<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Reading(topology),
         &variables,
         TraceRecorder::default(),
         options,
     );
-    Ok(machine.into_trace(algorithm))
+    Ok(machine.trace(algorithm))
 }
 
 /// Runs an algorithm that may change the mesh, recording every step and
@@ -308,14 +310,14 @@ pub fn run_editing(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Editing::new(mesh),
         &variables,
         TraceRecorder::default(),
         options,
     );
-    Ok(machine.into_trace(algorithm))
+    Ok(machine.trace(algorithm))
 }
 
 /// The result of [`execute`]: what a run produced, without its steps.
@@ -363,14 +365,14 @@ pub fn execute<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Reading(topology),
         &variables,
         OutputRecorder::default(),
         options,
     );
-    Ok(machine.into_execution())
+    Ok(machine.execution())
 }
 
 /// [`execute`] for an algorithm that may change the mesh: `mesh` is left
@@ -382,14 +384,14 @@ pub fn execute_editing(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Editing::new(mesh),
         &variables,
         OutputRecorder::default(),
         options,
     );
-    Ok(machine.into_execution())
+    Ok(machine.execution())
 }
 
 /// Where the VM reads the mesh and, when it may, changes it.
@@ -692,11 +694,12 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         registers.get(..count).unwrap_or(&[]).to_vec()
     }
 
-    fn into_trace(mut self, algorithm: &Arc<Algorithm>) -> Trace
+    // The two below take the machine by reference: moving it costs more
+    // than a short run.
+    fn trace(&mut self, algorithm: &Arc<Algorithm>) -> Trace
     where
-        R: Into<TraceRecorder>,
+        R: Into<TraceRecorder> + Default,
     {
-        let initial = self.root_variables();
         let outcome = self.run();
         let final_variables = self.root_variables();
         let changes: Vec<(u32, Change)> = self
@@ -705,10 +708,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             .copied()
             .zip(self.store.journal().iter().copied())
             .collect();
-        let recorder: TraceRecorder = self.recorder.into();
+        let recorder: TraceRecorder = std::mem::take(&mut self.recorder).into();
         recorder.finish(
             Arc::clone(algorithm),
-            initial,
             final_variables,
             changes,
             self.result,
@@ -716,9 +718,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         )
     }
 
-    fn into_execution(mut self) -> Execution
+    fn execution(&mut self) -> Execution
     where
-        R: Into<OutputRecorder>,
+        R: Into<OutputRecorder> + Default,
     {
         let outcome = self.run();
         let variables = self.root_variables();
@@ -727,13 +729,13 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             marked,
             highlighted,
             messages,
-        } = self.recorder.into();
+        } = std::mem::take(&mut self.recorder).into();
         Execution {
             marked,
             highlighted,
             messages,
             variables,
-            arrays: self.arrays.lists,
+            arrays: std::mem::take(&mut self.arrays.lists),
             result: self.result,
             steps: self.steps,
             changes,
@@ -749,12 +751,15 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         registers: &mut [Value],
         first: usize,
     ) -> Result<(), String> {
-        for (variable, slot) in routine.variables.iter().zip(registers).skip(first) {
-            if let Type::Array(item) = variable.ty {
-                self.arrays.reserve()?;
-                let number = u32::try_from(self.arrays.lists.len()).unwrap_or(u32::MAX);
-                self.arrays.lists.push(Vec::new());
-                self.recorder.array_created(item.ty());
+        for &(variable, item) in &routine.array_variables {
+            if usize::from(variable) < first {
+                continue;
+            }
+            self.arrays.reserve()?;
+            let number = index_u32(self.arrays.lists.len());
+            self.arrays.lists.push(Vec::new());
+            self.recorder.array_created(item.ty());
+            if let Some(slot) = registers.get_mut(usize::from(variable)) {
                 *slot = Value::Array(number);
             }
         }
@@ -950,62 +955,10 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     code = &self.routine.code;
                     continue;
                 }
-                Op::Index { dst, array, index } => {
-                    let (list, at) = (self.get(array), self.get(index));
-                    let code = || self.routine.snippet(instr.span);
-                    let item = match self.arrays.checked(list, at, code) {
-                        Ok((i, items)) => items.get(i).copied().unwrap_or(Value::Null),
-                        Err(problem) => return self.fail(pc, problem),
-                    };
-                    self.record(pc, list, at, item);
-                    self.set(dst, item);
-                }
-                Op::Store { array, index, src } => {
-                    let (list, at) = (self.get(array), self.get(index));
-                    let value = widen(self.routine.register_type(array).item(), self.get(src));
-                    let code = || self.routine.snippet(instr.span);
-                    let (i, old) = match self.arrays.checked(list, at, code) {
-                        Ok((i, items)) => (i, items.get(i).copied().unwrap_or(Value::Null)),
-                        Err(problem) => return self.fail(pc, problem),
-                    };
-                    if let Some(slot) = self
-                        .arrays
-                        .lists
-                        .get_mut(list.code() as usize)
-                        .and_then(|items| items.get_mut(i))
-                    {
-                        *slot = value;
+                Op::Index { .. } | Op::Store { .. } | Op::Append { .. } | Op::Length { .. } => {
+                    if let Err(message) = self.array(pc, instr) {
+                        return self.fail(pc, message);
                     }
-                    self.record(pc, list, at, value);
-                    self.recorder
-                        .array_changed(list.code(), i as u32, Some(old), value);
-                }
-                Op::Append { array, src } => {
-                    let list = self.get(array);
-                    let value = widen(self.routine.register_type(array).item(), self.get(src));
-                    let length = match self.arrays.list(list) {
-                        Ok(items) => items.len(),
-                        Err(problem) => return self.fail(pc, problem),
-                    };
-                    if let Err(problem) = self.arrays.reserve() {
-                        return self.fail(pc, problem);
-                    }
-                    if let Some(items) = self.arrays.lists.get_mut(list.code() as usize) {
-                        items.push(value);
-                    }
-                    let count = Value::Integer(i32::try_from(length + 1).unwrap_or(i32::MAX));
-                    self.record(pc, list, count, value);
-                    self.recorder
-                        .array_changed(list.code(), length as u32, None, value);
-                }
-                Op::Length { dst, array } => {
-                    let list = self.get(array);
-                    let length = match self.arrays.list(list) {
-                        Ok(items) => Value::Integer(i32::try_from(items.len()).unwrap_or(i32::MAX)),
-                        Err(problem) => return self.fail(pc, problem),
-                    };
-                    self.record(pc, list, Value::Null, length);
-                    self.set(dst, length);
                 }
                 Op::Assign { var, src } => {
                     let value = widen(Some(self.routine.register_type(var)), self.get(src));
@@ -1084,7 +1037,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     continue;
                 }
                 Op::JumpIf { cond, when, target } => {
-                    if self.get(cond) == Value::Boolean(when) {
+                    if matches!(self.get(cond), Value::Boolean(b) if b == when) {
                         if let Some(outcome) = self.jump(pc, target) {
                             return outcome;
                         }
@@ -1109,9 +1062,66 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         }
     }
 
+    /// Runs an array operation and records its step. Kept out of the main
+    /// loop, like calls, so that algorithms without them run as fast as
+    /// before they existed.
+    #[inline(never)]
+    fn array(&mut self, pc: usize, instr: &Instr) -> Result<(), String> {
+        let code = || self.routine.snippet(instr.span);
+        match instr.op {
+            Op::Index { dst, array, index } => {
+                let (list, at) = (self.get(array), self.get(index));
+                let (i, items) = self.arrays.checked(list, at, code)?;
+                let item = items.get(i).copied().unwrap_or(Value::Null);
+                self.record(pc, list, at, item);
+                self.set(dst, item);
+            }
+            Op::Store { array, index, src } => {
+                let (list, at) = (self.get(array), self.get(index));
+                let value = widen(self.routine.register_type(array).item(), self.get(src));
+                let (i, items) = self.arrays.checked(list, at, code)?;
+                let old = items.get(i).copied().unwrap_or(Value::Null);
+                if let Some(slot) = self
+                    .arrays
+                    .lists
+                    .get_mut(list.code() as usize)
+                    .and_then(|items| items.get_mut(i))
+                {
+                    *slot = value;
+                }
+                self.record(pc, list, at, value);
+                self.recorder
+                    .array_changed(list.code(), index_u32(i), Some(old), value);
+            }
+            Op::Append { array, src } => {
+                let list = self.get(array);
+                let value = widen(self.routine.register_type(array).item(), self.get(src));
+                let length = self.arrays.list(list)?.len();
+                self.arrays.reserve()?;
+                if let Some(items) = self.arrays.lists.get_mut(list.code() as usize) {
+                    items.push(value);
+                }
+                let count = Value::Integer(i32::try_from(length + 1).unwrap_or(i32::MAX));
+                self.record(pc, list, count, value);
+                self.recorder
+                    .array_changed(list.code(), index_u32(length), None, value);
+            }
+            Op::Length { dst, array } => {
+                let list = self.get(array);
+                let length = self.arrays.list(list)?.len();
+                let length = Value::Integer(i32::try_from(length).unwrap_or(i32::MAX));
+                self.record(pc, list, Value::Null, length);
+                self.set(dst, length);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
     /// Starts a call: records its step in the caller, then makes the callee
     /// the running frame, its parameters set from the arguments and its
     /// array variables new arrays.
+    #[inline(never)]
     fn call(&mut self, pc: usize, dst: Reg, number: u16, args: u32) -> Result<(), String> {
         let Some(callee) = self.routines.get(usize::from(number)) else {
             return Err(format!("there is no algorithm number {number} to call"));
@@ -1165,6 +1175,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
 
     /// Ends the running call: the caller runs again, with `result` in the
     /// call's register. Returns where the caller goes on.
+    #[inline(never)]
     fn return_to_caller(&mut self, result: Option<Value>) -> usize {
         let Some(caller) = self.frames.pop() else {
             return self.routine.code.len();
@@ -1343,6 +1354,10 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     fn cannot_act_message(&self, word: &str, reg: Reg) -> String {
         format!("cannot {word} null: {}", self.explain_null(reg))
     }
+}
+
+fn index_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
 }
 
 /// `value` as a variable or item of type `ty` holds it: an Integer
