@@ -1213,3 +1213,21 @@ impl Trace {
         out
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::mem::size_of;
+
+    /// The sizes algorithms/README.md gives for a step and a call.
+    #[test]
+    fn steps_and_calls_stay_small() {
+        assert_eq!(size_of::<Step>(), 16);
+        assert_eq!(
+            size_of::<FrameRecord>() + 2 * size_of::<Segment>(),
+            72,
+            "a call's record and its two segments"
+        );
+        assert_eq!(size_of::<Value>(), 16);
+    }
+}
