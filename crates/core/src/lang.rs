@@ -1,8 +1,8 @@
 //! The algorithm language of the journal paper's Appendix A, also accepting
 //! the dialect of the half-edge paper's Figure 5, extended with Integer,
 //! Boolean, Float and Vector values, `null`, `message`, and the papers'
-//! future work of changing the mesh: writes into records, `new`, `delete`
-//! and `refuse`.
+//! future work: changing the mesh (writes into records, `new`, `delete`
+//! and `refuse`), algorithms that call one another, and arrays.
 //!
 //! Pipeline: [`lexer`] → [`parser`] (syntax tree in [`ast`]) → [`checker`]
 //! (names and types) → [`compiler`] (linear code, listed by [`disasm`]) →
@@ -11,7 +11,8 @@
 //! ```text
 //! file        := algorithm-decl [ ";" ] { algorithm-decl [ ";" ] }
 //! algorithm-decl :=
-//!     "algorithm" ident "(" [ params ] ")" [ ":" mesh-type ] [ ";" ]
+//!     "algorithm" ident "(" [ params ] ")" [ ":" mesh-type ]
+//!         [ "returns" type ] [ ";" ]
 //!     [ "structuretype" mesh-type [ ";" ] ]        (one of the two forms)
 //!     [ "description" string [ ";" ] ]
 //!     { "var" decls }
@@ -21,6 +22,9 @@
 //! statement-list := { statement ";" }     (";" optional before end/else/while)
 //! statement   := ident ":=" expr
 //!              | expr "." lookup ":=" expr             (a write into a record)
+//!              | expr "[" expr "]" ":=" expr           (a write into an array)
+//!              | ident "(" [ expr { "," expr } ] ")"   (a call; `append(a, x)`)
+//!              | "return" [ expr ]
 //!              | "delete" expr
 //!              | "refuse" item { "," item }            (stops: a precondition failed)
 //!              | "if" expr "then" statement-list
@@ -36,13 +40,16 @@
 //!              | "message" item { "," item }       item := string | expr
 //! expr        := or-expr;  "or" < "and" < "not" < comparisons
 //!                (= == <> < <= > >=, not chained) < + - < * / div mod < unary -
-//!                < postfix lookups (expr "." lookup) < primary
+//!                < postfix (expr "." lookup, expr "[" expr "]") < primary
 //! primary     := ident | integer | float | "true" | "false" | "null"
 //!              | "new" ("Vertex" | "Edge" | "Face")
-//!              | ident "(" [ expr { "," expr } ] ")"   (vector, float, sqrt)
+//!              | ident "(" [ expr { "," expr } ] ")"
+//!                    (a built-in: vector, float, sqrt, length; or an
+//!                     algorithm of the file that returns a value)
 //!              | "(" expr ")"
 //! mesh-type   := "WingedEdge" | "HalfEdge"
-//! type        := "Vertex" | "Edge" | "Face" | "Integer" | "Boolean"
+//! type        := scalar-type | "Array" "of" scalar-type
+//! scalar-type := "Vertex" | "Edge" | "Face" | "Integer" | "Boolean"
 //!              | "Float" | "Vector"
 //! ```
 //! A Float literal has a point with digits after it (`0.5`). `/` divides
@@ -53,18 +60,39 @@
 //! pair of half-edges whose `pair`s name each other; `delete` of a half-edge
 //! deletes its pair too. A deleted row keeps its id as a gap. A write may
 //! leave the tables inconsistent for a while; the tools say where.
-//! Keywords, type names, structure names and lookup names ignore case;
+//!
+//! Calls: an algorithm calls any algorithm of its file that walks the same
+//! structure, by name, with one argument per parameter (an Integer widens to
+//! a Float). One declared `returns T` gives a value with `return expr` and
+//! can be used in expressions; every way through it must end in `return`
+//! (or `refuse`). A plain `return` leaves one without a result early. A
+//! call to one that returns nothing is a statement of its own. Calls may
+//! recurse, up to [`vm::MAX_CALL_DEPTH`] algorithms running at once. A
+//! `return` in the algorithm that was started goes on to its `end`.
+//!
+//! Arrays: `Array of T` holds any type but an array. A variable of it
+//! starts as a new empty array; `a[i]` (from 0) reads and writes an item,
+//! `length(a)` counts them, the statement `append(a, x)` adds one at the
+//! end. Assigning or passing an array shares it (the callee's `append` is
+//! seen by the caller); an array parameter of the algorithm started begins
+//! empty. An index out of range stops the run, naming the index and the
+//! length; one run makes at most [`vm::MAX_ARRAY_ITEMS`] items (each new
+//! array counts as one). Arrays cannot be compared, marked or looked into.
+//!
+//! Keywords, type names, structure names and lookup names ignore case, and
+//! so do the names of called algorithms where that is not ambiguous;
 //! variable names do not. `//` starts a comment. Element variables start as
 //! `null`, Integers (32-bit, overflow is a run-time error) as 0, Booleans as
-//! false, Floats as 0.0, Vectors as (0, 0, 0). `and` and `or` short-circuit. Half-edge lookups accept the aliases
-//! `face`, `vertex` (end vertex), `pair`, `twin`, `successor`, `next`,
-//! `predecessor` and `prev`.
+//! false, Floats as 0.0, Vectors as (0, 0, 0). `and` and `or` short-circuit.
+//! Half-edge lookups accept the aliases `face`, `vertex` (end vertex),
+//! `pair`, `twin`, `successor`, `next`, `predecessor` and `prev`.
 //!
 //! Limits, so that no text can exhaust the stack or freeze a page (see
 //! docs/limits.md): at most [`MAX_SOURCE_BYTES`] of text; nesting plus the
 //! operators and lookups of a chain at most [`parser::MAX_NESTING`] deep;
 //! names at most [`lexer::MAX_NAME_CHARS`] long; reading stops after
-//! [`parser::MAX_ERRORS`] errors.
+//! [`parser::MAX_ERRORS`] errors. Calls keep their frames in a list, not on
+//! the stack, so no recursion in an algorithm recurses in the VM.
 
 pub mod ast;
 pub mod builtin;
@@ -81,11 +109,11 @@ pub mod trace;
 pub mod types;
 pub mod vm;
 
-pub use compiler::Algorithm;
+pub use compiler::{Algorithm, Routine};
 pub use diagnostic::{Diagnostic, Severity, Span, render_all};
 pub use disasm::{disassemble, disassemble_all};
 pub use topology::Topology;
-pub use trace::{Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
+pub use trace::{FrameView, Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
 pub use types::{Type, Value};
 pub use vm::{
     DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, execute_editing, run,
@@ -152,16 +180,7 @@ pub fn compile(source: &str) -> Result<Program, Vec<Diagnostic>> {
     }
     let shared: Arc<str> = Arc::from(source);
     let lines = diagnostic::LineIndex::new(source);
-    let mut algorithms = Vec::with_capacity(file.algorithms.len());
-    for (decl, scope) in file.algorithms.iter().zip(&scopes) {
-        match compiler::compile_algorithm(decl, scope, &shared, &lines) {
-            Ok(algorithm) => algorithms.push(Arc::new(algorithm)),
-            Err(diagnostic) => diagnostics.push(diagnostic),
-        }
-    }
-    if diagnostics.iter().any(Diagnostic::is_error) {
-        return Err(diagnostics);
-    }
+    let algorithms = compiler::compile_file(&file, &scopes, &shared, &lines)?;
     Ok(Program {
         source: shared,
         algorithms,

@@ -1,20 +1,21 @@
 //! Random sequences of traced edits: after every step of the sequence the
 //! traced library edit and the native operation agree table for table (or
 //! both refuse, the traced one before writing anything), and the mesh
-//! validates. The starting meshes are closed and open, triangles and not.
+//! validates. The starting meshes are closed and open, triangles and not,
+//! in both structures.
 
 use std::sync::Arc;
 
 use edgewise_core::lang::{self, Algorithm, RunOptions, Value};
 use edgewise_core::mesh::operations::{self, Operation};
-use edgewise_core::mesh::{HalfEdgeMesh, Mesh, generate};
+use edgewise_core::mesh::{Mesh, Structure, generate};
 use edgewise_core::schema::{ElementKind, Records};
 use proptest::prelude::*;
 
-fn library(name: &str) -> Arc<Algorithm> {
+fn library(file: &str, name: &str) -> Arc<Algorithm> {
     let (file, text) = lang::library::SOURCES
         .iter()
-        .find(|(file, _)| *file == "half-edge-edits.alg")
+        .find(|(shipped, _)| *shipped == file)
         .expect("the library file exists");
     let program = lang::compile_rendered(text, Some(file)).expect("the library compiles");
     Arc::clone(program.algorithm(name).expect("in the library"))
@@ -27,19 +28,28 @@ fn start(which: u8) -> Mesh {
         2 => generate::hexagon(),
         _ => generate::grid(3, 2),
     };
-    Mesh::Half(HalfEdgeMesh::build(&polygons).expect("a valid sample").0)
+    let structure = if which % 8 < 4 {
+        Structure::HalfEdge
+    } else {
+        Structure::WingedEdge
+    };
+    Mesh::build(&polygons, structure).expect("a valid sample").0
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
 
     #[test]
     fn traced_edits_stay_valid_and_match_the_native_ones(
         which in any::<u8>(),
         steps in proptest::collection::vec((any::<bool>(), any::<u16>()), 1..10),
     ) {
-        let (flip, split) = (library("flipEdge"), library("splitEdge"));
         let mut mesh = start(which);
+        let (file, param) = match mesh.structure() {
+            Structure::HalfEdge => ("half-edge-edits.alg", "h"),
+            Structure::WingedEdge => ("winged-edge-edits.alg", "e"),
+        };
+        let (flip, split) = (library(file, "flipEdge"), library(file, "splitEdge"));
         for (flipping, pick) in steps {
             let (algorithm, operation) = if flipping {
                 (&flip, Operation::FlipEdge)
@@ -53,7 +63,7 @@ proptest! {
             let trace = lang::run_editing(
                 algorithm,
                 &mut traced,
-                &[("h", Value::Edge(id))],
+                &[(param, Value::Edge(id))],
                 RunOptions::default(),
             )
             .expect("inputs fit");

@@ -47,6 +47,68 @@ fn error_corpus_renders_as_recorded() {
     golden::assert_none(&problems);
 }
 
+/// Runtime errors: each file in tests/algorithms/runtime/ runs its last
+/// algorithm on the tetrahedron of its structure, every element input 0
+/// and every number 0 (a `// step limit: N` line raises the limit); the
+/// trace's last steps and the error are the golden text.
+#[test]
+fn runtime_errors_render_as_recorded() {
+    let folder = golden_root().join("runtime");
+    let mut cases: Vec<PathBuf> = fs::read_dir(&folder)
+        .expect("tests/algorithms/runtime exists")
+        .map(|entry| entry.expect("readable folder").path())
+        .filter(|path| path.extension().is_some_and(|e| e == "alg"))
+        .collect();
+    cases.sort();
+    let tetrahedron = generate::tetrahedron();
+    let (winged_mesh, half_mesh) = (winged(&tetrahedron), half(&tetrahedron));
+    let mut problems = Vec::new();
+    for case in &cases {
+        let source = fs::read_to_string(case).expect("readable case");
+        let name = case.file_name().expect("a file").to_string_lossy();
+        let program =
+            lang::compile_rendered(&source, Some(&name)).unwrap_or_else(|e| panic!("{e}"));
+        let algorithm = program.algorithms.last().expect("an algorithm");
+        let step_limit = source
+            .lines()
+            .find_map(|line| line.strip_prefix("// step limit: "))
+            .map_or(lang::DEFAULT_STEP_LIMIT, |n| {
+                n.trim().parse().expect("a number")
+            });
+        let args: Vec<(&str, Value)> = algorithm
+            .params()
+            .map(|p| {
+                let value = match p.ty.element_kind() {
+                    Some(kind) => Value::from(edgewise_core::schema::ElementRef::new(kind, 0)),
+                    None => p.ty.default_value(),
+                };
+                (p.name.as_str(), value)
+            })
+            .collect();
+        let topology: &dyn Topology = match algorithm.structure {
+            edgewise_core::schema::Structure::WingedEdge => &winged_mesh,
+            edgewise_core::schema::Structure::HalfEdge => &half_mesh,
+        };
+        let trace =
+            lang::run(algorithm, &topology, &args, RunOptions { step_limit }).expect("inputs fit");
+        assert!(trace.outcome().error().is_some(), "{name} ran to the end");
+        let lines: Vec<String> = (0..trace.len()).map(|i| trace.render_line(i)).collect();
+        let shown = lines.len().saturating_sub(6);
+        let mut out = String::new();
+        if shown > 0 {
+            let _ = writeln!(out, "… {shown} steps before");
+        }
+        for line in &lines[shown..] {
+            let _ = writeln!(out, "{line}");
+        }
+        if let Some(error) = trace.outcome().error() {
+            let _ = writeln!(out, "error: {error}");
+        }
+        problems.extend(golden::compare(&case.with_extension("txt"), &out));
+    }
+    golden::assert_none(&problems);
+}
+
 #[test]
 fn every_error_points_into_its_file() {
     for entry in fs::read_dir(golden_root().join("errors")).expect("folder") {

@@ -72,6 +72,7 @@ pub fn value_text(value: Value) -> String {
         Value::Boolean(b) => format!("Boolean {b}"),
         Value::Float(_) => format!("Float {value}"),
         Value::Vector(_) => format!("Vector {value}"),
+        Value::Array(n) => format!("Array {n}"),
     }
 }
 
@@ -264,7 +265,11 @@ fn operation_name(kind: StepKind<'_>) -> &'static str {
         StepKind::Write { .. } => "write",
         StepKind::New { .. } => "new",
         StepKind::Delete { .. } => "delete",
-        StepKind::Call { .. } => "call",
+        StepKind::Call { .. } | StepKind::Invoke { .. } => "call",
+        StepKind::Return { .. } => "return",
+        StepKind::Index { .. } => "index",
+        StepKind::Store { .. } => "store",
+        StepKind::Append { .. } => "append",
         StepKind::Done => "done",
     }
 }
@@ -337,6 +342,18 @@ fn describe(
             format!("Delete {element}: its row stays as a gap until the ids are compacted")
         }
         StepKind::Call { result, .. } => format!("Call {code} = {result}"),
+        StepKind::Invoke { algorithm, .. } => {
+            format!("Call {algorithm}: its steps follow, one level deeper")
+        }
+        StepKind::Return { value: Some(value) } => format!("Return {value} to the caller"),
+        StepKind::Return { value: None } => "Return to the caller".to_owned(),
+        StepKind::Index { index, result, .. } => format!("Index {code}: item {index} is {result}"),
+        StepKind::Store {
+            index, old, new, ..
+        } => format!("Store {code}: item {index} was {old}, now {new}"),
+        StepKind::Append { value, length, .. } => {
+            format!("Append {value}: the array now has {length} items")
+        }
         StepKind::Done => {
             let output: Vec<String> = marked.iter().map(ToString::to_string).collect();
             if output.is_empty() {

@@ -352,5 +352,6 @@ fn type_phrase(ty: edgewise_core::lang::Type) -> &'static str {
         Type::Float => "a number",
         Type::Vector => "a Vector",
         Type::Null => "null",
+        Type::Array(_) => "nothing: an array starts empty",
     }
 }

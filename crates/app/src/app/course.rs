@@ -317,6 +317,6 @@ fn argument_of(value: Value) -> Option<Argument> {
         Value::Integer(n) => Some(Argument::Number(f64::from(n))),
         Value::Float(x) => Some(Argument::Number(f64::from(x))),
         Value::Boolean(b) => Some(Argument::Boolean(b)),
-        Value::Null | Value::Vector(_) => None,
+        Value::Null | Value::Vector(_) | Value::Array(_) => None,
     }
 }

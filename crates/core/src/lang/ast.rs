@@ -22,6 +22,9 @@ pub struct AlgorithmDecl {
     pub params: Vec<VarDecl>,
     /// `None` when neither `: HalfEdge` nor `structuretype …` was given (an error).
     pub structure: Option<(Structure, Span)>,
+    /// `returns Boolean`: the type of the value it gives back to a caller,
+    /// with its span (`None` in it when the type was not understood).
+    pub returns: Option<(Option<Type>, Span)>,
     pub description: Option<String>,
     pub vars: Vec<VarDecl>,
     pub body: Vec<Stmt>,
@@ -64,9 +67,26 @@ pub enum StmtKind {
         field: Ident,
         value: Expr,
     },
+    /// `a[i] := x`: a write into an array's item.
+    Store {
+        array: Expr,
+        index: Expr,
+        value: Expr,
+    },
     /// `delete x`: the row stays as a gap until the ids are compacted.
     Delete {
         target: Expr,
+    },
+    /// `name(args)` on its own: a call of another algorithm of the file
+    /// (any result is dropped), or of `append`.
+    Call {
+        name: Ident,
+        args: Vec<Expr>,
+    },
+    /// `return` or `return value`: back to the caller (or, in the algorithm
+    /// that was started, to its end).
+    Return {
+        value: Option<Expr>,
     },
     /// `if c then … else if c then … else … end`, or the half-edge paper's
     /// `if (c) statement else statement`.
@@ -190,10 +210,16 @@ pub enum ExprKind {
     Null,
     /// `new Vertex`, `new Edge`, `new Face`.
     New(ElementKind),
-    /// A built-in function: `vector(x, y, z)`, `float(n)`.
+    /// A built-in function (`vector(x, y, z)`, `length(a)`), or another
+    /// algorithm of the file that returns a value.
     Call {
         name: Ident,
         args: Vec<Expr>,
+    },
+    /// `a[i]`: an array's item.
+    Index {
+        array: Box<Expr>,
+        index: Box<Expr>,
     },
     Unary {
         op: UnaryOp,

@@ -1,5 +1,6 @@
 //! The built-in functions and a Vector's coordinates: the geometry an
-//! edit needs to place a new vertex at a midpoint or a centroid.
+//! edit needs to place a new vertex at a midpoint or a centroid, and the
+//! two functions on arrays.
 
 use super::types::{Type, Value};
 use glam::Vec3;
@@ -13,18 +14,36 @@ pub enum Builtin {
     Float,
     /// `sqrt(x)`.
     Sqrt,
+    /// `length(a)`: how many items array `a` holds.
+    Length,
+    /// `append(a, x)`: a statement that adds `x` at the end of array `a`.
+    Append,
 }
 
 impl Builtin {
-    pub const ALL: [Builtin; 3] = [Builtin::Vector, Builtin::Float, Builtin::Sqrt];
-    pub const NAMES: [&'static str; 3] = ["vector", "float", "sqrt"];
+    pub const ALL: [Builtin; 5] = [
+        Builtin::Vector,
+        Builtin::Float,
+        Builtin::Sqrt,
+        Builtin::Length,
+        Builtin::Append,
+    ];
+    pub const NAMES: [&'static str; 5] = ["vector", "float", "sqrt", "length", "append"];
 
     pub fn name(self) -> &'static str {
         match self {
             Builtin::Vector => "vector",
             Builtin::Float => "float",
             Builtin::Sqrt => "sqrt",
+            Builtin::Length => "length",
+            Builtin::Append => "append",
         }
+    }
+
+    /// Whether it works on an array, which any item type fits: the checker
+    /// types these apart, and they compile to array operations.
+    pub fn on_arrays(self) -> bool {
+        matches!(self, Builtin::Length | Builtin::Append)
     }
 
     /// Function names ignore case, like keywords.
@@ -34,22 +53,42 @@ impl Builtin {
             .find(|b| b.name().eq_ignore_ascii_case(name))
     }
 
+    /// The parameters of the functions on numbers; the array functions
+    /// (see [`Self::on_arrays`]) list none here.
     pub fn parameters(self) -> &'static [Type] {
         match self {
             Builtin::Vector => &[Type::Float, Type::Float, Type::Float],
             Builtin::Float | Builtin::Sqrt => &[Type::Float],
+            Builtin::Length | Builtin::Append => &[],
         }
     }
 
-    pub fn result(self) -> Type {
+    /// How many arguments it takes.
+    pub fn arity(self) -> usize {
         match self {
-            Builtin::Vector => Type::Vector,
-            Builtin::Float | Builtin::Sqrt => Type::Float,
+            Builtin::Length => 1,
+            Builtin::Append => 2,
+            other => other.parameters().len(),
+        }
+    }
+
+    /// The type of its value; `append` gives none.
+    pub fn result(self) -> Option<Type> {
+        match self {
+            Builtin::Vector => Some(Type::Vector),
+            Builtin::Float | Builtin::Sqrt => Some(Type::Float),
+            Builtin::Length => Some(Type::Integer),
+            Builtin::Append => None,
         }
     }
 
     /// `vector(x : Float, y : Float, z : Float) : Vector`, for messages.
     pub fn signature(self) -> String {
+        match self {
+            Builtin::Length => return "length(a : Array of …) : Integer".to_owned(),
+            Builtin::Append => return "append(a : Array of T; x : T)".to_owned(),
+            _ => {}
+        }
         let names = ["x", "y", "z"];
         let params: Vec<String> = self
             .parameters()
@@ -57,10 +96,12 @@ impl Builtin {
             .zip(names)
             .map(|(ty, name)| format!("{name} : {ty}"))
             .collect();
-        format!("{}({}) : {}", self.name(), params.join(", "), self.result())
+        let result = self.result().unwrap_or(Type::Null);
+        format!("{}({}) : {result}", self.name(), params.join(", "))
     }
 
-    /// Applies the function; the checker has made sure the arguments fit.
+    /// Applies a function on numbers; the checker has made sure the
+    /// arguments fit. The array functions run in the VM, on its arrays.
     pub fn apply(self, args: &[Value]) -> Result<Value, String> {
         let number = |i: usize| args.get(i).and_then(|v| v.number()).unwrap_or(0.0);
         Ok(match self {
@@ -72,6 +113,9 @@ impl Builtin {
                     return Err(format!("sqrt of a negative number ({x})"));
                 }
                 Value::Float(x.sqrt())
+            }
+            Builtin::Length | Builtin::Append => {
+                return Err(format!("`{}` works on an array", self.name()));
             }
         })
     }

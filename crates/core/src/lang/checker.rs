@@ -45,10 +45,86 @@ impl Scope {
     }
 }
 
+/// What a call needs to know of an algorithm of the file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Signature {
+    pub name: String,
+    /// Each parameter's name and type (`None`: not understood, reported).
+    pub params: Vec<(String, Option<Type>)>,
+    pub structure: Option<Structure>,
+    /// `None` when it returns nothing; `Some(None)` when its result type was
+    /// not understood (reported).
+    pub returns: Option<Option<Type>>,
+}
+
+impl Signature {
+    /// `isTriangle(f : Face) : HalfEdge returns Boolean`, for messages.
+    pub fn text(&self) -> String {
+        let params: Vec<String> = self
+            .params
+            .iter()
+            .map(|(name, ty)| format!("{name} : {}", ty.map_or("?", Type::name)))
+            .collect();
+        let mut text = format!("{}({})", self.name, params.join("; "));
+        if let Some(structure) = self.structure {
+            text.push_str(&format!(" : {structure}"));
+        }
+        if let Some(result) = self.returns {
+            text.push_str(&format!(" returns {}", result.map_or("?", Type::name)));
+        }
+        text
+    }
+}
+
+/// Every algorithm of a file, as calls see them, found by name.
+#[derive(Clone, Debug, Default)]
+pub struct Signatures {
+    pub list: Vec<Signature>,
+    by_name: HashMap<String, usize>,
+}
+
+impl Signatures {
+    pub fn of(file: &SourceFile) -> Self {
+        let mut signatures = Signatures::default();
+        for decl in &file.algorithms {
+            let index = signatures.list.len();
+            signatures
+                .by_name
+                .entry(decl.name.name.clone())
+                .or_insert(index);
+            signatures.list.push(Signature {
+                name: decl.name.name.clone(),
+                params: decl
+                    .params
+                    .iter()
+                    .map(|p| (p.name.name.clone(), p.ty))
+                    .collect(),
+                structure: decl.structure.map(|(s, _)| s),
+                returns: decl.returns.map(|(ty, _)| ty),
+            });
+        }
+        signatures
+    }
+
+    /// The algorithm a call names: the first of that name, else the first
+    /// whose name differs only in case (names of algorithms, like
+    /// keywords, ignore case where that is not ambiguous).
+    pub fn find(&self, name: &str) -> Option<(usize, &Signature)> {
+        let index = match self.by_name.get(name) {
+            Some(&index) => index,
+            None => self
+                .list
+                .iter()
+                .position(|s| s.name.eq_ignore_ascii_case(name))?,
+        };
+        Some((index, self.list.get(index)?))
+    }
+}
+
 /// "an Edge", "a Vertex": for messages.
 pub fn with_article(ty: Type) -> String {
     match ty {
-        Type::Edge | Type::Integer => format!("an {ty}"),
+        Type::Edge | Type::Integer | Type::Array(_) => format!("an {ty}"),
         Type::Vector => "a Vector".to_owned(),
         Type::Null => "null".to_owned(),
         _ => format!("a {ty}"),
@@ -64,23 +140,34 @@ pub fn check_file(
 ) -> Vec<Scope> {
     let mut scopes = Vec::with_capacity(file.algorithms.len());
     let mut names = HashSet::new();
+    let signatures = Signatures::of(file);
     for algorithm in &file.algorithms {
-        if !algorithm.name.name.is_empty() && !names.insert(algorithm.name.name.as_str()) {
+        let name = algorithm.name.name.as_str();
+        if !name.is_empty() && !names.insert(name) {
             diagnostics.push(Diagnostic::error(
                 algorithm.name.span,
-                format!(
-                    "an algorithm named `{}` is already defined in this file",
-                    algorithm.name.name
-                ),
+                format!("an algorithm named `{name}` is already defined in this file"),
             ));
+        } else if let Some(builtin) = Builtin::parse(name) {
+            diagnostics.push(
+                Diagnostic::error(
+                    algorithm.name.span,
+                    format!("`{name}` is a built-in function; an algorithm cannot have its name"),
+                )
+                .with_hint(format!(
+                    "a call `{}(…)` would mean the built-in",
+                    builtin.name()
+                )),
+            );
         }
-        scopes.push(check_algorithm(algorithm, source, diagnostics));
+        scopes.push(check_algorithm(algorithm, &signatures, source, diagnostics));
     }
     scopes
 }
 
 pub fn check_algorithm(
     decl: &AlgorithmDecl,
+    signatures: &Signatures,
     source: &str,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Scope {
@@ -118,20 +205,94 @@ pub fn check_algorithm(
     }
     let mut checker = Checker {
         scope: &scope,
+        signatures,
         structure: decl.structure.map(|(s, _)| s),
         algorithm: &decl.name.name,
+        returns: decl.returns.map(|(ty, _)| ty),
         source,
         diagnostics,
         loop_depth: 0,
     };
     checker.statements(&decl.body);
+    if let Some(Some(result)) = checker.returns
+        && !leaves(&decl.body)
+    {
+        checker.error_with_hint(
+            decl.end_span,
+            format!(
+                "`{}` returns {}, but can reach its `end` without `return`",
+                decl.name.name,
+                with_article(result)
+            ),
+            "end every way through it with `return` and a value".to_owned(),
+        );
+    }
     scope
+}
+
+/// Whether control never runs off the end of `statements`: every way
+/// through them returns, refuses, or loops for ever. Conservative, like
+/// Java's rule: a `while` may run no times, and a `break` leaves its loop.
+/// Recurses as deep as the statements nest, which the parser bounds.
+pub fn leaves(statements: &[Stmt]) -> bool {
+    statements.iter().any(|statement| match &statement.kind {
+        StmtKind::Return { .. } | StmtKind::Refuse { .. } => true,
+        StmtKind::Block(body) => leaves(body),
+        StmtKind::If {
+            arms,
+            otherwise: Some(otherwise),
+        } => arms.iter().all(|(_, body)| leaves(body)) && leaves(otherwise),
+        StmtKind::Loop { body }
+        | StmtKind::While {
+            cond:
+                Expr {
+                    kind: ExprKind::Boolean(true),
+                    ..
+                },
+            body,
+        } => !breaks(body),
+        StmtKind::DoWhile { body, .. } => leaves(body) && !breaks(body) && !continues(body),
+        _ => false,
+    })
+}
+
+/// Whether a `break` in `statements` leaves the loop they are the body of.
+fn breaks(statements: &[Stmt]) -> bool {
+    jumps(statements, &|kind| matches!(kind, StmtKind::Break))
+}
+
+fn continues(statements: &[Stmt]) -> bool {
+    jumps(statements, &|kind| matches!(kind, StmtKind::Continue))
+}
+
+/// Whether `statements` hold a jump that `is_jump` picks, outside any inner
+/// loop (whose own jumps stay inside it).
+fn jumps(statements: &[Stmt], is_jump: &dyn Fn(&StmtKind) -> bool) -> bool {
+    statements.iter().any(|statement| match &statement.kind {
+        kind if is_jump(kind) => true,
+        StmtKind::Block(body) => jumps(body, is_jump),
+        StmtKind::If { arms, otherwise } => {
+            arms.iter().any(|(_, body)| jumps(body, is_jump))
+                || otherwise.as_ref().is_some_and(|body| jumps(body, is_jump))
+        }
+        _ => false,
+    })
+}
+
+/// How a call is used: its value in an expression, or on its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Use {
+    Value,
+    Statement,
 }
 
 struct Checker<'a> {
     scope: &'a Scope,
+    signatures: &'a Signatures,
     structure: Option<Structure>,
     algorithm: &'a str,
+    /// The declared result: `None` for none, `Some(None)` if not understood.
+    returns: Option<Option<Type>>,
     source: &'a str,
     diagnostics: &'a mut Vec<Diagnostic>,
     loop_depth: u32,
@@ -187,6 +348,15 @@ impl Checker<'_> {
         match &statement.kind {
             StmtKind::Assign { target, value } => self.assignment(target, value),
             StmtKind::Write { base, field, value } => self.write(base, field, value),
+            StmtKind::Store {
+                array,
+                index,
+                value,
+            } => self.store(array, index, value),
+            StmtKind::Call { name, args } => {
+                self.call(name, args, Use::Statement);
+            }
+            StmtKind::Return { value } => self.return_statement(statement.span, value.as_ref()),
             StmtKind::Delete { target } => match self.expr(target) {
                 None | Some(Type::Vertex | Type::Edge | Type::Face) => {}
                 Some(ty) => {
@@ -310,6 +480,105 @@ impl Checker<'_> {
         }
     }
 
+    /// `a[i] := value`: the value must fit the array's items.
+    fn store(&mut self, array: &Expr, index: &Expr, value: &Expr) {
+        let value_type = self.expr(value);
+        let (Some(item), Some(value_type)) = (self.index(array, index), value_type) else {
+            return;
+        };
+        if !item.accepts(value_type) {
+            let text = self.text(array.span);
+            self.error(
+                value.span,
+                format!(
+                    "the items of `{text}` are {}, not {}",
+                    plural(item),
+                    describe_value(value_type)
+                ),
+            );
+        }
+    }
+
+    /// `a[i]`: the type of the item, reporting an index that is not an
+    /// Integer or a base that is not an array.
+    fn index(&mut self, array: &Expr, index: &Expr) -> Option<Type> {
+        let array_type = self.expr(array);
+        let index_type = self.expr(index);
+        if let Some(ty) = index_type
+            && ty != Type::Integer
+        {
+            let text = self.text(index.span);
+            let message = format!(
+                "an array index is an Integer, but `{text}` is {}",
+                describe_value(ty)
+            );
+            if ty == Type::Float {
+                self.error_with_hint(
+                    index.span,
+                    message,
+                    "Integers divide into an Integer with `div`".to_owned(),
+                );
+            } else {
+                self.error(index.span, message);
+            }
+        }
+        let array_type = array_type?;
+        let Some(item) = array_type.item() else {
+            let text = self.text(array.span);
+            self.error_with_hint(
+                array.span,
+                format!(
+                    "`{text}` is {}; only arrays have items to index",
+                    describe_value(array_type)
+                ),
+                "declare an array with `var a : Array of Edge;`".to_owned(),
+            );
+            return None;
+        };
+        index_type?;
+        Some(item)
+    }
+
+    fn return_statement(&mut self, span: Span, value: Option<&Expr>) {
+        let value_type = value.and_then(|v| self.expr(v));
+        match (self.returns, value) {
+            (None, None) | (Some(None), _) => {}
+            (None, Some(value)) => self.error_with_hint(
+                value.span,
+                format!("`{}` returns no value", self.algorithm),
+                format!(
+                    "write `return` alone, or declare its result after the parameters: \
+                     `returns {}`",
+                    value_type.map_or("Integer", Type::name)
+                ),
+            ),
+            (Some(Some(result)), None) => self.error_with_hint(
+                span,
+                format!(
+                    "`{}` returns {}, but this `return` gives no value",
+                    self.algorithm,
+                    with_article(result)
+                ),
+                format!("write `return` and {}", with_article(result)),
+            ),
+            (Some(Some(result)), Some(value)) => {
+                if let Some(ty) = value_type
+                    && !result.accepts(ty)
+                {
+                    self.error(
+                        value.span,
+                        format!(
+                            "`{}` returns {}, not {}",
+                            self.algorithm,
+                            with_article(result),
+                            describe_value(ty)
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
     fn condition(&mut self, cond: &Expr) {
         match self.expr(cond) {
             Some(Type::Boolean) | None => {}
@@ -389,7 +658,8 @@ impl Checker<'_> {
             ExprKind::Integer(_) => Some(Type::Integer),
             ExprKind::Float(_) => Some(Type::Float),
             ExprKind::New(kind) => Some(Type::of_kind(*kind)),
-            ExprKind::Call { name, args } => self.call(name, args),
+            ExprKind::Call { name, args } => self.call(name, args, Use::Value),
+            ExprKind::Index { array, index } => self.index(array, index),
             ExprKind::Boolean(_) => Some(Type::Boolean),
             ExprKind::Null => Some(Type::Null),
             ExprKind::Error => None,
@@ -436,6 +706,14 @@ impl Checker<'_> {
         let operand = match op {
             BinaryOp::Eq | BinaryOp::NotEq => {
                 let (l, r) = (left.1, right.1);
+                if l.item().is_some() || r.item().is_some() {
+                    self.error_with_hint(
+                        span,
+                        "arrays cannot be compared".to_owned(),
+                        "compare their lengths or their items".to_owned(),
+                    );
+                    return None;
+                }
                 let comparable = l == r
                     || (l.is_number() && r.is_number())
                     || (l == Type::Null && (r.element_kind().is_some() || r == Type::Null))
@@ -524,34 +802,176 @@ impl Checker<'_> {
         Some(operand)
     }
 
-    /// `vector(x, y, z)`, `float(n)`, `sqrt(x)`.
-    fn call(&mut self, name: &Ident, args: &[Expr]) -> Option<Type> {
+    /// A call: of a built-in function, or of another algorithm of the file.
+    fn call(&mut self, name: &Ident, args: &[Expr], used: Use) -> Option<Type> {
         let types: Vec<Option<Type>> = args.iter().map(|arg| self.expr(arg)).collect();
-        let Some(builtin) = Builtin::parse(&name.name) else {
-            self.error_with_hint(
-                name.span,
-                format!("unknown function `{}`", name.name),
-                format!("the built-in functions are {}", Builtin::NAMES.join(", ")),
-            );
+        if let Some(builtin) = Builtin::parse(&name.name) {
+            let result = self.builtin(builtin, name, args, &types)?;
+            return self.used(name, args, used, builtin.result(), result);
+        }
+        let Some((_, callee)) = self.signatures.find(&name.name) else {
+            self.unknown_function(name);
             return None;
         };
-        let wanted = builtin.parameters();
-        if args.len() != wanted.len() {
+        if let (Some(ours), Some(theirs)) = (self.structure, callee.structure)
+            && ours != theirs
+        {
+            self.error_with_hint(
+                name.span,
+                format!(
+                    "`{}` walks a {theirs} structure, but `{}` walks a {ours} structure",
+                    callee.name, self.algorithm
+                ),
+                "an algorithm can call only algorithms of its own structure".to_owned(),
+            );
+            return None;
+        }
+        if args.len() != callee.params.len() {
             self.error(
                 name.span,
                 format!(
-                    "`{}` takes {} argument{} ({}), but was given {}",
+                    "`{}` takes {} ({}), but was given {}",
+                    callee.name,
+                    count(callee.params.len(), "argument"),
+                    callee.text(),
+                    args.len()
+                ),
+            );
+            return None;
+        }
+        let mut fits = true;
+        for ((arg, ty), (param, want)) in args.iter().zip(&types).zip(&callee.params) {
+            let (Some(ty), Some(want)) = (*ty, *want) else {
+                fits = false;
+                continue;
+            };
+            if !want.accepts(ty) {
+                let text = self.text(arg.span);
+                self.error(
+                    arg.span,
+                    format!(
+                        "`{}` needs {} for `{param}`, but `{text}` is {}",
+                        callee.name,
+                        with_article(want),
+                        describe_value(ty)
+                    ),
+                );
+                fits = false;
+            }
+        }
+        if !fits {
+            return None;
+        }
+        match (used, callee.returns) {
+            (Use::Value, None) => {
+                self.error_with_hint(
+                    name.span,
+                    format!(
+                        "`{}` returns no value, so it cannot be used in an expression",
+                        callee.name
+                    ),
+                    format!(
+                        "call it on its own: `{}(…);`, or declare its result after its \
+                         parameters with `returns`",
+                        callee.name
+                    ),
+                );
+                None
+            }
+            (_, returns) => returns.flatten(),
+        }
+    }
+
+    /// Checks how a built-in's value is used: `append` has none to use, and
+    /// the others have nothing to do but give one.
+    fn used(
+        &mut self,
+        name: &Ident,
+        args: &[Expr],
+        used: Use,
+        declared: Option<Type>,
+        result: Type,
+    ) -> Option<Type> {
+        let text = match (args.first(), args.last()) {
+            (Some(first), Some(last)) => format!(
+                "{}({})",
+                name.name,
+                self.text(Span {
+                    start: first.span.start,
+                    end: last.span.end,
+                })
+            ),
+            _ => format!("{}()", name.name),
+        };
+        match (used, declared) {
+            (Use::Value, None) => {
+                self.error_with_hint(
+                    name.span,
+                    format!("`{}` changes an array and gives no value", name.name),
+                    format!("write it as a statement of its own: `{text};`"),
+                );
+                None
+            }
+            (Use::Statement, Some(_)) => {
+                self.error_with_hint(
+                    name.span,
+                    format!("the value of `{text}` is not used"),
+                    format!("store it in a variable: `x := {text};`"),
+                );
+                None
+            }
+            _ => Some(result),
+        }
+    }
+
+    fn unknown_function(&mut self, name: &Ident) {
+        let message = format!("unknown function `{}`", name.name);
+        if self.full() {
+            self.error(name.span, message);
+            return;
+        }
+        let candidates = Builtin::NAMES
+            .into_iter()
+            .chain(self.signatures.list.iter().map(|s| s.name.as_str()));
+        let hint = match nearest(&name.name, candidates) {
+            Some(near) => format!("did you mean `{near}`?"),
+            None => format!(
+                "the built-in functions are {}; other algorithms of this file are called by \
+                 their names",
+                Builtin::NAMES.join(", ")
+            ),
+        };
+        self.error_with_hint(name.span, message, hint);
+    }
+
+    /// `vector(x, y, z)`, `float(n)`, `sqrt(x)`, `length(a)`, `append(a, x)`;
+    /// the type of the value (Null for `append`).
+    fn builtin(
+        &mut self,
+        builtin: Builtin,
+        name: &Ident,
+        args: &[Expr],
+        types: &[Option<Type>],
+    ) -> Option<Type> {
+        let arity = builtin.arity();
+        if args.len() != arity {
+            self.error(
+                name.span,
+                format!(
+                    "`{}` takes {} ({}), but was given {}",
                     builtin.name(),
-                    wanted.len(),
-                    if wanted.len() == 1 { "" } else { "s" },
+                    count(arity, "argument"),
                     builtin.signature(),
                     args.len()
                 ),
             );
             return None;
         }
-        for ((arg, ty), want) in args.iter().zip(types).zip(wanted) {
-            let ty = ty?;
+        if builtin.on_arrays() {
+            return self.array_builtin(builtin, args, types);
+        }
+        for ((arg, ty), want) in args.iter().zip(types).zip(builtin.parameters()) {
+            let ty = (*ty)?;
             if !want.accepts(ty) {
                 let text = self.text(arg.span);
                 self.error(
@@ -566,7 +986,46 @@ impl Checker<'_> {
                 return None;
             }
         }
-        Some(builtin.result())
+        builtin.result()
+    }
+
+    /// `length(a)` and `append(a, x)`: `a` must be an array, and `x` fit
+    /// its items.
+    fn array_builtin(
+        &mut self,
+        builtin: Builtin,
+        args: &[Expr],
+        types: &[Option<Type>],
+    ) -> Option<Type> {
+        let (array, ty) = (args.first()?, (*types.first()?)?);
+        let Some(item) = ty.item() else {
+            let text = self.text(array.span);
+            self.error(
+                array.span,
+                format!(
+                    "`{}` needs an array, but `{text}` is {}",
+                    builtin.name(),
+                    describe_value(ty)
+                ),
+            );
+            return None;
+        };
+        if builtin == Builtin::Append
+            && let (Some(value), Some(Some(value_type))) = (args.get(1), types.get(1))
+            && !item.accepts(*value_type)
+        {
+            let text = self.text(array.span);
+            self.error(
+                value.span,
+                format!(
+                    "the items of `{text}` are {}, not {}",
+                    plural(item),
+                    describe_value(*value_type)
+                ),
+            );
+            return None;
+        }
+        Some(builtin.result().unwrap_or(Type::Null))
     }
 
     /// The column `base.field` names, with the kind of element it is on,
@@ -723,6 +1182,23 @@ fn arithmetic(op: BinaryOp, left: Type, right: Type) -> Option<Type> {
         (BinaryOp::Mul, Vector, n) | (BinaryOp::Mul, n, Vector) if n.is_number() => Some(Vector),
         (BinaryOp::Divide, Vector, n) if n.is_number() => Some(Vector),
         _ => None,
+    }
+}
+
+/// "2 arguments", "1 argument".
+fn count(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("1 {what}")
+    } else {
+        format!("{n} {what}s")
+    }
+}
+
+/// "Edges", "Integers": what an array of `ty` holds, for messages.
+fn plural(ty: Type) -> String {
+    match ty {
+        Type::Vertex => "Vertices".to_owned(),
+        other => format!("{other}s"),
     }
 }
 

@@ -5,10 +5,12 @@
 
 use super::ast::*;
 use super::builtin::{Axis, Builtin};
-use super::checker::Scope;
+use super::checker::{Scope, Signatures};
 use super::diagnostic::{Diagnostic, LineIndex, Span};
-use super::types::{Type, Value};
+use super::types::{Item, Type, Value};
 use crate::schema::{Column, ElementKind, Structure};
+use std::fmt;
+use std::ops::Deref;
 use std::sync::Arc;
 
 /// A register number. Registers hold the variables (parameters first), then
@@ -96,12 +98,47 @@ pub enum Op {
     Delete {
         element: Reg,
     },
-    /// A built-in function; `args` holds `argc` registers.
+    /// A built-in function on numbers; `args` holds `argc` registers.
     Call {
         dst: Reg,
         builtin: Builtin,
         args: [Reg; 3],
         argc: u8,
+    },
+    /// Calls algorithm number `routine` of the file: its parameters take
+    /// the values of the registers listed from `args` in
+    /// [`Routine::arguments`], and its result lands in `dst`.
+    Invoke {
+        dst: Reg,
+        routine: u16,
+        args: u32,
+    },
+    /// Back to the caller, with `src`'s value if `value` is set.
+    Return {
+        src: Reg,
+        value: bool,
+    },
+    /// `dst := array[index]`.
+    Index {
+        dst: Reg,
+        array: Reg,
+        index: Reg,
+    },
+    /// `array[index] := src`.
+    Store {
+        array: Reg,
+        index: Reg,
+        src: Reg,
+    },
+    /// `append(array, src)`.
+    Append {
+        array: Reg,
+        src: Reg,
+    },
+    /// `dst := length(array)`.
+    Length {
+        dst: Reg,
+        array: Reg,
     },
     Lookup {
         dst: Reg,
@@ -194,9 +231,11 @@ pub struct VariableInfo {
     pub is_param: bool,
 }
 
-/// A compiled algorithm, ready to run on any mesh of its structure.
+/// One compiled algorithm of a file. [`Algorithm`] is how the rest of the
+/// program holds one: it keeps the whole file's routines, which its calls
+/// name by number.
 #[derive(Clone, Debug)]
-pub struct Algorithm {
+pub struct Routine {
     pub name: String,
     pub description: Option<String>,
     pub structure: Structure,
@@ -208,6 +247,16 @@ pub struct Algorithm {
     pub constants: Vec<(Reg, Value)>,
     pub messages: Vec<MessageTemplate>,
     pub code: Vec<Instr>,
+    /// The type of the value it returns (`returns Boolean`), if any.
+    pub result: Option<Type>,
+    /// The argument registers of its calls ([`Op::Invoke`]), each call's
+    /// in a run as long as the callee's parameters.
+    pub arguments: Vec<Reg>,
+    /// The register file a run starts from: each type's initial value and
+    /// the constants, copied in one go at each call.
+    pub(crate) initial: Vec<Value>,
+    /// The array variables, which each run or call gives new arrays.
+    pub(crate) array_variables: Vec<(Reg, Item)>,
     /// The whole file's text, shared by the algorithms compiled from it.
     pub source: Arc<str>,
     /// `algorithm` through the closing `end`.
@@ -216,14 +265,81 @@ pub struct Algorithm {
     pub last_line: u32,
 }
 
+/// The compiled algorithms of one file.
+#[derive(Debug)]
+pub struct Unit {
+    pub routines: Vec<Routine>,
+}
+
+/// A compiled algorithm, ready to run on any mesh of its structure, with
+/// the algorithms of its file that it may call. It reads as its
+/// [`Routine`] (`algorithm.name`, `algorithm.code`).
+#[derive(Clone)]
+pub struct Algorithm {
+    unit: Arc<Unit>,
+    /// Its number in `unit`, always in range.
+    index: usize,
+}
+
+impl Deref for Algorithm {
+    type Target = Routine;
+
+    fn deref(&self) -> &Routine {
+        &self.unit.routines[self.index]
+    }
+}
+
+impl fmt::Debug for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(&**self, f)
+    }
+}
+
 impl Algorithm {
+    /// Every algorithm of its file, in file order; calls name them by
+    /// their index here.
+    pub fn routines(&self) -> &[Routine] {
+        &self.unit.routines
+    }
+
+    /// Its own index in [`Self::routines`].
+    pub fn index(&self) -> usize {
+        self.index
+    }
+
+    /// Whether running it changes the mesh: it, or an algorithm it calls
+    /// (directly or not), writes a record, or makes or deletes an element.
+    pub fn edits(&self) -> bool {
+        let routines = self.routines();
+        let mut seen = vec![false; routines.len()];
+        let mut stack = vec![self.index];
+        while let Some(index) = stack.pop() {
+            let Some(routine) = routines.get(index) else {
+                continue;
+            };
+            if std::mem::replace(&mut seen[index], true) {
+                continue;
+            }
+            if routine.writes() {
+                return true;
+            }
+            stack.extend(routine.code.iter().filter_map(|instr| match instr.op {
+                Op::Invoke { routine, .. } => Some(usize::from(routine)),
+                _ => None,
+            }));
+        }
+        false
+    }
+}
+
+impl Routine {
     pub fn params(&self) -> impl Iterator<Item = &VariableInfo> {
         self.variables.iter().take_while(|v| v.is_param)
     }
 
-    /// Whether running it changes the mesh (it writes a record, or makes or
-    /// deletes an element).
-    pub fn edits(&self) -> bool {
+    /// Whether its own code changes the mesh; [`Algorithm::edits`] also
+    /// asks the algorithms it calls.
+    pub fn writes(&self) -> bool {
         self.code.iter().any(|instr| instr.op.is_edit())
     }
 
@@ -265,24 +381,81 @@ impl Algorithm {
     }
 
     /// The header as written in the Neperud dialect, e.g.
-    /// `vertexAdjacentEdge(v : Vertex) : WingedEdge`.
+    /// `vertexAdjacentEdge(v : Vertex) : WingedEdge`, or
+    /// `isTriangle(f : Face) : HalfEdge returns Boolean`.
     pub fn signature(&self) -> String {
         let params: Vec<String> = self
             .params()
             .map(|p| format!("{} : {}", p.name, p.ty))
             .collect();
-        format!("{}({}) : {}", self.name, params.join("; "), self.structure)
+        let mut text = format!("{}({}) : {}", self.name, params.join("; "), self.structure);
+        if let Some(result) = self.result {
+            text.push_str(&format!(" returns {result}"));
+        }
+        text
+    }
+
+    /// The argument registers of the call whose [`Op::Invoke`] has `args`,
+    /// `count` of them.
+    pub fn call_arguments(&self, args: u32, count: usize) -> &[Reg] {
+        let start = args as usize;
+        self.arguments
+            .get(start..start.saturating_add(count))
+            .unwrap_or(&[])
     }
 }
 
-/// Compiles one algorithm that passed the checker. Returns an error only for
-/// limits the checker does not know about (more than 65,535 registers).
-pub fn compile_algorithm(
-    decl: &AlgorithmDecl,
-    scope: &Scope,
+/// Compiles every algorithm of a file that passed the checker. Fails only
+/// for limits the checker does not know about (more than 65,535 registers
+/// in an algorithm, or algorithms in a file).
+pub fn compile_file(
+    file: &SourceFile,
+    scopes: &[Scope],
     source: &Arc<str>,
     lines: &LineIndex,
-) -> Result<Algorithm, Diagnostic> {
+) -> Result<Vec<Arc<Algorithm>>, Vec<Diagnostic>> {
+    let signatures = Signatures::of(file);
+    let mut routines = Vec::with_capacity(file.algorithms.len());
+    let mut diagnostics = Vec::new();
+    if u16::try_from(file.algorithms.len()).is_err() {
+        let span = file
+            .algorithms
+            .last()
+            .map_or(Span::default(), |a| a.name.span);
+        return Err(vec![Diagnostic::error(
+            span,
+            "this file holds too many algorithms to compile (over 65,535)",
+        )]);
+    }
+    for (decl, scope) in file.algorithms.iter().zip(scopes) {
+        match compile_algorithm(decl, scope, &signatures, source, lines) {
+            Ok(routine) => routines.push(routine),
+            Err(diagnostic) => diagnostics.push(diagnostic),
+        }
+    }
+    if !diagnostics.is_empty() {
+        return Err(diagnostics);
+    }
+    let unit = Arc::new(Unit { routines });
+    Ok((0..unit.routines.len())
+        .map(|index| {
+            Arc::new(Algorithm {
+                unit: Arc::clone(&unit),
+                index,
+            })
+        })
+        .collect())
+}
+
+/// Compiles one algorithm that passed the checker; its calls are resolved
+/// against the file's `signatures`.
+fn compile_algorithm(
+    decl: &AlgorithmDecl,
+    scope: &Scope,
+    signatures: &Signatures,
+    source: &Arc<str>,
+    lines: &LineIndex,
+) -> Result<Routine, Diagnostic> {
     let structure = decl.structure.map_or(Structure::WingedEdge, |(s, _)| s);
     let variables: Vec<VariableInfo> = scope
         .variables
@@ -295,6 +468,8 @@ pub fn compile_algorithm(
         .collect();
     let mut compiler = Compiler {
         scope,
+        signatures,
+        arguments: Vec::new(),
         structure,
         lines,
         registers: variables.iter().map(|v| v.ty).collect(),
@@ -314,7 +489,24 @@ pub fn compile_algorithm(
         ));
     }
     compiler.patch_jumps();
-    Ok(Algorithm {
+    let mut initial: Vec<Value> = compiler
+        .registers
+        .iter()
+        .map(|ty| ty.default_value())
+        .collect();
+    for &(reg, value) in &compiler.constants {
+        if let Some(slot) = initial.get_mut(usize::from(reg)) {
+            *slot = value;
+        }
+    }
+    let array_variables = (0..)
+        .zip(&variables)
+        .filter_map(|(reg, v)| match v.ty {
+            Type::Array(item) => Some((reg, item)),
+            _ => None,
+        })
+        .collect();
+    Ok(Routine {
         name: decl.name.name.clone(),
         description: decl.description.clone(),
         structure,
@@ -323,6 +515,10 @@ pub fn compile_algorithm(
         constants: compiler.constants,
         messages: compiler.messages,
         code: compiler.code,
+        result: decl.returns.and_then(|(ty, _)| ty),
+        arguments: compiler.arguments,
+        initial,
+        array_variables,
         source: Arc::clone(source),
         span: decl.span,
         first_line: lines.line(decl.span.start),
@@ -339,6 +535,9 @@ struct Loop {
 
 struct Compiler<'a> {
     scope: &'a Scope,
+    signatures: &'a Signatures,
+    /// Argument registers of the calls, see [`Routine::arguments`].
+    arguments: Vec<Reg>,
     structure: Structure,
     lines: &'a LineIndex,
     registers: Vec<Type>,
@@ -441,6 +640,40 @@ impl Compiler<'_> {
                         span,
                     );
                 }
+            }
+            StmtKind::Store {
+                array,
+                index,
+                value,
+            } => {
+                let src = self.expr(value);
+                let array = self.expr(array);
+                let index = self.expr(index);
+                self.emit(Op::Store { array, index, src }, span);
+            }
+            StmtKind::Call { name, args } => {
+                if Builtin::parse(&name.name) == Some(Builtin::Append) {
+                    if let [array, value] = args.as_slice() {
+                        let src = self.expr(value);
+                        let array = self.expr(array);
+                        self.emit(Op::Append { array, src }, span);
+                    }
+                } else {
+                    self.invoke(name, args, span);
+                }
+            }
+            StmtKind::Return { value } => {
+                let op = match value {
+                    Some(value) => Op::Return {
+                        src: self.expr(value),
+                        value: true,
+                    },
+                    None => Op::Return {
+                        src: 0,
+                        value: false,
+                    },
+                };
+                self.emit(op, span);
             }
             StmtKind::Delete { target } => {
                 let element = self.expr(target);
@@ -590,15 +823,29 @@ impl Compiler<'_> {
                 self.emit(Op::New { dst, kind: *kind }, span);
                 dst
             }
+            ExprKind::Index { array, index } => {
+                let array = self.expr(array);
+                let index = self.expr(index);
+                let item = self.register_type(array).item().unwrap_or(Type::Null);
+                let dst = self.register(item);
+                self.emit(Op::Index { dst, array, index }, span);
+                dst
+            }
             ExprKind::Call { name, args } => {
                 let Some(builtin) = Builtin::parse(&name.name) else {
-                    return self.constant(Value::Null, Type::Null);
+                    return self.invoke(name, args, span);
                 };
+                if builtin == Builtin::Length {
+                    let array = args.first().map_or(0, |array| self.expr(array));
+                    let dst = self.register(Type::Integer);
+                    self.emit(Op::Length { dst, array }, span);
+                    return dst;
+                }
                 let mut regs = [0; 3];
                 for (slot, arg) in regs.iter_mut().zip(args) {
                     *slot = self.expr(arg);
                 }
-                let dst = self.register(builtin.result());
+                let dst = self.register(builtin.result().unwrap_or(Type::Null));
                 self.emit(
                     Op::Call {
                         dst,
@@ -736,6 +983,32 @@ impl Compiler<'_> {
                 dst
             }
         }
+    }
+
+    /// Emits a call of another algorithm of the file and returns the
+    /// register its result lands in (a `null` one when it has none).
+    fn invoke(&mut self, name: &Ident, args: &[Expr], span: Span) -> Reg {
+        let Some((index, callee)) = self.signatures.find(&name.name) else {
+            return self.constant(Value::Null, Type::Null);
+        };
+        let result = callee.returns.flatten();
+        let registers: Vec<Reg> = args.iter().map(|arg| self.expr(arg)).collect();
+        let start = u32::try_from(self.arguments.len()).unwrap_or(u32::MAX);
+        self.arguments.extend(registers);
+        let dst = self.register(result.unwrap_or(Type::Null));
+        let Ok(routine) = u16::try_from(index) else {
+            self.overflow = true;
+            return dst;
+        };
+        self.emit(
+            Op::Invoke {
+                dst,
+                routine,
+                args: start,
+            },
+            span,
+        );
+        dst
     }
 
     fn register_type(&self, reg: Reg) -> Type {

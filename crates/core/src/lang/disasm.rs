@@ -128,6 +128,32 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
                 )
             }
         }
+        Op::Invoke { dst, routine, args } => {
+            let callee = algorithm.routines().get(usize::from(routine));
+            let count = callee.map_or(0, super::compiler::Routine::param_count);
+            let args: Vec<String> = algorithm
+                .call_arguments(args, count)
+                .iter()
+                .map(|&reg| name(reg))
+                .collect();
+            let callee = callee.map_or("?", |c| c.name.as_str());
+            let call = format!("{callee}({})", args.join(", "));
+            if algorithm.register_type(dst) == Type::Null {
+                format!("call     {call}")
+            } else {
+                format!("call     {} := {call}", name(dst))
+            }
+        }
+        Op::Return { src, value: true } => format!("return   {}", name(src)),
+        Op::Return { value: false, .. } => "return".to_owned(),
+        Op::Index { dst, array, index } => {
+            format!("index    {} := {}[{}]", name(dst), name(array), name(index))
+        }
+        Op::Store { array, index, src } => {
+            format!("store    {}[{}] := {}", name(array), name(index), name(src))
+        }
+        Op::Append { array, src } => format!("append   {}, {}", name(array), name(src)),
+        Op::Length { dst, array } => format!("length   {} := {}", name(dst), name(array)),
         Op::Move { dst, src } => format!("move     {} := {}", name(dst), name(src)),
         Op::Mark { element } => format!("mark     {}", name(element)),
         Op::Highlight { element } => format!("highlight {}", name(element)),

@@ -182,6 +182,8 @@ impl Lexer<'_> {
             (b'.', _) => (T::Dot, 1),
             (b'(', _) => (T::LParen, 1),
             (b')', _) => (T::RParen, 1),
+            (b'[', _) => (T::LBracket, 1),
+            (b']', _) => (T::RBracket, 1),
             (b'=', b'=') => (T::EqEq, 2),
             (b'=', _) => (T::Eq, 1),
             (b'<', b'>') => (T::NotEq, 2),

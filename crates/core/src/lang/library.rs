@@ -4,7 +4,7 @@
 use super::{Program, compile_rendered};
 
 /// The library's source files: (file name, text).
-pub const SOURCES: [(&str, &str); 3] = [
+pub const SOURCES: [(&str, &str); 5] = [
     (
         "winged-edge.alg",
         include_str!("../../../../algorithms/winged-edge.alg"),
@@ -16,6 +16,14 @@ pub const SOURCES: [(&str, &str); 3] = [
     (
         "half-edge-edits.alg",
         include_str!("../../../../algorithms/half-edge-edits.alg"),
+    ),
+    (
+        "winged-edge-edits.alg",
+        include_str!("../../../../algorithms/winged-edge-edits.alg"),
+    ),
+    (
+        "half-edge-strips.alg",
+        include_str!("../../../../algorithms/half-edge-strips.alg"),
     ),
 ];
 

@@ -10,7 +10,7 @@ use super::ast::*;
 use super::diagnostic::{Diagnostic, LineIndex, Span, shorten};
 use super::lexer::{SKIPPED_REST, tokenize};
 use super::token::{Token, TokenKind as T};
-use super::types::Type;
+use super::types::{Item, Type};
 use crate::schema::Structure;
 
 /// Parses a whole file. The tree is usable (with error nodes) even when
@@ -70,6 +70,7 @@ const STATEMENT_STARTS: &[T] = &[
     T::Mark,
     T::Highlight,
     T::Message,
+    T::Return,
 ];
 
 impl Parser<'_> {
@@ -240,6 +241,7 @@ impl Parser<'_> {
             structure_written = true;
             structure = self.mesh_type();
         }
+        let returns = self.result_type();
         self.eat(T::Semicolon);
         if self.eat(T::StructureType).is_some() {
             structure_written = true;
@@ -309,6 +311,7 @@ impl Parser<'_> {
             name,
             params,
             structure,
+            returns,
             description,
             vars,
             body,
@@ -359,10 +362,17 @@ impl Parser<'_> {
             if let Some(structure) = Structure::parse(word) {
                 return Some((structure, token.span));
             }
-            let hint = super::diagnostic::nearest(word, ["WingedEdge", "HalfEdge"]).map_or_else(
-                || "the structure types are WingedEdge and HalfEdge".to_owned(),
-                |n| format!("did you mean `{n}`?"),
-            );
+            let hint = if Type::parse(word).is_some() || word.eq_ignore_ascii_case("array") {
+                format!(
+                    "after `:` comes the structure the algorithm walks; a result is written \
+                     `returns {word}` after it"
+                )
+            } else {
+                super::diagnostic::nearest(word, ["WingedEdge", "HalfEdge"]).map_or_else(
+                    || "the structure types are WingedEdge and HalfEdge".to_owned(),
+                    |n| format!("did you mean `{n}`?"),
+                )
+            };
             self.report(
                 Diagnostic::error(token.span, format!("unknown structure type `{word}`"))
                     .with_hint(hint),
@@ -404,7 +414,58 @@ impl Parser<'_> {
             .collect()
     }
 
+    // result-type := "returns" type
+    fn result_type(&mut self) -> Option<(Option<Type>, Span)> {
+        self.eat(T::Returns)?;
+        let (ty, span) = self.type_name();
+        Some((ty, span))
+    }
+
+    // type := scalar-type | "Array" "of" scalar-type
     fn type_name(&mut self) -> (Option<Type>, Span) {
+        let token = self.token();
+        if token.kind == T::Ident && self.text(token.span).eq_ignore_ascii_case("array") {
+            return self.array_type();
+        }
+        self.scalar_type()
+    }
+
+    /// `Array of Edge`. The item type is read as a scalar type, without
+    /// recursion, so `Array of Array of …` is an error, not a deeper parse.
+    fn array_type(&mut self) -> (Option<Type>, Span) {
+        let start = self.bump().span;
+        if self.eat(T::Of).is_none() {
+            let message = format!("expected `of` after `Array`, found {}", self.found());
+            let span = self.token().span;
+            self.report(
+                Diagnostic::error(span, message)
+                    .with_hint("an array type names its items: `Array of Edge`"),
+            );
+            return (None, start);
+        }
+        let item = self.token();
+        if item.kind == T::Ident && self.text(item.span).eq_ignore_ascii_case("array") {
+            self.report(
+                Diagnostic::error(item.span, "an array cannot hold arrays").with_hint(
+                    "its items are vertices, edges, faces, numbers, Booleans or Vectors",
+                ),
+            );
+            // Skip the rest of the type (`Array of … of Edge`) in a loop.
+            while self.at(T::Ident) && self.text(self.token().span).eq_ignore_ascii_case("array") {
+                self.bump();
+                if self.eat(T::Of).is_none() {
+                    break;
+                }
+            }
+            let (_, span) = self.scalar_type();
+            return (None, start.to(span));
+        }
+        let (ty, span) = self.scalar_type();
+        let span = start.to(span);
+        (ty.and_then(Item::of).map(Type::Array), span)
+    }
+
+    fn scalar_type(&mut self) -> (Option<Type>, Span) {
         let token = self.token();
         if token.kind != T::Ident {
             let message = format!(
@@ -547,6 +608,11 @@ impl Parser<'_> {
                 StmtKind::Action { action, target }
             }
             T::Message | T::Refuse => self.message_statement(),
+            T::Return => {
+                self.bump();
+                let value = starts_expression(self.peek()).then(|| self.expression());
+                StmtKind::Return { value }
+            }
             T::Delete => {
                 self.bump();
                 StmtKind::Delete {
@@ -621,19 +687,31 @@ impl Parser<'_> {
                             value,
                         },
                     ),
+                    ExprKind::Index { array, index } => finish(
+                        self,
+                        StmtKind::Store {
+                            array: *array,
+                            index: *index,
+                            value,
+                        },
+                    ),
                     _ => {
                         self.report(
                             Diagnostic::error(
                                 target.span,
-                                "only a variable or a record's field can be assigned to",
+                                "only a variable, a record's field or an array's item can be \
+                                 assigned to",
                             )
-                            .with_hint("write `x := …` or `e.leftSuccessor := …`"),
+                            .with_hint("write `x := …`, `e.leftSuccessor := …` or `a[i] := …`"),
                         );
                         finish(self, StmtKind::Error)
                     }
                 }
             }
             _ => {
+                if let ExprKind::Call { name, args } = target.kind {
+                    return finish(self, StmtKind::Call { name, args });
+                }
                 if let ExprKind::Lookup { base, field } = &target.kind {
                     let action = if field.name.eq_ignore_ascii_case("mark") {
                         Some(Action::Mark)
@@ -1024,14 +1102,26 @@ impl Parser<'_> {
         self.postfix_expression()
     }
 
-    // element := identifier | element . pointer
+    // postfix := primary { "." lookup | "[" expr "]" }
     fn postfix_expression(&mut self) -> Expr {
         let depth = self.depth;
         let mut expr = self.primary();
-        while self.at(T::Dot) {
-            let dot = self.bump();
-            if !self.chain(dot.span) {
+        while matches!(self.peek(), T::Dot | T::LBracket) {
+            let operator = self.bump();
+            if !self.chain(operator.span) {
                 break;
+            }
+            if operator.kind == T::LBracket {
+                let index = self.expression();
+                self.expect(T::RBracket, "to close the index");
+                expr = Expr {
+                    span: expr.span.to(self.previous_span()),
+                    kind: ExprKind::Index {
+                        array: Box::new(expr),
+                        index: Box::new(index),
+                    },
+                };
+                continue;
             }
             let token = self.token();
             if token.kind == T::Ident || token.kind.is_keyword() {
@@ -1142,6 +1232,24 @@ impl Parser<'_> {
             }
         }
     }
+}
+
+/// Whether a token can begin an expression: `return` followed by one
+/// returns a value.
+fn starts_expression(kind: T) -> bool {
+    matches!(
+        kind,
+        T::Ident
+            | T::Integer
+            | T::Float
+            | T::True
+            | T::False
+            | T::Null
+            | T::New
+            | T::LParen
+            | T::Minus
+            | T::Not
+    )
 }
 
 /// The text between a string token's quotes.

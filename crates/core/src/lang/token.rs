@@ -40,6 +40,9 @@ pub enum TokenKind {
     New,
     Delete,
     Refuse,
+    Return,
+    Returns,
+    Of,
     // Punctuation and operators.
     /// `:=`
     Assign,
@@ -49,6 +52,8 @@ pub enum TokenKind {
     Dot,
     LParen,
     RParen,
+    LBracket,
+    RBracket,
     /// `=`
     Eq,
     /// `==`, the half-edge paper's spelling of `=`.
@@ -97,6 +102,9 @@ pub const KEYWORDS: &[(&str, TokenKind)] = &[
     ("new", TokenKind::New),
     ("delete", TokenKind::Delete),
     ("refuse", TokenKind::Refuse),
+    ("return", TokenKind::Return),
+    ("returns", TokenKind::Returns),
+    ("of", TokenKind::Of),
 ];
 
 impl TokenKind {
@@ -129,6 +137,8 @@ impl TokenKind {
             T::Dot => ".",
             T::LParen => "(",
             T::RParen => ")",
+            T::LBracket => "[",
+            T::RBracket => "]",
             T::Eq => "=",
             T::EqEq => "==",
             T::NotEq => "<>",

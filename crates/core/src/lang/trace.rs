@@ -1,17 +1,28 @@
 //! A recorded run, built for stepping: forward, back, to any step, to the
-//! next step on a breakpoint line, or to the end, all without re-running.
+//! next step on a breakpoint line, over or out of a call, or to the end,
+//! all without re-running.
 //!
 //! Each step is stored as 16 bytes: the instruction's index and up to three
 //! 32-bit value codes (the register types in the compiled code say how to
-//! read them). The variables are snapshotted every [`SNAPSHOT_INTERVAL`]
-//! steps, so the state after any step is one snapshot plus at most that many
-//! assignments replayed. Marks and highlights are kept in logs ordered by
-//! step, so the marked set at any step is a prefix found by binary search.
+//! read them). Calls are stored beside the steps, not in them: a frame
+//! record per call (its algorithm, caller and depth), and a segment list
+//! that says which frame each run of consecutive steps belongs to, found by
+//! binary search; a run without calls has one segment.
+//!
+//! Each frame's variables are snapshotted when it starts and every
+//! [`SNAPSHOT_INTERVAL`] of its own steps, so its state after any step is
+//! one snapshot plus at most that many of its assignments replayed.
+//! Arrays are logged the same way as the mesh: each array's changes (an
+//! append, or an item replaced with the old item kept) with the step that
+//! made them, so its items at any step are its changes up to that step
+//! replayed, forwards and backwards alike. Marks and highlights are kept in
+//! logs ordered by step, so the marked set at any step is a prefix found by
+//! binary search.
 
 use super::builtin::Builtin;
-use super::compiler::{Algorithm, CompareOp, ComputeOp, Op};
+use super::compiler::{Algorithm, CompareOp, ComputeOp, Op, Routine, VariableInfo};
 use super::diagnostic::Span;
-use super::types::{Type, Value};
+use super::types::{Type, Value, show_items};
 use super::vm::Recorder;
 use crate::mesh::{Change, Edit, EditError};
 use crate::schema::{Column, ElementRef};
@@ -19,7 +30,7 @@ use glam::Vec3;
 use std::fmt;
 use std::sync::Arc;
 
-/// Steps between two variable snapshots.
+/// A frame's own steps between two snapshots of its variables.
 pub const SNAPSHOT_INTERVAL: usize = 256;
 
 /// One recorded step, as stored.
@@ -129,6 +140,37 @@ pub enum StepKind<'t> {
         builtin: Builtin,
         result: Value,
     },
+    /// A call of another algorithm of the file; `frame` (see
+    /// [`Trace::frames_at`]) runs it from the next step, one level deeper.
+    Invoke {
+        algorithm: &'t str,
+        frame: usize,
+    },
+    /// Back to the caller, from `return` or the algorithm's `end`, with the
+    /// value returned if there is one. The started algorithm's `return`
+    /// goes on to its `done`.
+    Return {
+        value: Option<Value>,
+    },
+    /// `array[index]` gave `result`.
+    Index {
+        array: Value,
+        index: i32,
+        result: Value,
+    },
+    /// `array[index] := new`, replacing `old`.
+    Store {
+        array: Value,
+        index: i32,
+        old: Value,
+        new: Value,
+    },
+    /// `append(array, value)`; the array now has `length` items.
+    Append {
+        array: Value,
+        value: Value,
+        length: i32,
+    },
     Done,
 }
 
@@ -143,13 +185,113 @@ pub struct StepView<'t> {
     pub line: u32,
 }
 
+/// One frame of the call stack at a step: the started algorithm or a call.
+#[derive(Clone, Debug)]
+pub struct FrameView<'t> {
+    /// The algorithm it runs.
+    pub name: &'t str,
+    pub routine: &'t Routine,
+    /// 0 for the started algorithm, 1 for what it calls, and so on.
+    pub depth: usize,
+    /// The caller's step that made the call, and its line; `None` for the
+    /// started algorithm.
+    pub call_step: Option<usize>,
+    pub call_line: Option<u32>,
+    /// Its variables (parameters first) right after the step.
+    pub variables: Vec<(&'t VariableInfo, Value)>,
+}
+
+/// Calls deeper than this are indented no further in a rendered trace
+/// (their depth is written instead), so a deep recursion stays readable.
+const MAX_INDENT: usize = 16;
+
+/// Frames' `parent` and `call_step` where there is none.
+const NONE: u32 = u32::MAX;
+
+/// One run of an algorithm: the started one (frame 0) or a call.
+#[derive(Clone, Debug, Default)]
+struct FrameRecord {
+    routine: u32,
+    parent: u32,
+    depth: u32,
+    call_step: u32,
+    /// The index of its first step.
+    first: u32,
+    /// Its variables as it started, from here in the snapshot values.
+    entry: u32,
+    count: u32,
+    /// Later snapshots: the step each was taken before, and where its
+    /// values are.
+    snapshots: Vec<(u32, u32)>,
+}
+
+/// Every frame: the started algorithm's (0) apart, so that a run without
+/// calls allocates nothing for frames, then the calls, numbered from 1.
+#[derive(Clone, Debug, Default)]
+struct Frames {
+    root: FrameRecord,
+    calls: Vec<FrameRecord>,
+}
+
+impl Frames {
+    fn get(&self, id: usize) -> Option<&FrameRecord> {
+        match id.checked_sub(1) {
+            None => Some(&self.root),
+            Some(call) => self.calls.get(call),
+        }
+    }
+
+    fn get_mut(&mut self, id: usize) -> Option<&mut FrameRecord> {
+        match id.checked_sub(1) {
+            None => Some(&mut self.root),
+            Some(call) => self.calls.get_mut(call),
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.calls.len() + 1
+    }
+}
+
+/// From step `start` on, until the next segment, the steps are `frame`'s.
+#[derive(Clone, Copy, Debug)]
+struct Segment {
+    start: u32,
+    frame: u32,
+}
+
+/// The segments of a run without calls, which keeps none.
+const ROOT_ONLY: [Segment; 1] = [Segment { start: 0, frame: 0 }];
+
+/// One array's history: its item type and every change, in step order.
+#[derive(Clone, Debug)]
+struct ArrayLog {
+    item: Type,
+    changes: Vec<ArrayChange>,
+}
+
+/// Item `index` became `new` at `step` (codes of the item type), replacing
+/// `old`, or was appended.
+#[derive(Clone, Copy, Debug)]
+struct ArrayChange {
+    step: u32,
+    index: u32,
+    old: u32,
+    new: u32,
+    appended: bool,
+}
+
 /// Everything a run did, step by step.
 #[derive(Clone, Debug)]
 pub struct Trace {
     algorithm: Arc<Algorithm>,
-    initial: Vec<Value>,
     steps: Vec<Step>,
-    snapshots: Vec<Value>,
+    frames: Frames,
+    /// Empty when the run made no call: every step is frame 0's.
+    segments: Vec<Segment>,
+    /// The values of every frame's snapshots.
+    values: Vec<Value>,
+    arrays: Vec<ArrayLog>,
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
@@ -158,73 +300,109 @@ pub struct Trace {
     /// Every change to the mesh, with the step that made it, in order.
     changes: Vec<(u32, Change)>,
     final_variables: Vec<Value>,
+    result: Option<Value>,
     outcome: Outcome,
 }
 
+#[derive(Default)]
 pub(crate) struct TraceRecorder {
-    variable_count: usize,
     steps: Vec<Step>,
-    snapshots: Vec<Value>,
+    frames: Frames,
+    /// Whether the started algorithm's frame has begun.
+    started: bool,
+    segments: Vec<Segment>,
+    values: Vec<Value>,
+    arrays: Vec<ArrayLog>,
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
     messages: Vec<String>,
     vectors: Vec<Vec3>,
+    /// The callers of the running frame, outermost first, each with how
+    /// many of its own steps remain until its next snapshot.
+    callers: Vec<(u32, usize)>,
+    /// The running frame, and the step before which it is snapshotted next.
+    frame: u32,
+    due: usize,
+}
+
+fn index_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
 }
 
 impl TraceRecorder {
-    pub(crate) fn new(variable_count: usize) -> Self {
-        Self {
-            variable_count,
-            steps: Vec::new(),
-            snapshots: Vec::new(),
-            marks: Vec::new(),
-            highlights: Vec::new(),
-            messages: Vec::new(),
-            vectors: Vec::new(),
-        }
-    }
-
     /// A value's 32-bit code; a Vector is stored aside.
     fn encode(&mut self, value: Value) -> u32 {
         match value {
             Value::Vector(v) => {
                 self.vectors.push(v);
-                u32::try_from(self.vectors.len() - 1).unwrap_or(u32::MAX)
+                index_u32(self.vectors.len() - 1)
             }
             other => other.code(),
         }
     }
 
     fn current_step(&self) -> u32 {
-        u32::try_from(self.steps.len().saturating_sub(1)).unwrap_or(u32::MAX)
+        index_u32(self.steps.len().saturating_sub(1))
+    }
+
+    /// Snapshots the running frame's variables before the next step; the
+    /// next one is due [`SNAPSHOT_INTERVAL`] of its own steps later.
+    #[cold]
+    fn snapshot(&mut self, variables: &[Value]) {
+        let offset = index_u32(self.values.len());
+        self.values.extend_from_slice(variables);
+        let step = index_u32(self.steps.len());
+        if let Some(frame) = self.frames.get_mut(self.frame as usize) {
+            frame.snapshots.push((step, offset));
+        }
+        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+    }
+
+    /// Starts a segment of the running frame's steps at the next step.
+    fn segment(&mut self) {
+        let start = index_u32(self.steps.len());
+        let frame = self.frame;
+        if self.segments.is_empty() {
+            self.segments.extend(ROOT_ONLY);
+        }
+        match self.segments.last_mut() {
+            // A frame that made no step owns none.
+            Some(last) if last.start == start => last.frame = frame,
+            _ => self.segments.push(Segment { start, frame }),
+        }
     }
 
     pub(crate) fn finish(
         self,
         algorithm: Arc<Algorithm>,
-        initial: Vec<Value>,
         final_variables: Vec<Value>,
         changes: Vec<(u32, Change)>,
+        result: Option<Value>,
         outcome: Outcome,
     ) -> Trace {
         let mut recorder = self;
         // Growth by doubling can leave half the step buffer unused.
         recorder.steps.shrink_to_fit();
-        recorder.snapshots.shrink_to_fit();
+        recorder.values.shrink_to_fit();
         recorder.marks.shrink_to_fit();
         recorder.highlights.shrink_to_fit();
+        recorder.frames.calls.shrink_to_fit();
+        recorder.segments.shrink_to_fit();
         let recorder = recorder;
         Trace {
             algorithm,
-            initial,
             steps: recorder.steps,
-            snapshots: recorder.snapshots,
+            frames: recorder.frames,
+            segments: recorder.segments,
+            values: recorder.values,
+            arrays: recorder.arrays,
             marks: recorder.marks,
             highlights: recorder.highlights,
             messages: recorder.messages,
             vectors: recorder.vectors,
             changes,
             final_variables,
+            result,
             outcome,
         }
     }
@@ -233,15 +411,78 @@ impl TraceRecorder {
 impl Recorder for TraceRecorder {
     #[inline(always)]
     fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]) {
-        if self.steps.len().is_multiple_of(SNAPSHOT_INTERVAL) {
-            self.snapshots.extend_from_slice(variables);
-            debug_assert_eq!(variables.len(), self.variable_count);
+        if self.steps.len() == self.due {
+            self.snapshot(variables);
         }
         let (a, b, r) = (self.encode(a), self.encode(b), self.encode(r));
         self.steps.push(Step { pc, a, b, r });
     }
 
-    // The VM records a mark's step just before calling these.
+    fn enter(&mut self, routine: u32, variables: &[Value]) {
+        let root = !self.started;
+        let (parent, call_step) = if root {
+            (NONE, NONE)
+        } else {
+            let left = self.due.saturating_sub(self.steps.len());
+            self.callers.push((self.frame, left));
+            (self.frame, self.current_step())
+        };
+        let entry = index_u32(self.values.len());
+        self.values.extend_from_slice(variables);
+        let record = FrameRecord {
+            routine,
+            parent,
+            depth: index_u32(self.callers.len()),
+            call_step,
+            first: index_u32(self.steps.len()),
+            entry,
+            count: index_u32(variables.len()),
+            snapshots: Vec::new(),
+        };
+        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+        if root {
+            self.started = true;
+            self.frames.root = record;
+            self.frame = 0;
+        } else {
+            self.frames.calls.push(record);
+            self.frame = index_u32(self.frames.calls.len());
+            self.segment();
+        }
+    }
+
+    fn leave(&mut self) {
+        if let Some((frame, left)) = self.callers.pop() {
+            self.frame = frame;
+            self.due = self.steps.len() + left;
+            self.segment();
+        }
+    }
+
+    fn array_created(&mut self, item: Type) {
+        self.arrays.push(ArrayLog {
+            item,
+            changes: Vec::new(),
+        });
+    }
+
+    // The VM records the step just before calling this, as for marks.
+    fn array_changed(&mut self, array: u32, index: u32, old: Option<Value>, new: Value) {
+        let step = self.current_step();
+        let appended = old.is_none();
+        let old = old.map_or(0, |old| self.encode(old));
+        let new = self.encode(new);
+        if let Some(log) = self.arrays.get_mut(array as usize) {
+            log.changes.push(ArrayChange {
+                step,
+                index,
+                old,
+                new,
+                appended,
+            });
+        }
+    }
+
     fn mark(&mut self, element: ElementRef) {
         let step = self.current_step();
         self.marks.push((step, element));
@@ -254,7 +495,7 @@ impl Recorder for TraceRecorder {
 
     fn message(&mut self, text: String) -> u32 {
         self.messages.push(text);
-        u32::try_from(self.messages.len() - 1).unwrap_or(u32::MAX)
+        index_u32(self.messages.len() - 1)
     }
 }
 
@@ -294,20 +535,81 @@ impl Trace {
         &self.outcome
     }
 
+    /// What the started algorithm returned, if it returned a value.
+    pub fn result(&self) -> Option<Value> {
+        self.result
+    }
+
+    fn decoder(&self, ty: Type) -> Decoder<'_> {
+        Decoder {
+            ty,
+            vectors: &self.vectors,
+        }
+    }
+
+    /// The frame step `index` belongs to.
+    fn frame_of(&self, index: usize) -> usize {
+        let after = self.segments.partition_point(|s| s.start as usize <= index);
+        after
+            .checked_sub(1)
+            .and_then(|i| self.segments.get(i))
+            .map_or(0, |s| s.frame as usize)
+    }
+
+    /// The segments, with the one a run without calls leaves implicit.
+    fn segments(&self) -> &[Segment] {
+        if self.segments.is_empty() {
+            &ROOT_ONLY
+        } else {
+            &self.segments
+        }
+    }
+
+    fn routine_of(&self, frame: usize) -> Option<&Routine> {
+        let record = self.frames.get(frame)?;
+        self.algorithm.routines().get(record.routine as usize)
+    }
+
+    /// The frame a call step started.
+    fn called_frame(&self, index: usize) -> Option<usize> {
+        let calls = &self.frames.calls;
+        let at = calls.partition_point(|f| (f.call_step as usize) < index);
+        calls
+            .get(at)
+            .filter(|f| f.call_step as usize == index)
+            .map(|_| at + 1)
+    }
+
+    /// The algorithm step `index` ran in, with the step and its instruction.
+    fn located(&self, index: usize) -> Option<(&Routine, Step, &super::compiler::Instr)> {
+        let step = *self.steps.get(index)?;
+        let routine = self.routine_of(self.frame_of(index))?;
+        let instr = routine.code.get(step.pc as usize)?;
+        Some((routine, step, instr))
+    }
+
+    /// How deep in calls step `index` ran: 0 in the started algorithm.
+    pub fn depth(&self, index: usize) -> Option<usize> {
+        if index >= self.steps.len() {
+            return None;
+        }
+        let frame = self.frames.get(self.frame_of(index))?;
+        Some(frame.depth as usize)
+    }
+
+    /// The algorithm step `index` ran in.
+    pub fn routine_at(&self, index: usize) -> Option<&Routine> {
+        self.located(index).map(|(routine, _, _)| routine)
+    }
+
     /// Decodes step `index`.
     pub fn step(&self, index: usize) -> Option<StepView<'_>> {
-        let step = *self.steps.get(index)?;
-        let instr = self.algorithm.code.get(step.pc as usize)?;
-        let ty = |reg| Decoder {
-            ty: self.algorithm.register_type(reg),
-            vectors: &self.vectors,
-        };
+        let (routine, step, instr) = self.located(index)?;
+        let ty = |reg| self.decoder(routine.register_type(reg));
+        let item = |reg| self.decoder(routine.register_type(reg).item().unwrap_or(Type::Null));
         let kind = match instr.op {
             Op::Write { base, field, .. } => {
-                let column = Decoder {
-                    ty: field.target().map_or(Type::Vector, Type::of_kind),
-                    vectors: &self.vectors,
-                };
+                let column = self.decoder(field.target().map_or(Type::Vector, Type::of_kind));
                 StepKind::Write {
                     element: ty(base).decode(step.a),
                     field,
@@ -324,6 +626,44 @@ impl Trace {
             Op::Call { dst, builtin, .. } => StepKind::Call {
                 builtin,
                 result: ty(dst).decode(step.r),
+            },
+            Op::Length { .. } => StepKind::Call {
+                builtin: Builtin::Length,
+                result: Type::Integer.decode(step.r),
+            },
+            Op::Invoke {
+                routine: number, ..
+            } => StepKind::Invoke {
+                algorithm: self
+                    .algorithm
+                    .routines()
+                    .get(usize::from(number))
+                    .map_or("", |r| r.name.as_str()),
+                frame: self.called_frame(index).unwrap_or(0),
+            },
+            Op::Return { value, .. } => StepKind::Return {
+                value: value.then(|| {
+                    self.decoder(routine.result.unwrap_or(Type::Null))
+                        .decode(step.a)
+                }),
+            },
+            Op::Index { dst, array, .. } => StepKind::Index {
+                array: ty(array).decode(step.a),
+                index: step.b.cast_signed(),
+                result: ty(dst).decode(step.r),
+            },
+            Op::Store { array, .. } => StepKind::Store {
+                array: ty(array).decode(step.a),
+                index: step.b.cast_signed(),
+                old: self
+                    .array_change(step.a, index)
+                    .map_or(Value::Null, |change| item(array).decode(change.old)),
+                new: item(array).decode(step.r),
+            },
+            Op::Append { array, .. } => StepKind::Append {
+                array: ty(array).decode(step.a),
+                value: item(array).decode(step.r),
+                length: step.b.cast_signed(),
             },
             Op::Lookup { dst, base, field } => StepKind::Lookup {
                 base: ty(base).decode(step.a),
@@ -365,6 +705,8 @@ impl Trace {
                     .get(step.a as usize)
                     .map_or("", String::as_str),
             },
+            // A call that reaches its `end` returns.
+            Op::Done if self.depth(index).unwrap_or(0) > 0 => StepKind::Return { value: None },
             Op::Done
             | Op::Refuse { .. }
             | Op::Move { .. }
@@ -379,10 +721,16 @@ impl Trace {
         })
     }
 
+    /// The change array `array` logged at step `index`.
+    fn array_change(&self, array: u32, index: usize) -> Option<&ArrayChange> {
+        let changes = &self.arrays.get(array as usize)?.changes;
+        let at = changes.partition_point(|c| (c.step as usize) < index);
+        changes.get(at).filter(|c| c.step as usize == index)
+    }
+
     /// The source line of step `index`.
     pub fn line(&self, index: usize) -> Option<u32> {
-        let step = self.steps.get(index)?;
-        self.algorithm.code.get(step.pc as usize).map(|i| i.line)
+        self.located(index).map(|(_, _, instr)| instr.line)
     }
 
     /// Every change the run made to the mesh, oldest first.
@@ -435,45 +783,202 @@ impl Trace {
         Ok(())
     }
 
-    /// The variables (parameters first) before the first step.
+    /// The started algorithm's variables (parameters first) before the
+    /// first step.
     pub fn initial_variables(&self) -> &[Value] {
-        &self.initial
+        let root = &self.frames.root;
+        let start = root.entry as usize;
+        self.values
+            .get(start..start + root.count as usize)
+            .unwrap_or(&[])
     }
 
-    /// The variables when the run stopped.
+    /// The started algorithm's variables when the run stopped.
     pub fn final_variables(&self) -> &[Value] {
         &self.final_variables
     }
 
-    /// The variables right after step `index`: one snapshot plus at most
+    /// The started algorithm's variables right after step `index` (calls
+    /// change them only by what they return): one snapshot plus at most
     /// [`SNAPSHOT_INTERVAL`] assignments replayed.
     pub fn variables_at(&self, index: usize) -> Vec<Value> {
         if index >= self.steps.len() {
             return self.final_variables.clone();
         }
-        let count = self.initial.len();
-        let block = index / SNAPSHOT_INTERVAL;
-        let mut state = self
+        self.frame_variables(0, index)
+    }
+
+    /// Frame `frame`'s variables right after step `index`: its latest
+    /// snapshot then its own assignments since, skipping the steps of the
+    /// calls it made.
+    fn frame_variables(&self, frame: usize, index: usize) -> Vec<Value> {
+        let Some(record) = self.frames.get(frame) else {
+            return Vec::new();
+        };
+        let Some(routine) = self.routine_of(frame) else {
+            return Vec::new();
+        };
+        let later = record
             .snapshots
-            .get(block * count..(block + 1) * count)
-            .map_or_else(|| self.initial.clone(), <[Value]>::to_vec);
-        for step in self
-            .steps
-            .get(block * SNAPSHOT_INTERVAL..=index)
-            .unwrap_or(&[])
-        {
-            if let Some(Op::Assign { var, .. }) =
-                self.algorithm.code.get(step.pc as usize).map(|i| i.op)
-                && let Some(slot) = state.get_mut(usize::from(var))
-            {
-                *slot = Decoder {
-                    ty: self.algorithm.register_type(var),
-                    vectors: &self.vectors,
+            .partition_point(|&(step, _)| step as usize <= index);
+        let (from, offset) = later
+            .checked_sub(1)
+            .and_then(|i| record.snapshots.get(i))
+            .copied()
+            .unwrap_or((record.first, record.entry));
+        let offset = offset as usize;
+        let mut state = self
+            .values
+            .get(offset..offset + record.count as usize)
+            .map_or_else(Vec::new, <[Value]>::to_vec);
+        for (range, owner) in self.runs(from as usize..index.saturating_add(1)) {
+            if owner != frame {
+                continue;
+            }
+            for step in self.steps.get(range).unwrap_or(&[]) {
+                if let Some(Op::Assign { var, .. }) =
+                    routine.code.get(step.pc as usize).map(|i| i.op)
+                    && let Some(slot) = state.get_mut(usize::from(var))
+                {
+                    *slot = self.decoder(routine.register_type(var)).decode(step.r);
                 }
-                .decode(step.r);
             }
         }
         state
+    }
+
+    /// The steps of `range` cut into runs of one frame each, in order, with
+    /// the frame.
+    fn runs(
+        &self,
+        range: std::ops::Range<usize>,
+    ) -> impl Iterator<Item = (std::ops::Range<usize>, usize)> + '_ {
+        let end = range.end.min(self.steps.len());
+        let segments = self.segments();
+        let first = segments
+            .partition_point(|s| s.start as usize <= range.start)
+            .saturating_sub(1);
+        let segments = segments.get(first..).unwrap_or(&[]);
+        segments
+            .iter()
+            .enumerate()
+            .map_while(move |(i, segment)| {
+                let next = segments
+                    .get(i + 1)
+                    .map_or(end, |s| (s.start as usize).min(end));
+                let start = (segment.start as usize).max(range.start);
+                (start < end).then_some((start..next.max(start), segment.frame as usize))
+            })
+            .filter(|(run, _)| !run.is_empty())
+    }
+
+    /// The call stack right after step `index`, the started algorithm
+    /// first and the innermost call last, each frame with its variables.
+    /// At or past the end, the stack where the run stopped (an error may
+    /// stop it in a call that made no step yet).
+    pub fn frames_at(&self, index: usize) -> Vec<FrameView<'_>> {
+        let index = index.min(self.steps.len());
+        let mut chain = Vec::new();
+        let mut frame = self.frame_of(index);
+        while let Some(record) = self.frames.get(frame) {
+            chain.push(frame);
+            if record.parent == NONE || chain.len() > self.frames.len() {
+                break;
+            }
+            frame = record.parent as usize;
+        }
+        chain
+            .into_iter()
+            .rev()
+            .filter_map(|frame| self.frame_view(frame, index))
+            .collect()
+    }
+
+    fn frame_view(&self, frame: usize, index: usize) -> Option<FrameView<'_>> {
+        let record = self.frames.get(frame)?;
+        let routine = self.routine_of(frame)?;
+        let call_step = (record.call_step != NONE).then_some(record.call_step as usize);
+        Some(FrameView {
+            name: &routine.name,
+            routine,
+            depth: record.depth as usize,
+            call_step,
+            call_line: call_step.and_then(|step| self.line(step)),
+            variables: routine
+                .variables
+                .iter()
+                .zip(self.frame_variables(frame, index))
+                .collect(),
+        })
+    }
+
+    /// The next step after `from` that is not inside a call `from` makes:
+    /// over a call, to the step after it returns.
+    pub fn step_over(&self, from: usize) -> Option<usize> {
+        let depth = self.depth(from)?;
+        self.next_where(from, |d| d <= depth)
+    }
+
+    /// The next step after the running call returns, in its caller; `None`
+    /// in the started algorithm.
+    pub fn step_out(&self, from: usize) -> Option<usize> {
+        let depth = self.depth(from)?.checked_sub(1)?;
+        self.next_where(from, |d| d <= depth)
+    }
+
+    /// The last step before `from` that is not inside a call: stepping back
+    /// over a call.
+    pub fn step_back_over(&self, from: usize) -> Option<usize> {
+        let depth = self.depth(from)?;
+        let runs: Vec<_> = self.runs(0..from).collect();
+        runs.into_iter()
+            .rev()
+            .find(|(_, frame)| {
+                self.frames
+                    .get(*frame)
+                    .is_some_and(|f| f.depth as usize <= depth)
+            })
+            .map(|(run, _)| run.end - 1)
+    }
+
+    fn next_where(&self, from: usize, keep: impl Fn(usize) -> bool) -> Option<usize> {
+        let start = from.checked_add(1)?;
+        self.runs(start..self.steps.len())
+            .find(|(_, frame)| {
+                self.frames
+                    .get(*frame)
+                    .is_some_and(|f| keep(f.depth as usize))
+            })
+            .map(|(run, _)| run.start)
+    }
+
+    /// The items of an array value right after step `index` (after the
+    /// last step, its final items); `None` for other values.
+    pub fn items_at(&self, array: Value, index: usize) -> Option<Vec<Value>> {
+        let Value::Array(number) = array else {
+            return None;
+        };
+        let log = self.arrays.get(number as usize)?;
+        let decoder = self.decoder(log.item);
+        let mut items = Vec::new();
+        for change in log.changes.iter().take_while(|c| c.step as usize <= index) {
+            let value = decoder.decode(change.new);
+            if change.appended {
+                items.push(value);
+            } else if let Some(slot) = items.get_mut(change.index as usize) {
+                *slot = value;
+            }
+        }
+        Some(items)
+    }
+
+    /// A value as the trace shows it after step `index`: an array as its
+    /// items then, `[face 0, face 3]`.
+    pub fn show(&self, value: Value, index: usize) -> String {
+        match self.items_at(value, index) {
+            Some(items) => show_items(&items),
+            None => value.to_string(),
+        }
     }
 
     /// The elements marked up to and including step `index`, in marking order.
@@ -509,57 +1014,78 @@ impl Trace {
         })
     }
 
+    /// Whether step `index`, of a run of `frame`'s steps, is on `line`.
+    fn on_line(&self, frame: usize, index: usize, line: u32) -> bool {
+        let Some(routine) = self.routine_of(frame) else {
+            return false;
+        };
+        self.steps
+            .get(index)
+            .and_then(|s| routine.code.get(s.pc as usize))
+            .is_some_and(|i| i.line == line)
+    }
+
     /// The first step after `from` on source line `line` (a breakpoint),
     /// if any.
     pub fn next_on_line(&self, from: usize, line: u32) -> Option<usize> {
-        let code = &self.algorithm.code;
         let start = from.checked_add(1)?;
-        let rest = self.steps.get(start..)?;
-        rest.iter()
-            .position(|s| code.get(s.pc as usize).is_some_and(|i| i.line == line))
-            .map(|p| p + start)
+        self.runs(start..self.steps.len())
+            .find_map(|(run, frame)| run.into_iter().find(|&i| self.on_line(frame, i, line)))
     }
 
     /// The last step before `from` on `line`, for stepping back to a breakpoint.
     pub fn previous_on_line(&self, from: usize, line: u32) -> Option<usize> {
-        let code = &self.algorithm.code;
-        let before = self.steps.get(..from.min(self.steps.len()))?;
-        before
-            .iter()
-            .rposition(|s| code.get(s.pc as usize).is_some_and(|i| i.line == line))
+        let runs: Vec<_> = self.runs(0..from.min(self.steps.len())).collect();
+        runs.into_iter()
+            .rev()
+            .find_map(|(run, frame)| run.rev().find(|&i| self.on_line(frame, i, line)))
     }
 
-    /// Bytes held by the trace's step data, snapshots and logs (not counting
-    /// message texts), for the memory figure in the documentation.
+    /// Bytes held by the trace's step data, frames, snapshots and logs (not
+    /// counting message texts), for the memory figure in the documentation.
     pub fn memory_bytes(&self) -> usize {
         use std::mem::size_of;
+        let frames: usize = std::iter::once(&self.frames.root)
+            .chain(&self.frames.calls)
+            .map(|f| f.snapshots.capacity() * size_of::<(u32, u32)>())
+            .sum();
+        let arrays: usize = self
+            .arrays
+            .iter()
+            .map(|a| a.changes.capacity() * size_of::<ArrayChange>())
+            .sum();
         self.steps.capacity() * size_of::<Step>()
-            + self.snapshots.capacity() * size_of::<Value>()
+            + (self.frames.calls.capacity() + 1) * size_of::<FrameRecord>()
+            + frames
+            + self.segments.capacity() * size_of::<Segment>()
+            + self.values.capacity() * size_of::<Value>()
+            + self.arrays.capacity() * size_of::<ArrayLog>()
+            + arrays
             + self.vectors.capacity() * size_of::<Vec3>()
             + self.changes.capacity() * size_of::<(u32, Change)>()
             + (self.marks.capacity() + self.highlights.capacity()) * size_of::<(u32, ElementRef)>()
     }
 
     /// One line per step, as `edgewise trace` prints it:
-    /// `step 12  line 10  lookup e.startVertex -> vertex 1`.
+    /// `step 12  line 10  lookup e.startVertex -> vertex 1`, indented two
+    /// spaces for each call it is inside (up to [`MAX_INDENT`]).
     pub fn render_line(&self, index: usize) -> String {
         let Some(view) = self.step(index) else {
             return String::new();
         };
-        let step = self.steps.get(index).copied();
-        let snippet = step
-            .and_then(|s| self.algorithm.code.get(s.pc as usize))
-            .map(|i| self.algorithm.snippet(i.span))
-            .unwrap_or_default();
+        let Some((routine, _, instr)) = self.located(index) else {
+            return String::new();
+        };
+        let snippet = routine.snippet(instr.span);
+        let name = |reg| routine.register_name(reg);
         let what = match view.kind {
             StepKind::Lookup { result, .. } => format!("lookup {snippet} -> {result}"),
             StepKind::Assign { variable, value } => {
-                let name = self
-                    .algorithm
+                let name = routine
                     .variables
                     .get(variable)
                     .map_or("?", |v| v.name.as_str());
-                format!("assign {name} := {value}")
+                format!("assign {name} := {}", self.show(value, index))
             }
             StepKind::Compare {
                 op,
@@ -606,9 +1132,59 @@ impl Trace {
             StepKind::New { element } => format!("new {element}"),
             StepKind::Delete { element } => format!("delete {element}"),
             StepKind::Call { result, .. } => format!("call {snippet} -> {result}"),
+            StepKind::Invoke { algorithm, frame } => {
+                let arguments: Vec<String> = self
+                    .frames
+                    .get(frame)
+                    .filter(|_| frame != 0)
+                    .and_then(|_| self.frame_view(frame, index))
+                    .map(|callee| {
+                        callee
+                            .variables
+                            .iter()
+                            .filter(|(v, _)| v.is_param)
+                            .map(|(v, value)| format!("{} = {}", v.name, self.show(*value, index)))
+                            .collect()
+                    })
+                    .unwrap_or_default();
+                format!("call {algorithm}({})", arguments.join(", "))
+            }
+            StepKind::Return { value: Some(value) } => {
+                format!("return {}", self.show(value, index))
+            }
+            StepKind::Return { value: None } => "return".to_owned(),
+            StepKind::Index {
+                index: at, result, ..
+            } => format!("index {snippet} (item {at}) -> {result}"),
+            StepKind::Store {
+                index: at,
+                old,
+                new,
+                ..
+            } => {
+                let array = match instr.op {
+                    Op::Store { array, .. } => name(array),
+                    _ => String::new(),
+                };
+                format!("store {array}[{at}] := {new} (was {old})")
+            }
+            StepKind::Append { value, length, .. } => {
+                let array = match instr.op {
+                    Op::Append { array, .. } => name(array),
+                    _ => String::new(),
+                };
+                let items = if length == 1 { "item" } else { "items" };
+                format!("append {value} to {array} (now {length} {items})")
+            }
             StepKind::Done => "done".to_owned(),
         };
-        format!("step {}  line {}  {what}", index + 1, view.line)
+        let depth = self.depth(index).unwrap_or(0);
+        let indent = if depth > MAX_INDENT {
+            format!("{}[depth {depth}] ", "  ".repeat(MAX_INDENT))
+        } else {
+            "  ".repeat(depth)
+        };
+        format!("step {}  line {}  {indent}{what}", index + 1, view.line)
     }
 
     /// `marked: edge 0, edge 5, edge 1`, or `marked:` when nothing was.
@@ -635,5 +1211,23 @@ impl Trace {
             out.push_str(&format!("error: {error}\n"));
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::mem::size_of;
+
+    /// The sizes algorithms/README.md gives for a step and a call.
+    #[test]
+    fn steps_and_calls_stay_small() {
+        assert_eq!(size_of::<Step>(), 16);
+        assert_eq!(
+            size_of::<FrameRecord>() + 2 * size_of::<Segment>(),
+            72,
+            "a call's record and its two segments"
+        );
+        assert_eq!(size_of::<Value>(), 16);
     }
 }

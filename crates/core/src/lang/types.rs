@@ -22,6 +22,51 @@ pub enum Type {
     /// A point or direction in space: three Floats.
     Vector,
     Null,
+    /// `Array of Edge`: a list, 0-based, that grows by `append`.
+    Array(Item),
+}
+
+/// What an array holds: any declarable type but an array, so that `Type`
+/// stays a small `Copy` value and no type nests without end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Item {
+    Vertex,
+    Edge,
+    Face,
+    Integer,
+    Boolean,
+    Float,
+    Vector,
+}
+
+impl Item {
+    pub const ALL: [Item; 7] = [
+        Item::Vertex,
+        Item::Edge,
+        Item::Face,
+        Item::Integer,
+        Item::Boolean,
+        Item::Float,
+        Item::Vector,
+    ];
+
+    /// The items' type.
+    pub fn ty(self) -> Type {
+        match self {
+            Item::Vertex => Type::Vertex,
+            Item::Edge => Type::Edge,
+            Item::Face => Type::Face,
+            Item::Integer => Type::Integer,
+            Item::Boolean => Type::Boolean,
+            Item::Float => Type::Float,
+            Item::Vector => Type::Vector,
+        }
+    }
+
+    /// The item kind of `ty`, if an array can hold it.
+    pub fn of(ty: Type) -> Option<Item> {
+        Item::ALL.into_iter().find(|item| item.ty() == ty)
+    }
 }
 
 impl Type {
@@ -45,6 +90,23 @@ impl Type {
             Type::Float => "Float",
             Type::Vector => "Vector",
             Type::Null => "null",
+            Type::Array(item) => match item {
+                Item::Vertex => "Array of Vertex",
+                Item::Edge => "Array of Edge",
+                Item::Face => "Array of Face",
+                Item::Integer => "Array of Integer",
+                Item::Boolean => "Array of Boolean",
+                Item::Float => "Array of Float",
+                Item::Vector => "Array of Vector",
+            },
+        }
+    }
+
+    /// The type of an array's items; `None` for other types.
+    pub fn item(self) -> Option<Type> {
+        match self {
+            Type::Array(item) => Some(item.ty()),
+            _ => None,
         }
     }
 
@@ -84,7 +146,9 @@ impl Type {
             || (self == Type::Float && value == Type::Integer)
     }
 
-    /// The initial value of a variable of this type.
+    /// The initial value of a variable of this type. An array variable
+    /// starts as a new empty array, which only a run can make; this gives
+    /// `null` for it.
     pub fn default_value(self) -> Value {
         match self {
             Type::Integer => Value::Integer(0),
@@ -111,6 +175,7 @@ impl Type {
             Type::Vector => Value::Vector(Vec3::ZERO),
             Type::Null => Value::Null,
             _ if code == NULL_CODE => Value::Null,
+            Type::Array(_) => Value::Array(code),
             Type::Vertex => Value::Vertex(code),
             Type::Edge => Value::Edge(code),
             Type::Face => Value::Face(code),
@@ -139,6 +204,10 @@ pub enum Value {
     Boolean(bool),
     Float(f32),
     Vector(Vec3),
+    /// An array: its number in the run's list of arrays. Assigning or
+    /// passing it shares the array (as in Java or Python); the trace and
+    /// [`super::Execution`] show its items.
+    Array(u32),
 }
 
 impl Value {
@@ -153,6 +222,7 @@ impl Value {
             Value::Boolean(b) => (5, [u32::from(b), 0, 0]),
             Value::Float(x) => (6, [x.to_bits(), 0, 0]),
             Value::Vector(v) => (7, [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]),
+            Value::Array(i) => (8, [i, 0, 0]),
         }
     }
 
@@ -167,8 +237,23 @@ impl Value {
 }
 
 impl PartialEq for Value {
+    /// The same as comparing identities, matched directly: the VM compares
+    /// values at every loop test, and building two identities costs more
+    /// than the lookup being tested.
+    #[inline]
     fn eq(&self, other: &Self) -> bool {
-        self.identity() == other.identity()
+        match (*self, *other) {
+            (Value::Null, Value::Null) => true,
+            (Value::Vertex(a), Value::Vertex(b))
+            | (Value::Edge(a), Value::Edge(b))
+            | (Value::Face(a), Value::Face(b))
+            | (Value::Array(a), Value::Array(b)) => a == b,
+            (Value::Integer(a), Value::Integer(b)) => a == b,
+            (Value::Boolean(a), Value::Boolean(b)) => a == b,
+            (Value::Float(a), Value::Float(b)) => a.to_bits() == b.to_bits(),
+            (Value::Vector(_), Value::Vector(_)) => self.identity() == other.identity(),
+            _ => false,
+        }
     }
 }
 
@@ -187,7 +272,7 @@ impl Value {
     pub fn code(self) -> u32 {
         match self {
             Value::Null => NULL_CODE,
-            Value::Vertex(i) | Value::Edge(i) | Value::Face(i) => i,
+            Value::Vertex(i) | Value::Edge(i) | Value::Face(i) | Value::Array(i) => i,
             Value::Integer(n) => n.cast_unsigned(),
             Value::Boolean(b) => u32::from(b),
             Value::Float(x) => x.to_bits(),
@@ -238,11 +323,31 @@ impl fmt::Display for Value {
                 write_float(f, v.z)?;
                 f.write_str(")")
             }
+            Value::Array(i) => write!(f, "array {i}"),
             _ => match self.element() {
                 Some(element) => element.fmt(f),
                 None => Ok(()),
             },
         }
+    }
+}
+
+/// Array items beyond this many are summed up, so that a message or a
+/// trace line about a long array stays readable.
+pub const SHOWN_ITEMS: usize = 12;
+
+/// An array's items as messages and traces show them: `[edge 1, edge 4]`,
+/// a long one cut to its first [`SHOWN_ITEMS`] and its length.
+pub fn show_items(items: &[Value]) -> String {
+    let shown: Vec<String> = items
+        .iter()
+        .take(SHOWN_ITEMS)
+        .map(ToString::to_string)
+        .collect();
+    if items.len() > SHOWN_ITEMS {
+        format!("[{}, … {} items in all]", shown.join(", "), items.len())
+    } else {
+        format!("[{}]", shown.join(", "))
     }
 }
 
@@ -272,6 +377,33 @@ mod tests {
         ] {
             assert_eq!(ty.decode(ty.encode(value)), value);
         }
+    }
+
+    #[test]
+    fn equality_is_identity() {
+        let values = [
+            Value::Null,
+            Value::Vertex(1),
+            Value::Edge(1),
+            Value::Face(1),
+            Value::Array(1),
+            Value::Integer(1),
+            Value::Boolean(true),
+            Value::Float(1.0),
+            Value::Float(-0.0),
+            Value::Float(0.0),
+            Value::Vector(Vec3::ONE),
+            Value::Vector(Vec3::ZERO),
+        ];
+        for a in values {
+            for b in values {
+                assert_eq!(a == b, a.identity() == b.identity(), "{a:?} {b:?}");
+            }
+        }
+        let array = Type::Array(Item::Edge);
+        assert_eq!(array.decode(array.encode(Value::Array(7))), Value::Array(7));
+        assert_eq!(array.name(), "Array of Edge");
+        assert_eq!(Item::of(Type::Null), None);
     }
 
     #[test]

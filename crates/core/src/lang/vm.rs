@@ -1,7 +1,7 @@
 //! The stepping virtual machine: runs compiled code on a [`Topology`],
 //! producing either a full [`Trace`] or, for speed, just the outcome.
 
-use super::compiler::{Algorithm, CompareOp, ComputeOp, MessageItem, Op, Reg};
+use super::compiler::{Algorithm, CompareOp, ComputeOp, Instr, MessageItem, Op, Reg, Routine};
 use super::diagnostic::Span;
 use super::topology::Topology;
 use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
@@ -218,7 +218,22 @@ impl Algorithm {
                 continue;
             }
             let name = variable.name.clone();
-            let Some(&(_, value)) = inputs.iter().find(|(n, _)| *n == variable.name) else {
+            let given = inputs.iter().find(|(n, _)| *n == variable.name);
+            if let Type::Array(_) = variable.ty {
+                // An array parameter of the algorithm started begins empty.
+                match given {
+                    Some(&(_, value)) if value != Value::Null => {
+                        return Err(InputError::WrongType {
+                            name,
+                            expected: variable.ty,
+                            found: value.to_string(),
+                        });
+                    }
+                    _ => values.push(Value::Null),
+                }
+                continue;
+            }
+            let Some(&(_, value)) = given else {
                 return Err(InputError::Missing {
                     name,
                     ty: variable.ty,
@@ -274,14 +289,14 @@ pub fn run<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Reading(topology),
         &variables,
-        TraceRecorder::new(algorithm.variables.len()),
+        TraceRecorder::default(),
         options,
     );
-    Ok(machine.into_trace(algorithm, variables))
+    Ok(machine.trace(algorithm))
 }
 
 /// Runs an algorithm that may change the mesh, recording every step and
@@ -295,14 +310,14 @@ pub fn run_editing(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Editing::new(mesh),
         &variables,
-        TraceRecorder::new(algorithm.variables.len()),
+        TraceRecorder::default(),
         options,
     );
-    Ok(machine.into_trace(algorithm, variables))
+    Ok(machine.trace(algorithm))
 }
 
 /// The result of [`execute`]: what a run produced, without its steps.
@@ -313,6 +328,11 @@ pub struct Execution {
     pub messages: Vec<String>,
     /// The variables' final values, in declaration order (parameters first).
     pub variables: Vec<Value>,
+    /// Every array the run made, with its final items, numbered as the
+    /// [`Value::Array`]s in `variables` number them.
+    pub arrays: Vec<Vec<Value>>,
+    /// What the algorithm returned, if it returned a value.
+    pub result: Option<Value>,
     /// The number of operations performed.
     pub steps: usize,
     /// What an editing run changed, oldest first ([`execute_editing`]).
@@ -326,6 +346,14 @@ impl Execution {
         let index = algorithm.variables.iter().position(|v| v.name == name)?;
         self.variables.get(index).copied()
     }
+
+    /// The final items of an array value; `None` for other values.
+    pub fn items(&self, array: Value) -> Option<&[Value]> {
+        match array {
+            Value::Array(number) => self.arrays.get(number as usize).map(Vec::as_slice),
+            _ => None,
+        }
+    }
 }
 
 /// Runs an algorithm keeping only its output: the fast path for tests,
@@ -337,14 +365,14 @@ pub fn execute<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Reading(topology),
         &variables,
         OutputRecorder::default(),
         options,
     );
-    Ok(machine.into_execution())
+    Ok(machine.execution())
 }
 
 /// [`execute`] for an algorithm that may change the mesh: `mesh` is left
@@ -356,14 +384,14 @@ pub fn execute_editing(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let machine = Machine::new(
+    let mut machine = Machine::new(
         algorithm,
         Editing::new(mesh),
         &variables,
         OutputRecorder::default(),
         options,
     );
-    Ok(machine.into_execution())
+    Ok(machine.execution())
 }
 
 /// Where the VM reads the mesh and, when it may, changes it.
@@ -439,9 +467,20 @@ impl Store for Editing<'_> {
 }
 
 /// Receives the VM's steps. `step` is called before the step changes any
-/// variable, with the variables as they are, so a recorder can snapshot them.
+/// variable, with the running frame's variables as they are, so a recorder
+/// can snapshot them.
 pub(crate) trait Recorder {
     fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]);
+    /// A frame starts running `routine` with these variables: the root
+    /// frame before the first step, a call's right after the call's step.
+    fn enter(&mut self, routine: u32, variables: &[Value]);
+    /// The innermost frame returned; its return step was recorded.
+    fn leave(&mut self);
+    /// A new empty array of `item`s, numbered in the order they are made.
+    fn array_created(&mut self, item: Type);
+    /// The step just recorded changed an array: item `index` went from
+    /// `old` to `new`, or (`old` = `None`) `new` was appended.
+    fn array_changed(&mut self, array: u32, index: u32, old: Option<Value>, new: Value);
     fn mark(&mut self, element: ElementRef);
     fn highlight(&mut self, element: ElementRef);
     /// Stores a message's text and returns its number.
@@ -458,6 +497,18 @@ pub(crate) struct OutputRecorder {
 impl Recorder for OutputRecorder {
     #[inline]
     fn step(&mut self, _pc: u32, _a: Value, _b: Value, _r: Value, _variables: &[Value]) {}
+
+    #[inline]
+    fn enter(&mut self, _routine: u32, _variables: &[Value]) {}
+
+    #[inline]
+    fn leave(&mut self) {}
+
+    #[inline]
+    fn array_created(&mut self, _item: Type) {}
+
+    #[inline]
+    fn array_changed(&mut self, _array: u32, _index: u32, _old: Option<Value>, _new: Value) {}
 
     fn mark(&mut self, element: ElementRef) {
         self.marked.push(element);
@@ -486,16 +537,109 @@ enum NullOrigin {
     Assigned {
         pc: usize,
     },
+    /// A parameter given null by the call on `line`.
+    Passed {
+        line: u32,
+    },
+}
+
+/// The most algorithms running at once: the one started and the calls in
+/// progress. Frames live in a `Vec`, not on the Rust stack; the limit stops
+/// a runaway recursion early, with a message, rather than at the step limit.
+pub const MAX_CALL_DEPTH: usize = 256;
+
+/// The most array items one run may make, counting each new array as one:
+/// enough for any exercise, and a hostile loop stops at 16 MiB of items.
+pub const MAX_ARRAY_ITEMS: usize = 1 << 20;
+
+/// A caller waiting for its call to return.
+struct Frame<'a> {
+    routine: &'a Routine,
+    index: u32,
+    registers: Vec<Value>,
+    null_origins: Vec<NullOrigin>,
+    variable_count: usize,
+    /// Where the caller goes on, and where the result goes.
+    return_pc: usize,
+    dst: Reg,
+}
+
+/// The arrays a run made: [`Value::Array`] numbers them.
+#[derive(Default)]
+struct Arrays {
+    lists: Vec<Vec<Value>>,
+    /// Items and arrays made so far, against [`MAX_ARRAY_ITEMS`].
+    made: usize,
+}
+
+impl Arrays {
+    fn reserve(&mut self) -> Result<(), String> {
+        if self.made >= MAX_ARRAY_ITEMS {
+            return Err(format!(
+                "the arrays of this run reached {MAX_ARRAY_ITEMS} items, the most one run may \
+                 make (each new array counts as one)"
+            ));
+        }
+        self.made += 1;
+        Ok(())
+    }
+
+    fn list(&self, array: Value) -> Result<&Vec<Value>, String> {
+        match array {
+            Value::Array(i) => self
+                .lists
+                .get(i as usize)
+                .ok_or_else(|| format!("{array} does not exist")),
+            _ => Err(format!("{array} is not an array")),
+        }
+    }
+
+    /// The item at `index`, or why there is none: "index 5 is out of range
+    /// in a[i] (the array has 3 items, indices 0 to 2)", said of `code`.
+    fn checked(
+        &self,
+        array: Value,
+        index: Value,
+        code: impl FnOnce() -> String,
+    ) -> Result<(usize, &Vec<Value>), String> {
+        let list = self.list(array)?;
+        let Value::Integer(i) = index else {
+            return Err(format!("{index} is not an index"));
+        };
+        match usize::try_from(i) {
+            Ok(i) if i < list.len() => Ok((i, list)),
+            _ => {
+                let items = match list.len() {
+                    0 => "the array is empty".to_owned(),
+                    1 => "the array has 1 item, index 0".to_owned(),
+                    n => format!("the array has {n} items, indices 0 to {}", n - 1),
+                };
+                Err(format!("index {i} is out of range in {} ({items})", code()))
+            }
+        }
+    }
 }
 
 struct Machine<'a, S, R> {
-    algorithm: &'a Algorithm,
+    /// Every algorithm of the started one's file, which calls name by number.
+    routines: &'a [Routine],
+    /// The algorithm running now, and its number.
+    routine: &'a Routine,
+    current: u32,
     store: S,
     /// The step each journal entry was made at.
     change_steps: Vec<u32>,
+    /// The running frame's registers: its variables first.
     registers: Vec<Value>,
     variable_count: usize,
     null_origins: Vec<NullOrigin>,
+    /// The callers of the running frame, outermost first.
+    frames: Vec<Frame<'a>>,
+    /// Register files of returned calls, reused by the next calls.
+    spare: Vec<(Vec<Value>, Vec<NullOrigin>)>,
+    arrays: Arrays,
+    /// What the started algorithm returned, if it returned a value.
+    result: Option<Value>,
     recorder: R,
     limit: usize,
     steps: usize,
@@ -510,81 +654,116 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         recorder: R,
         options: RunOptions,
     ) -> Self {
-        let mut registers: Vec<Value> = algorithm
-            .registers
-            .iter()
-            .map(|ty| ty.default_value())
-            .collect();
+        let routine: &'a Routine = algorithm;
+        let mut registers = routine.initial.clone();
         for (slot, value) in registers.iter_mut().zip(variables) {
             *slot = *value;
         }
-        for &(reg, value) in &algorithm.constants {
-            if let Some(slot) = registers.get_mut(usize::from(reg)) {
-                *slot = value;
-            }
-        }
-        let variable_count = algorithm.variables.len().min(registers.len());
-        Machine {
-            algorithm,
+        let variable_count = routine.variables.len().min(registers.len());
+        let mut machine = Machine {
+            routines: algorithm.routines(),
+            routine,
+            current: u32::try_from(algorithm.index()).unwrap_or(u32::MAX),
             store,
             change_steps: Vec::new(),
-            registers,
+            registers: Vec::new(),
             variable_count,
             null_origins: vec![NullOrigin::Unassigned; variable_count],
+            frames: Vec::new(),
+            spare: Vec::new(),
+            arrays: Arrays::default(),
+            result: None,
             recorder,
             limit: options.step_limit,
             steps: 0,
             back_jumps: 0,
-        }
+        };
+        // A routine has fewer than 65,536 registers, so its arrays fit the
+        // budget of a fresh run.
+        let _ = machine.new_arrays(routine, &mut registers, 0);
+        machine.registers = registers;
+        machine
     }
 
-    fn variables(&self) -> &[Value] {
-        self.registers.get(..self.variable_count).unwrap_or(&[])
+    /// The started algorithm's variables, wherever the run is.
+    fn root_variables(&self) -> Vec<Value> {
+        let (registers, count) = match self.frames.first() {
+            Some(root) => (&root.registers, root.variable_count),
+            None => (&self.registers, self.variable_count),
+        };
+        registers.get(..count).unwrap_or(&[]).to_vec()
     }
 
-    fn into_trace(mut self, algorithm: &Arc<Algorithm>, initial: Vec<Value>) -> Trace
+    // The two below take the machine by reference: moving it costs more
+    // than a short run.
+    fn trace(&mut self, algorithm: &Arc<Algorithm>) -> Trace
     where
-        R: Into<TraceRecorder>,
+        R: Into<TraceRecorder> + Default,
     {
         let outcome = self.run();
-        let final_variables = self.variables().to_vec();
+        let final_variables = self.root_variables();
         let changes: Vec<(u32, Change)> = self
             .change_steps
             .iter()
             .copied()
             .zip(self.store.journal().iter().copied())
             .collect();
-        let recorder: TraceRecorder = self.recorder.into();
+        let recorder: TraceRecorder = std::mem::take(&mut self.recorder).into();
         recorder.finish(
             Arc::clone(algorithm),
-            initial,
             final_variables,
             changes,
+            self.result,
             outcome,
         )
     }
 
-    fn into_execution(mut self) -> Execution
+    fn execution(&mut self) -> Execution
     where
-        R: Into<OutputRecorder>,
+        R: Into<OutputRecorder> + Default,
     {
         let outcome = self.run();
-        let variables = self.variables().to_vec();
+        let variables = self.root_variables();
         let changes = self.store.journal().to_vec();
         let OutputRecorder {
             marked,
             highlighted,
             messages,
-        } = self.recorder.into();
+        } = std::mem::take(&mut self.recorder).into();
         Execution {
             marked,
             highlighted,
             messages,
             variables,
+            arrays: std::mem::take(&mut self.arrays.lists),
+            result: self.result,
             steps: self.steps,
             changes,
             outcome,
         }
+    }
+
+    /// Gives every array variable of `routine` from `first` on a new empty
+    /// array: the locals of a call, all the variables of the started one.
+    fn new_arrays(
+        &mut self,
+        routine: &Routine,
+        registers: &mut [Value],
+        first: usize,
+    ) -> Result<(), String> {
+        for &(variable, item) in &routine.array_variables {
+            if usize::from(variable) < first {
+                continue;
+            }
+            self.arrays.reserve()?;
+            let number = index_u32(self.arrays.lists.len());
+            self.arrays.lists.push(Vec::new());
+            self.recorder.array_created(item.ty());
+            if let Some(slot) = registers.get_mut(usize::from(variable)) {
+                *slot = Value::Array(number);
+            }
+        }
+        Ok(())
     }
 
     /// Ties the journal entries an edit just made to the step it recorded.
@@ -632,7 +811,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     }
 
     fn run(&mut self) -> Outcome {
-        let code = &self.algorithm.code;
+        let variables = self.registers.get(..self.variable_count).unwrap_or(&[]);
+        self.recorder.enter(self.current, variables);
+        let mut code: &'a [Instr] = &self.routine.code;
         let mut pc = 0usize;
         loop {
             let Some(instr) = code.get(pc) else {
@@ -746,19 +927,41 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                         Ok(result) => result,
                         Err(problem) => {
                             let message =
-                                format!("{problem} in {}", self.algorithm.snippet(instr.span));
+                                format!("{problem} in {}", self.routine.snippet(instr.span));
                             return self.fail(pc, message);
                         }
                     };
                     self.record(pc, values[0], values[1], result);
                     self.set(dst, result);
                 }
+                Op::Invoke { dst, routine, args } => {
+                    if let Err(message) = self.call(pc, dst, routine, args) {
+                        return self.fail(pc, message);
+                    }
+                    code = &self.routine.code;
+                    pc = 0;
+                    continue;
+                }
+                Op::Return { src, value } => {
+                    let result = value.then(|| widen(self.routine.result, self.get(src)));
+                    self.record(pc, result.unwrap_or(Value::Null), Value::Null, Value::Null);
+                    if self.frames.is_empty() {
+                        // The started algorithm goes on to its `end`.
+                        self.result = result;
+                        pc = code.len().saturating_sub(1);
+                        continue;
+                    }
+                    pc = self.return_to_caller(result);
+                    code = &self.routine.code;
+                    continue;
+                }
+                Op::Index { .. } | Op::Store { .. } | Op::Append { .. } | Op::Length { .. } => {
+                    if let Err(message) = self.array(pc, instr) {
+                        return self.fail(pc, message);
+                    }
+                }
                 Op::Assign { var, src } => {
-                    let value = self.get(src);
-                    let value = match (self.algorithm.register_type(var), value) {
-                        (Type::Float, Value::Integer(n)) => Value::Float(n as f32),
-                        _ => value,
-                    };
+                    let value = widen(Some(self.routine.register_type(var)), self.get(src));
                     self.record(pc, Value::Null, Value::Null, value);
                     if value == Value::Null {
                         self.note_null(pc, var, src);
@@ -785,11 +988,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     let (l, r) = (self.get(left), self.get(right));
                     let result = match compute(op, l, r) {
                         Ok(result) => result,
-                        Err(problem) => {
-                            let message =
-                                format!("{problem} in {}", self.algorithm.snippet(instr.span));
-                            return self.fail(pc, message);
-                        }
+                        Err(problem) => return self.fail(pc, self.in_code(&problem, pc)),
                     };
                     self.record(pc, l, r, result);
                     self.set(dst, result);
@@ -838,7 +1037,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     continue;
                 }
                 Op::JumpIf { cond, when, target } => {
-                    if self.get(cond) == Value::Boolean(when) {
+                    if matches!(self.get(cond), Value::Boolean(b) if b == when) {
                         if let Some(outcome) = self.jump(pc, target) {
                             return outcome;
                         }
@@ -848,11 +1047,148 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                 }
                 Op::Done => {
                     self.record(pc, Value::Null, Value::Null, Value::Null);
-                    return Outcome::Finished;
+                    if self.frames.is_empty() {
+                        return Outcome::Finished;
+                    }
+                    // A call that reached its `end`: the checker has made
+                    // sure only one without a result can.
+                    let result = self.routine.result.map(Type::default_value);
+                    pc = self.return_to_caller(result);
+                    code = &self.routine.code;
+                    continue;
                 }
             }
             pc += 1;
         }
+    }
+
+    /// Runs an array operation and records its step. Kept out of the main
+    /// loop, like calls, so that algorithms without them run as fast as
+    /// before they existed.
+    #[inline(never)]
+    fn array(&mut self, pc: usize, instr: &Instr) -> Result<(), String> {
+        let code = || self.routine.snippet(instr.span);
+        match instr.op {
+            Op::Index { dst, array, index } => {
+                let (list, at) = (self.get(array), self.get(index));
+                let (i, items) = self.arrays.checked(list, at, code)?;
+                let item = items.get(i).copied().unwrap_or(Value::Null);
+                self.record(pc, list, at, item);
+                self.set(dst, item);
+            }
+            Op::Store { array, index, src } => {
+                let (list, at) = (self.get(array), self.get(index));
+                let value = widen(self.routine.register_type(array).item(), self.get(src));
+                let (i, items) = self.arrays.checked(list, at, code)?;
+                let old = items.get(i).copied().unwrap_or(Value::Null);
+                if let Some(slot) = self
+                    .arrays
+                    .lists
+                    .get_mut(list.code() as usize)
+                    .and_then(|items| items.get_mut(i))
+                {
+                    *slot = value;
+                }
+                self.record(pc, list, at, value);
+                self.recorder
+                    .array_changed(list.code(), index_u32(i), Some(old), value);
+            }
+            Op::Append { array, src } => {
+                let list = self.get(array);
+                let value = widen(self.routine.register_type(array).item(), self.get(src));
+                let length = self.arrays.list(list)?.len();
+                self.arrays.reserve()?;
+                if let Some(items) = self.arrays.lists.get_mut(list.code() as usize) {
+                    items.push(value);
+                }
+                let count = Value::Integer(i32::try_from(length + 1).unwrap_or(i32::MAX));
+                self.record(pc, list, count, value);
+                self.recorder
+                    .array_changed(list.code(), index_u32(length), None, value);
+            }
+            Op::Length { dst, array } => {
+                let list = self.get(array);
+                let length = self.arrays.list(list)?.len();
+                let length = Value::Integer(i32::try_from(length).unwrap_or(i32::MAX));
+                self.record(pc, list, Value::Null, length);
+                self.set(dst, length);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// Starts a call: records its step in the caller, then makes the callee
+    /// the running frame, its parameters set from the arguments and its
+    /// array variables new arrays.
+    #[inline(never)]
+    fn call(&mut self, pc: usize, dst: Reg, number: u16, args: u32) -> Result<(), String> {
+        let Some(callee) = self.routines.get(usize::from(number)) else {
+            return Err(format!("there is no algorithm number {number} to call"));
+        };
+        if self.frames.len() + 1 >= MAX_CALL_DEPTH {
+            return Err(format!(
+                "calls nest too deep: {MAX_CALL_DEPTH} algorithms are running at once, the most \
+                 there may be; does `{}` call itself without end?",
+                callee.name
+            ));
+        }
+        let (mut registers, mut null_origins) = self.spare.pop().unwrap_or_default();
+        registers.clear();
+        registers.extend_from_slice(&callee.initial);
+        let variable_count = callee.variables.len().min(registers.len());
+        null_origins.clear();
+        null_origins.resize(variable_count, NullOrigin::Unassigned);
+        let params = callee.param_count();
+        let line = self.location(pc).1;
+        let arguments = self.routine.call_arguments(args, params);
+        for (i, (&reg, variable)) in arguments.iter().zip(&callee.variables).enumerate() {
+            let value = widen(Some(variable.ty), self.get(reg));
+            if let Some(slot) = registers.get_mut(i) {
+                *slot = value;
+            }
+            if value == Value::Null
+                && let Some(origin) = null_origins.get_mut(i)
+            {
+                *origin = NullOrigin::Passed { line };
+            }
+        }
+        self.new_arrays(callee, &mut registers, params)?;
+        self.record(pc, Value::Null, Value::Null, Value::Null);
+        let caller = Frame {
+            routine: self.routine,
+            index: self.current,
+            registers: std::mem::replace(&mut self.registers, registers),
+            null_origins: std::mem::replace(&mut self.null_origins, null_origins),
+            variable_count: self.variable_count,
+            return_pc: pc + 1,
+            dst,
+        };
+        self.frames.push(caller);
+        self.routine = callee;
+        self.current = u32::from(number);
+        self.variable_count = variable_count;
+        let variables = self.registers.get(..variable_count).unwrap_or(&[]);
+        self.recorder.enter(self.current, variables);
+        Ok(())
+    }
+
+    /// Ends the running call: the caller runs again, with `result` in the
+    /// call's register. Returns where the caller goes on.
+    #[inline(never)]
+    fn return_to_caller(&mut self, result: Option<Value>) -> usize {
+        let Some(caller) = self.frames.pop() else {
+            return self.routine.code.len();
+        };
+        let registers = std::mem::replace(&mut self.registers, caller.registers);
+        let null_origins = std::mem::replace(&mut self.null_origins, caller.null_origins);
+        self.spare.push((registers, null_origins));
+        self.routine = caller.routine;
+        self.current = caller.index;
+        self.variable_count = caller.variable_count;
+        self.set(caller.dst, result.unwrap_or(Value::Null));
+        self.recorder.leave();
+        caller.return_pc
     }
 
     /// Counts backward jumps, so a loop with no operation in it still meets
@@ -882,12 +1218,18 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     }
 
     fn location(&self, pc: usize) -> (Span, u32) {
-        self.algorithm
+        self.routine
             .code
             .get(pc)
-            .map_or((self.algorithm.span, self.algorithm.first_line), |i| {
+            .map_or((self.routine.span, self.routine.first_line), |i| {
                 (i.span, i.line)
             })
+    }
+
+    /// `problem` with the code it happened in: "division by zero (1 div 0)
+    /// in n div k".
+    fn in_code(&self, problem: &str, pc: usize) -> String {
+        format!("{problem} in {}", self.routine.snippet(self.location(pc).0))
     }
 
     fn fail(&self, pc: usize, message: String) -> Outcome {
@@ -901,7 +1243,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     }
 
     fn format_message(&self, index: u32) -> String {
-        let Some(template) = self.algorithm.messages.get(index as usize) else {
+        let Some(template) = self.routine.messages.get(index as usize) else {
             return String::new();
         };
         let items: Vec<String> = template
@@ -909,11 +1251,19 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             .iter()
             .map(|item| match item {
                 MessageItem::Text(text) => text.clone(),
-                MessageItem::Value(reg) => self.get(*reg).to_string(),
+                MessageItem::Value(reg) => self.show(self.get(*reg)),
             })
             .filter(|item| !item.is_empty())
             .collect();
         items.join(" ")
+    }
+
+    /// A value as a message shows it: an array as its items.
+    fn show(&self, value: Value) -> String {
+        match self.arrays.list(value) {
+            Ok(items) if matches!(value, Value::Array(_)) => super::types::show_items(items),
+            _ => value.to_string(),
+        }
     }
 
     fn note_null(&mut self, pc: usize, var: Reg, src: Reg) {
@@ -935,7 +1285,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     /// The lookup instruction that computes intermediate register `reg`, if
     /// one does (each intermediate register has a single writer).
     fn writer_lookup(&self, reg: Reg) -> Option<(usize, Reg)> {
-        self.algorithm
+        self.routine
             .code
             .iter()
             .enumerate()
@@ -947,8 +1297,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
 
     /// Why a lookup yielded null: "edge 7 is on the boundary".
     fn null_reason(&self, lookup_pc: usize, base: Value) -> String {
-        let Some(Op::Lookup { field, .. }) = self.algorithm.code.get(lookup_pc).map(|i| i.op)
-        else {
+        let Some(Op::Lookup { field, .. }) = self.routine.code.get(lookup_pc).map(|i| i.op) else {
             return "it was never set".to_owned();
         };
         match field {
@@ -963,14 +1312,14 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     /// where its null came from.
     fn explain_null(&self, reg: Reg) -> String {
         if let Some(&origin) = self.null_origins.get(usize::from(reg)) {
-            let name = self.algorithm.register_name(reg);
+            let name = self.routine.register_name(reg);
             return match origin {
                 NullOrigin::Unassigned => format!("{name} is null (it has not been assigned yet)"),
                 NullOrigin::Lookup { pc, base } => {
                     let (span, line) = self.location(pc);
                     format!(
                         "{name} is null (set from {} on line {line}: {})",
-                        self.algorithm.snippet(span),
+                        self.routine.snippet(span),
                         self.null_reason(pc, base)
                     )
                 }
@@ -978,13 +1327,16 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     let (_, line) = self.location(pc);
                     format!("{name} is null (assigned on line {line})")
                 }
+                NullOrigin::Passed { line } => {
+                    format!("{name} is null (the call on line {line} passed null)")
+                }
             };
         }
         if let Some((pc, base)) = self.writer_lookup(reg) {
             let (span, _) = self.location(pc);
             return format!(
                 "{} is null ({})",
-                self.algorithm.snippet(span),
+                self.routine.snippet(span),
                 self.null_reason(pc, self.get(base))
             );
         }
@@ -1001,6 +1353,20 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
 
     fn cannot_act_message(&self, word: &str, reg: Reg) -> String {
         format!("cannot {word} null: {}", self.explain_null(reg))
+    }
+}
+
+fn index_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+/// `value` as a variable or item of type `ty` holds it: an Integer
+/// widens to a Float.
+#[inline(always)]
+fn widen(ty: Option<Type>, value: Value) -> Value {
+    match (ty, value) {
+        (Some(Type::Float), Value::Integer(n)) => Value::Float(n as f32),
+        _ => value,
     }
 }
 
