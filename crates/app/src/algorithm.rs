@@ -257,6 +257,18 @@ impl AlgorithmRun {
         Ok(())
     }
 
+    pub fn step_over(&mut self) -> Result<(), String> {
+        self.session_mut()?.step_over();
+        self.changed();
+        Ok(())
+    }
+
+    pub fn step_out(&mut self) -> Result<(), String> {
+        self.session_mut()?.step_out()?;
+        self.changed();
+        Ok(())
+    }
+
     pub fn back(&mut self, n: usize) -> Result<(), String> {
         self.session_mut()?.back(n);
         self.changed();

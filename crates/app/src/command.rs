@@ -68,6 +68,10 @@ pub enum Command {
     Step(usize),
     /// Steps the trace back.
     Back(usize),
+    /// Runs the call on the next step as one step.
+    StepOver,
+    /// Runs to the step after the current call returns.
+    StepOut,
     /// Goes to a step (clamped to the trace).
     Goto(usize),
     /// Stops the running algorithm.

@@ -147,6 +147,8 @@ pub struct TraceState {
     pub error: Option<String>,
     /// The algorithm's `message` output so far.
     pub output: Vec<String>,
+    /// The call stack, the started algorithm first.
+    pub calls: Vec<String>,
 }
 
 impl TraceState {
@@ -169,6 +171,7 @@ impl TraceState {
             message: frame.message.clone(),
             error: frame.error.clone(),
             output: frame.output.clone(),
+            calls: frame.calls.clone(),
         }
     }
 }

@@ -209,3 +209,45 @@ fn a_shared_link_to_a_half_done_edit_carries_the_mesh_it_started_from() {
     assert_eq!(state.trace.map(|t| t.step), Some(70));
     assert_eq!(opened.state().mesh(), Some(&shown));
 }
+
+#[test]
+fn calls_are_stepped_into_over_and_out_of_with_the_call_stack_shown() {
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    harness
+        .state_mut()
+        .run_algorithm("splitEdge", &[("h".to_owned(), Argument::Number(2.0))])
+        .expect("the split starts");
+    harness.run();
+    // Step into the first call of cutCorner.
+    let call_step = loop {
+        harness.state_mut().trace_step(1).expect("steps");
+        let trace = harness.state().state().trace.expect("tracing");
+        if trace.calls.len() == 2 {
+            assert_eq!(trace.calls[0], "splitEdge");
+            assert!(
+                trace.calls[1].starts_with("cutCorner (called on line "),
+                "{:?}",
+                trace.calls
+            );
+            // The variables shown are the callee's.
+            assert!(trace.variables.contains_key("t"), "{:?}", trace.variables);
+            assert!(!trace.variables.contains_key("gp"), "{:?}", trace.variables);
+            break trace.step - 1;
+        }
+        assert!(!trace.done, "splitEdge never called cutCorner");
+    };
+    // Out of it: back in splitEdge, after the call.
+    harness.state_mut().trace_step_out().expect("steps out");
+    let after = harness.state().state().trace.expect("tracing");
+    assert_eq!(after.calls, ["splitEdge"]);
+    assert!(after.step > call_step + 2);
+    // Over it, from the call's own step: the same place, in one go.
+    harness.state_mut().trace_goto(call_step).expect("goto");
+    harness.state_mut().trace_step_over().expect("steps over");
+    let over = harness.state().state().trace.expect("tracing");
+    assert_eq!(over.calls, ["splitEdge"]);
+    assert!(over.step > call_step + 2, "{} after {call_step}", over.step);
+    // Outside a call there is nothing to step out of.
+    let refused = harness.state_mut().trace_step_out().expect_err("refused");
+    assert!(refused.contains("not inside a call"), "{refused}");
+}

@@ -46,6 +46,9 @@ pub struct TraceFrame {
     /// Byte offsets of the expression executed, in the algorithm's source.
     pub span: Option<(u32, u32)>,
     pub variables: Vec<VariableView>,
+    /// The call stack, the started algorithm first: `cutCorner (called on
+    /// line 140)`. One entry outside calls.
+    pub calls: Vec<String>,
     /// A short name of the operation: "lookup", "assign", "compare",
     /// "compute", "mark", "highlight", "message", "done" or "start".
     pub operation: &'static str,
@@ -94,6 +97,31 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     let variables = match step {
         0 => trace.initial_variables().to_vec(),
         k => trace.variables_at(k - 1),
+    };
+    // Inside a call, the variables shown are the running algorithm's.
+    let frames = step
+        .checked_sub(1)
+        .map(|index| trace.frames_at(index))
+        .unwrap_or_default();
+    let calls: Vec<String> = frames
+        .iter()
+        .map(|frame| match frame.call_line {
+            Some(line) => format!("{} (called on line {line})", frame.name),
+            None => frame.name.to_owned(),
+        })
+        .collect();
+    let shown: Vec<(String, Type, Value)> = match frames.last() {
+        Some(frame) if frames.len() > 1 => frame
+            .variables
+            .iter()
+            .map(|(info, value)| (info.name.clone(), info.ty, *value))
+            .collect(),
+        _ => algorithm
+            .variables
+            .iter()
+            .zip(&variables)
+            .map(|(info, value)| (info.name.clone(), info.ty, *value))
+            .collect(),
     };
     let (marked, highlighted): (Vec<ElementRef>, Vec<ElementRef>) = match step {
         0 => (Vec::new(), Vec::new()),
@@ -192,9 +220,9 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     }
     let mut names: HashMap<ElementRef, Vec<&str>> = HashMap::new();
     if !done {
-        for (info, value) in algorithm.variables.iter().zip(&variables) {
+        for (name, _, value) in &shown {
             if let Some(element) = value.element() {
-                names.entry(element).or_default().push(&info.name);
+                names.entry(element).or_default().push(name);
             }
         }
         let mut referred: Vec<ElementRef> = names.keys().copied().collect();
@@ -229,16 +257,20 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         steps,
         line,
         span,
-        variables: algorithm
-            .variables
+        variables: shown
             .iter()
-            .zip(&variables)
-            .map(|(info, &value)| VariableView {
-                name: info.name.clone(),
-                ty: type_name(info.ty),
-                value: value_text(value),
+            .map(|(name, ty, value)| VariableView {
+                name: name.clone(),
+                ty: type_name(*ty),
+                value: match value {
+                    Value::Array(_) => {
+                        format!("Array {}", trace.show(*value, step.saturating_sub(1)))
+                    }
+                    other => value_text(*other),
+                },
             })
             .collect(),
+        calls,
         operation: view.map_or("start", |v| operation_name(v.kind)),
         message,
         marked,

@@ -141,6 +141,27 @@ impl Algorithms {
             {
                 command = Some(Command::Step(1));
             }
+            // Over and out matter only in an algorithm that calls others.
+            let calls = run
+                .session()
+                .is_some_and(|s| s.trace.algorithm().calls_others());
+            if calls {
+                if ui
+                    .add_enabled(step < steps, egui::Button::new("Step over"))
+                    .on_hover_text("Run the call on this step as one step (O)")
+                    .clicked()
+                {
+                    command = Some(Command::StepOver);
+                }
+                let inside = run.session().is_some_and(|s| s.depth() > 0);
+                if ui
+                    .add_enabled(inside, egui::Button::new("Step out"))
+                    .on_hover_text("Run to the step after this call returns (U)")
+                    .clicked()
+                {
+                    command = Some(Command::StepOut);
+                }
+            }
             if ui
                 .add_enabled(step < steps, egui::Button::new("▶|"))
                 .on_hover_text("Go to the end (End)")
@@ -413,6 +434,14 @@ fn status_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
 /// The variables and their values; element values carry the purple chip
 /// that marks them in the view.
 fn variables_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
+    if frame.calls.len() > 1 {
+        ui.horizontal_wrapped(|ui| {
+            ui.weak("Call stack:");
+            ui.label(RichText::new(frame.calls.join(" → ")).monospace());
+        })
+        .response
+        .on_hover_text("The started algorithm first; the variables below are the innermost call's");
+    }
     egui::Grid::new("trace_variables")
         .num_columns(3)
         .spacing(vec2(10.0, 2.0))

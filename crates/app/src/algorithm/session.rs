@@ -132,6 +132,40 @@ impl TraceSession {
         self.step
     }
 
+    /// How deep in calls the current step is (0 in the started algorithm).
+    pub fn depth(&self) -> usize {
+        self.step
+            .checked_sub(1)
+            .and_then(|index| self.trace.depth(index))
+            .unwrap_or(0)
+    }
+
+    /// Runs the call on the next step as one step: to the next step no
+    /// deeper than the current one (or the end).
+    pub fn step_over(&mut self) {
+        let target = match self.step.checked_sub(1) {
+            None => 1,
+            Some(index) => self.trace.step_over(index).map_or(self.steps(), |i| i + 1),
+        };
+        self.goto(target);
+    }
+
+    /// Runs to the step after the current call returns; refused outside
+    /// calls.
+    pub fn step_out(&mut self) -> Result<(), String> {
+        let index = self
+            .step
+            .checked_sub(1)
+            .ok_or("the algorithm has not started; there is no call to step out of")?;
+        let target = self
+            .trace
+            .step_out(index)
+            .map(|i| i + 1)
+            .ok_or("this step is not inside a call; there is nothing to step out of")?;
+        self.goto(target);
+        Ok(())
+    }
+
     /// Whether the algorithm changes the mesh.
     pub fn edits(&self) -> bool {
         self.trace.algorithm().edits()

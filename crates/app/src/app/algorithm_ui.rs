@@ -163,7 +163,8 @@ impl EdgewiseApp {
         }
     }
 
-    /// Space or → steps, ← steps back, Home and End jump, P plays or pauses.
+    /// Space or → steps, ← steps back, Home and End jump, P plays or pauses,
+    /// O steps over a call and U out of one.
     pub(super) fn trace_keys(&mut self, ctx: &egui::Context) {
         if ctx.egui_wants_keyboard_input() || self.tab().run.session().is_none() {
             return;
@@ -178,11 +179,19 @@ impl EdgewiseApp {
                 i.time,
             )
         });
+        let (over, out) = ctx.input(|i| (i.key_pressed(egui::Key::O), i.key_pressed(egui::Key::U)));
+        let calls = self
+            .tab()
+            .run
+            .session()
+            .is_some_and(|s| s.trace.algorithm().calls_others());
         let commands = [
             (forward, Command::Step(1)),
             (back, Command::Back(1)),
             (home, Command::Goto(0)),
             (end, Command::Goto(usize::MAX)),
+            (over && calls, Command::StepOver),
+            (out && calls, Command::StepOut),
         ];
         for (pressed, command) in commands {
             if pressed {

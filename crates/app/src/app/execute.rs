@@ -64,6 +64,8 @@ impl EdgewiseApp {
             Command::Start => done(self.tab_mut().with_mesh(AlgorithmRun::start)),
             Command::Step(n) => done(self.tab_mut().run.step(n)),
             Command::Back(n) => done(self.tab_mut().run.back(n)),
+            Command::StepOver => done(self.tab_mut().run.step_over()),
+            Command::StepOut => done(self.tab_mut().run.step_out()),
             Command::Goto(k) => done(self.tab_mut().run.goto(k)),
             Command::Abort => done(self.tab_mut().run.abort()),
             Command::ToggleBreakpoint(line) => {
@@ -179,6 +181,16 @@ impl EdgewiseApp {
     /// Shorthand for [`Command::Back`].
     pub fn trace_back(&mut self, n: usize) -> Result<(), CommandError> {
         self.execute(Command::Back(n)).map(drop)
+    }
+
+    /// Shorthand for [`Command::StepOver`].
+    pub fn trace_step_over(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::StepOver).map(drop)
+    }
+
+    /// Shorthand for [`Command::StepOut`].
+    pub fn trace_step_out(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::StepOut).map(drop)
     }
 
     /// Shorthand for [`Command::Goto`].

@@ -128,6 +128,16 @@ const COMMANDS: &[CommandEntry] = &[
         read: |call, n, _| Ok(Command::Back(count(call, "n", n, Some(1))?)),
     },
     CommandEntry {
+        name: "stepOver",
+        call: "stepOver()",
+        read: |_, _, _| Ok(Command::StepOver),
+    },
+    CommandEntry {
+        name: "stepOut",
+        call: "stepOut()",
+        read: |_, _, _| Ok(Command::StepOut),
+    },
+    CommandEntry {
         name: "goto",
         call: "goto(k)",
         read: |call, k, _| Ok(Command::Goto(count(call, "k", k, None)?)),

@@ -307,6 +307,14 @@ impl Algorithm {
         self.index
     }
 
+    /// Whether it calls another algorithm, so stepping over and out of
+    /// calls means something.
+    pub fn calls_others(&self) -> bool {
+        self.code
+            .iter()
+            .any(|instr| matches!(instr.op, Op::Invoke { .. }))
+    }
+
     /// Whether running it changes the mesh: it, or an algorithm it calls
     /// (directly or not), writes a record, or makes or deletes an element.
     pub fn edits(&self) -> bool {
