@@ -638,7 +638,7 @@ fn trace_runs_an_editing_algorithm_and_saves_what_it_leaves() {
     assert_eq!(code(&output), 1);
     assert_eq!(
         stderr(&output),
-        "algorithms/half-edge-edits.alg:18: error: edge 0 is on the boundary; a flip needs two faces\n"
+        "algorithms/half-edge-edits.alg:41: error: edge 0 is on the boundary; a flip needs two faces\n"
     );
     assert!(!refused.exists());
     let _ = std::fs::remove_dir_all(&dir);
