@@ -119,6 +119,11 @@ fn deep_nesting_of_every_kind_is_refused_on_a_small_stack() {
             "b : Boolean",
             &format!("{}b := true;", "if (b) ".repeat(20_000)),
         ),
+        // Calls and array items nest like parentheses.
+        algorithm(
+            "n : Integer",
+            &format!("n := {}n{};", "sqrt(".repeat(100_000), ")".repeat(100_000)),
+        ),
     ];
     for source in cases {
         let diagnostics = check_on_small_stack(source);
@@ -127,6 +132,23 @@ fn deep_nesting_of_every_kind_is_refused_on_a_small_stack() {
             ["this is nested too deeply (more than 100 levels); the rest of the file was not read"]
         );
     }
+}
+
+#[test]
+fn deep_array_indices_are_refused_on_a_small_stack() {
+    let source = algorithm(
+        "a : Array of Integer",
+        &format!("a[0] := {}0{};", "a[".repeat(100_000), "]".repeat(100_000)),
+    );
+    let diagnostics = check_on_small_stack(source);
+    assert_eq!(diagnostics.len(), 1, "{:?}", messages(&diagnostics));
+    assert!(
+        diagnostics[0]
+            .message
+            .starts_with("this expression is too long (more than 100 operators"),
+        "{}",
+        diagnostics[0].message
+    );
 }
 
 #[test]

@@ -106,16 +106,21 @@ impl Signatures {
         signatures
     }
 
-    /// The algorithm a call names: the first of that name, else the first
-    /// whose name differs only in case (names of algorithms, like
+    /// The algorithm a call names: the first of that name, else the only
+    /// one whose name differs in case alone (names of algorithms, like
     /// keywords, ignore case where that is not ambiguous).
     pub fn find(&self, name: &str) -> Option<(usize, &Signature)> {
         let index = match self.by_name.get(name) {
             Some(&index) => index,
-            None => self
-                .list
-                .iter()
-                .position(|s| s.name.eq_ignore_ascii_case(name))?,
+            None => {
+                let mut matches =
+                    (0..self.list.len()).filter(|&i| self.list[i].name.eq_ignore_ascii_case(name));
+                let first = matches.next()?;
+                if matches.any(|i| self.list[i].name != self.list[first].name) {
+                    return None;
+                }
+                first
+            }
         };
         Some((index, self.list.get(index)?))
     }
@@ -1251,6 +1256,55 @@ mod tests {
         assert!(
             found[2].starts_with("Edge has no lookup `incidentEdge`; it is a lookup on Vertex")
         );
+    }
+
+    #[test]
+    fn calls_ignore_case_unless_that_is_ambiguous() {
+        let one = "algorithm isTriangle(f : Face) : HalfEdge returns Boolean begin return true end \
+                   algorithm a(f : Face) : HalfEdge begin if ISTRIANGLE(f) then mark f end end";
+        assert_eq!(errors(one), Vec::<String>::new());
+        let two = "algorithm isTriangle(f : Face) : HalfEdge returns Boolean begin return true end \
+                   algorithm IsTriangle(f : Face) : HalfEdge returns Boolean begin return false end \
+                   algorithm a(f : Face) : HalfEdge begin if ISTRIANGLE(f) then mark f end end";
+        assert_eq!(
+            errors(two),
+            ["unknown function `ISTRIANGLE` (did you mean `isTriangle`?)"]
+        );
+    }
+
+    #[test]
+    fn only_a_way_that_can_run_off_the_end_misses_a_return() {
+        let body = |statements: &str| {
+            errors(&format!(
+                "algorithm a(n : Integer) : HalfEdge returns Integer begin {statements} end"
+            ))
+        };
+        for leaves in [
+            "return 1",
+            "if n > 0 then return 1 else return 2 end",
+            "if n > 0 then return 1 else if n < 0 then return 2 else refuse \"zero\" end",
+            "do n := n + 1; if n > 9 then return n end end",
+            "while true do n := n + 1 end",
+            "do return n while n > 0",
+            "begin return n end",
+        ] {
+            assert_eq!(body(leaves), Vec::<String>::new(), "{leaves}");
+        }
+        for falls in [
+            "n := 1",
+            "if n > 0 then return 1 end",
+            "while n > 0 do return n end",
+            "do if n > 9 then break end; n := n + 1 end",
+            "do if n > 0 then continue end; return n while n > 0",
+        ] {
+            assert_eq!(
+                body(falls),
+                [
+                    "`a` returns an Integer, but can reach its `end` without `return` (end every way through it with `return` and a value)"
+                ],
+                "{falls}"
+            );
+        }
     }
 
     #[test]

@@ -1109,7 +1109,13 @@ impl Parser<'_> {
         while matches!(self.peek(), T::Dot | T::LBracket) {
             let operator = self.bump();
             if !self.chain(operator.span) {
-                break;
+                // The rest was skipped: an unfinished chain is no value, so
+                // that what holds it reports nothing more.
+                self.depth = depth;
+                return Expr {
+                    kind: ExprKind::Error,
+                    span: expr.span,
+                };
             }
             if operator.kind == T::LBracket {
                 let index = self.expression();
@@ -1312,6 +1318,31 @@ mod tests {
             panic!()
         };
         assert_eq!(body.len(), 2);
+    }
+
+    #[test]
+    fn calls_returns_and_arrays_parse_in_both_header_forms() {
+        let file = parse_ok(
+            "algorithm f(v : Vertex) returns Array of Edge;\nstructuretype WingedEdge\nvar a : Array of Edge;\nbegin append(a, v.incidentEdge); a[0] := a[length(a) - 1]; return a end;\nalgorithm g(v : Vertex) : WingedEdge returns Integer begin if v = null then return 0 end; f(v); return length(f(v)) end",
+        );
+        let (f, g) = (&file.algorithms[0], &file.algorithms[1]);
+        assert_eq!(f.structure.map(|s| s.0), Some(Structure::WingedEdge));
+        assert_eq!(f.returns.and_then(|r| r.0), Some(Type::Array(Item::Edge)));
+        assert_eq!(g.returns.and_then(|r| r.0), Some(Type::Integer));
+        assert!(matches!(f.body[0].kind, StmtKind::Call { .. }));
+        assert!(matches!(f.body[1].kind, StmtKind::Store { .. }));
+        assert!(matches!(
+            f.body[2].kind,
+            StmtKind::Return { value: Some(_) }
+        ));
+        let StmtKind::If { arms, .. } = &g.body[0].kind else {
+            panic!("{:?}", g.body[0])
+        };
+        assert!(matches!(
+            arms[0].1[0].kind,
+            StmtKind::Return { value: Some(_) }
+        ));
+        assert!(matches!(g.body[1].kind, StmtKind::Call { .. }));
     }
 
     #[test]
