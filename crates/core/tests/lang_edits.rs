@@ -392,3 +392,16 @@ fn differences(traced: &Mesh, native: &Mesh) -> String {
     }
     out
 }
+
+#[test]
+fn helpers_are_the_algorithms_the_others_call() {
+    for file in ["half-edge-edits.alg", "winged-edge-edits.alg"] {
+        let program = library(file);
+        let helper = |name: &str| program.algorithm(name).expect("shipped").is_helper();
+        assert!(!helper("flipEdge") && !helper("splitEdge"), "{file}");
+        assert!(
+            helper("isTriangle") && helper("joined") && helper("cutCorner"),
+            "{file}"
+        );
+    }
+}

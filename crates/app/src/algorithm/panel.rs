@@ -53,17 +53,31 @@ impl Algorithms {
         egui::ScrollArea::vertical()
             .auto_shrink([false, true])
             .show(ui, |ui| {
-                for entry in self.library.entries() {
-                    let algorithm = &entry.algorithm;
-                    if algorithm.structure != structure {
-                        continue;
-                    }
+                // Helpers (called by the others) come last, folded away.
+                let ours = || {
+                    self.library
+                        .entries()
+                        .iter()
+                        .map(|entry| &entry.algorithm)
+                        .filter(|algorithm| algorithm.structure == structure)
+                };
+                let mut button = |ui: &mut egui::Ui, algorithm: &Arc<Algorithm>| {
                     let button = ui
                         .button(RichText::new(&algorithm.name).monospace())
                         .on_hover_text(algorithm_hover(algorithm));
                     if button.clicked() {
                         chosen = Some(algorithm.name.clone());
                     }
+                };
+                for algorithm in ours().filter(|a| !a.is_helper()) {
+                    button(ui, algorithm);
+                }
+                if ours().any(|a| a.is_helper()) {
+                    ui.collapsing("Helpers the others call", |ui| {
+                        for algorithm in ours().filter(|a| a.is_helper()) {
+                            button(ui, algorithm);
+                        }
+                    });
                 }
             });
         chosen.map(|name| Command::RunAlgorithm {

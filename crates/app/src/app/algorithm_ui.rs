@@ -221,9 +221,10 @@ impl EdgewiseApp {
             };
             for (label, ours) in [(structure.prose(), true), (other(structure).prose(), false)] {
                 ui.label(egui::RichText::new(format!("For {label} meshes")).strong());
+                // Helpers, which the others call, are left to the panel.
                 for entry in self.algorithms.library.entries() {
                     let algorithm = &entry.algorithm;
-                    if (algorithm.structure == structure) != ours {
+                    if (algorithm.structure == structure) != ours || algorithm.is_helper() {
                         continue;
                     }
                     let button = ui.add_enabled(

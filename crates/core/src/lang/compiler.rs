@@ -315,6 +315,17 @@ impl Algorithm {
             .any(|instr| matches!(instr.op, Op::Invoke { .. }))
     }
 
+    /// Whether another algorithm of its file calls it: a helper, which the
+    /// app lists apart from the algorithms meant to be started.
+    pub fn is_helper(&self) -> bool {
+        self.routines().iter().enumerate().any(|(index, routine)| {
+            index != self.index
+                && routine.code.iter().any(|instr| {
+                    matches!(instr.op, Op::Invoke { routine, .. } if usize::from(routine) == self.index)
+                })
+        })
+    }
+
     /// Whether running it changes the mesh: it, or an algorithm it calls
     /// (directly or not), writes a record, or makes or deletes an element.
     pub fn edits(&self) -> bool {
