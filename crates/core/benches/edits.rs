@@ -19,11 +19,9 @@ use edgewise_core::mesh::operations::{self, Operation};
 use edgewise_core::mesh::{HalfEdgeMesh, Mesh, generate};
 
 fn flip_edge() -> Arc<Algorithm> {
-    let (file, text) = lang::library::SOURCES
-        .iter()
-        .find(|(file, _)| *file == "half-edge-edits.alg")
-        .expect("shipped");
-    let program = lang::compile_rendered(text, Some(file)).expect("the library compiles");
+    let program = lang::library::program("half-edge-edits.alg")
+        .expect("shipped")
+        .expect("the library compiles");
     Arc::clone(program.algorithm("flipEdge").expect("shipped"))
 }
 

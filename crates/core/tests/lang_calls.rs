@@ -593,11 +593,9 @@ fn the_started_algorithms_return_goes_on_to_done() {
 /// the trace seeks the mesh to any step.
 #[test]
 fn edits_inside_calls_are_journaled_at_the_callees_steps() {
-    let (_, text) = lang::library::SOURCES
-        .iter()
-        .find(|(file, _)| *file == "winged-edge-edits.alg")
-        .expect("shipped");
-    let program = program(text);
+    let program = lang::library::program("winged-edge-edits.alg")
+        .expect("shipped")
+        .unwrap_or_else(|e| panic!("{e}"));
     let split = algorithm(&program, "splitEdge");
     assert!(split.edits());
     assert!(algorithm(&program, "cutCorner").edits());
@@ -732,11 +730,9 @@ end;
 /// one strip, and each strip's faces follow one another across edges.
 #[test]
 fn triangle_strips_cover_every_face_once() {
-    let (_, text) = lang::library::SOURCES
-        .iter()
-        .find(|(file, _)| *file == "half-edge-strips.alg")
-        .expect("shipped");
-    let program = program(text);
+    let program = lang::library::program("half-edge-strips.alg")
+        .expect("shipped")
+        .unwrap_or_else(|e| panic!("{e}"));
     let strips = algorithm(&program, "triangleStrips");
     for (name, polygons) in [
         ("octahedron", octahedron()),

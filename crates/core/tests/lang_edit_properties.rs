@@ -13,11 +13,9 @@ use edgewise_core::schema::{ElementKind, Records};
 use proptest::prelude::*;
 
 fn library(file: &str, name: &str) -> Arc<Algorithm> {
-    let (file, text) = lang::library::SOURCES
-        .iter()
-        .find(|(shipped, _)| *shipped == file)
-        .expect("the library file exists");
-    let program = lang::compile_rendered(text, Some(file)).expect("the library compiles");
+    let program = lang::library::program(file)
+        .expect("the library file exists")
+        .expect("the library compiles");
     Arc::clone(program.algorithm(name).expect("in the library"))
 }
 

@@ -12,11 +12,9 @@ use lang_support::*;
 use std::sync::Arc;
 
 fn library(name: &str) -> Program {
-    let (file, text) = lang::library::SOURCES
-        .iter()
-        .find(|(file, _)| *file == name)
-        .expect("the library file exists");
-    lang::compile_rendered(text, Some(file)).expect("the library compiles")
+    lang::library::program(name)
+        .expect("the library file exists")
+        .expect("the library compiles")
 }
 
 fn counts(mesh: &Mesh) -> [i64; 3] {

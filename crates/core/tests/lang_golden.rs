@@ -130,20 +130,12 @@ fn every_error_points_into_its_file() {
 
 /// The traversal libraries of the two structures.
 fn library() -> (Program, Program) {
-    let mut programs = lang::library::load()
-        .expect("the library compiles")
-        .into_iter()
-        .zip(lang::library::SOURCES)
-        .map(|(program, (file, _))| (file, program));
-    let mut take = |name: &str| {
-        programs
-            .find(|(file, _)| *file == name)
-            .map(|(_, program)| program)
+    let take = |name: &str| {
+        lang::library::program(name)
             .expect("shipped")
+            .expect("the library compiles")
     };
-    let winged = take("winged-edge.alg");
-    let half = take("half-edge.alg");
-    (winged, half)
+    (take("winged-edge.alg"), take("half-edge.alg"))
 }
 
 #[test]

@@ -16,13 +16,10 @@ use std::sync::Arc;
 /// The traversal libraries of the two structures (the editing ones are
 /// tested in `lang_edits.rs`).
 fn library() -> (Program, Program) {
-    let programs = lang::library::load().expect("the library compiles");
     let take = |name: &str| {
-        lang::library::SOURCES
-            .iter()
-            .position(|(file, _)| *file == name)
-            .and_then(|i| programs.get(i).cloned())
+        lang::library::program(name)
             .expect("shipped")
+            .expect("the library compiles")
     };
     (take("winged-edge.alg"), take("half-edge.alg"))
 }

@@ -35,3 +35,12 @@ pub fn load() -> Result<Vec<Program>, String> {
         .map(|(name, text)| compile_rendered(text, Some(name)))
         .collect()
 }
+
+/// Compiles one library file by its name (`"half-edge-edits.alg"`), or
+/// `None` if the library has no such file.
+pub fn program(file: &str) -> Option<Result<Program, String>> {
+    SOURCES
+        .iter()
+        .find(|(name, _)| *name == file)
+        .map(|(name, text)| compile_rendered(text, Some(name)))
+}
