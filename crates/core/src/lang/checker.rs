@@ -1037,20 +1037,32 @@ impl Checker<'_> {
     /// reporting what is wrong with it.
     fn column(&mut self, base: &Expr, field: &Ident) -> Option<(Column, ElementKind)> {
         let base_type = self.expr(base)?;
-        let name = field.name.as_str();
+        self.resolve(base, base_type, field, "fields to write")
+    }
+
+    /// The column `field` names on `base`, of type `base_type`; `what` says
+    /// what only elements have (`lookups`, `fields to write`) when `base`
+    /// is not one.
+    fn resolve(
+        &mut self,
+        base: &Expr,
+        base_type: Type,
+        field: &Ident,
+        what: &str,
+    ) -> Option<(Column, ElementKind)> {
         let Some(kind) = base_type.element_kind() else {
             let text = self.text(base.span);
             self.error(
                 field.span,
                 format!(
-                    "`{text}` is {}; only vertices, edges and faces have fields to write",
+                    "`{text}` is {}; only vertices, edges and faces have {what}",
                     with_article(base_type)
                 ),
             );
             return None;
         };
         let structure = self.structure?;
-        match Column::resolve(structure, kind, name) {
+        match Column::resolve(structure, kind, &field.name) {
             Ok(column) => Some((column, kind)),
             Err(error) => {
                 self.lookup_error(structure, kind, field, &error);
@@ -1080,25 +1092,8 @@ impl Checker<'_> {
             );
             return None;
         }
-        let Some(kind) = base_type.element_kind() else {
-            let text = self.text(base.span);
-            self.error(
-                field.span,
-                format!(
-                    "`{text}` is {}; only vertices, edges and faces have lookups",
-                    with_article(base_type)
-                ),
-            );
-            return None;
-        };
-        let structure = self.structure?;
-        match Column::resolve(structure, kind, name) {
-            Ok(field) => Some(field.target().map_or(Type::Vector, Type::of_kind)),
-            Err(error) => {
-                self.lookup_error(structure, kind, field, &error);
-                None
-            }
-        }
+        let (column, _) = self.resolve(base, base_type, field, "lookups")?;
+        Some(column.target().map_or(Type::Vector, Type::of_kind))
     }
 
     fn lookup_error(

@@ -289,14 +289,7 @@ pub fn run<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let mut machine = Machine::new(
-        algorithm,
-        Reading(topology),
-        &variables,
-        TraceRecorder::default(),
-        options,
-    );
-    Ok(machine.trace(algorithm))
+    Ok(record(algorithm, Reading(topology), &variables, options))
 }
 
 /// Runs an algorithm that may change the mesh, recording every step and
@@ -310,14 +303,29 @@ pub fn run_editing(
     options: RunOptions,
 ) -> Result<Trace, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let mut machine = Machine::new(
-        algorithm,
-        Editing::new(mesh),
-        &variables,
-        TraceRecorder::default(),
-        options,
-    );
-    Ok(machine.trace(algorithm))
+    Ok(record(algorithm, Editing::new(mesh), &variables, options))
+}
+
+/// Runs on `store`, recording every step.
+fn record<S: Store>(
+    algorithm: &Arc<Algorithm>,
+    store: S,
+    variables: &[Value],
+    options: RunOptions,
+) -> Trace {
+    let recorder = TraceRecorder::default();
+    Machine::new(algorithm, store, variables, recorder, options).trace(algorithm)
+}
+
+/// Runs on `store`, keeping only the output.
+fn output<S: Store>(
+    algorithm: &Algorithm,
+    store: S,
+    variables: &[Value],
+    options: RunOptions,
+) -> Execution {
+    let recorder = OutputRecorder::default();
+    Machine::new(algorithm, store, variables, recorder, options).execution()
 }
 
 /// The result of [`execute`]: what a run produced, without its steps.
@@ -365,14 +373,7 @@ pub fn execute<T: Topology + ?Sized>(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(topology, inputs)?;
-    let mut machine = Machine::new(
-        algorithm,
-        Reading(topology),
-        &variables,
-        OutputRecorder::default(),
-        options,
-    );
-    Ok(machine.execution())
+    Ok(output(algorithm, Reading(topology), &variables, options))
 }
 
 /// [`execute`] for an algorithm that may change the mesh: `mesh` is left
@@ -384,14 +385,7 @@ pub fn execute_editing(
     options: RunOptions,
 ) -> Result<Execution, InputError> {
     let variables = algorithm.bind_inputs(&*mesh, inputs)?;
-    let mut machine = Machine::new(
-        algorithm,
-        Editing::new(mesh),
-        &variables,
-        OutputRecorder::default(),
-        options,
-    );
-    Ok(machine.execution())
+    Ok(output(algorithm, Editing::new(mesh), &variables, options))
 }
 
 /// Where the VM reads the mesh and, when it may, changes it.
@@ -1370,27 +1364,26 @@ fn widen(ty: Option<Type>, value: Value) -> Value {
     }
 }
 
+/// `l op r` for numbers of one kind: Integers exactly, Floats as floats.
+#[inline]
+fn holds<T: PartialOrd + Copy>(op: CompareOp, l: T, r: T) -> bool {
+    match op {
+        CompareOp::Eq => l == r,
+        CompareOp::NotEq => l != r,
+        CompareOp::Lt => l < r,
+        CompareOp::Le => l <= r,
+        CompareOp::Gt => l > r,
+        CompareOp::Ge => l >= r,
+    }
+}
+
 #[inline]
 fn compare(op: CompareOp, left: Value, right: Value) -> bool {
     if let (Value::Integer(l), Value::Integer(r)) = (left, right) {
-        return match op {
-            CompareOp::Eq => l == r,
-            CompareOp::NotEq => l != r,
-            CompareOp::Lt => l < r,
-            CompareOp::Le => l <= r,
-            CompareOp::Gt => l > r,
-            CompareOp::Ge => l >= r,
-        };
+        return holds(op, l, r);
     }
     if let (Some(l), Some(r)) = (left.number(), right.number()) {
-        return match op {
-            CompareOp::Eq => l == r,
-            CompareOp::NotEq => l != r,
-            CompareOp::Lt => l < r,
-            CompareOp::Le => l <= r,
-            CompareOp::Gt => l > r,
-            CompareOp::Ge => l >= r,
-        };
+        return holds(op, l, r);
     }
     match op {
         CompareOp::Eq => left == right,
