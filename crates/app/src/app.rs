@@ -372,7 +372,7 @@ impl EdgewiseApp {
                 .collect(),
             error: self.tab().error.clone(),
             broken: self.tab().broken.iter().map(BrokenState::new).collect(),
-            stats: doc.map(|d| StatsState::new(d.mesh())),
+            stats: self.tab().stats().as_ref().map(StatsState::new),
             trace: self.trace_state(),
             pending: self.pending_state(),
             tabs: self.tab_states(),

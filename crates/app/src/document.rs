@@ -163,14 +163,15 @@ impl Document {
     }
 
     /// Replaces the mesh with one derived from it (an edit's result or what
-    /// it replaced), keeping the name.
-    pub fn replace_mesh(&mut self, mesh: Mesh) {
-        self.mesh = mesh;
+    /// it replaced), keeping the name; gives back the mesh it replaced.
+    pub fn replace_mesh(&mut self, mesh: Mesh) -> Mesh {
+        let before = std::mem::replace(&mut self.mesh, mesh);
         self.mesh_id = next_mesh_id();
         self.sample = None;
         let selection = self.selection.filter(|&s| self.mesh.contains(s));
         // The selection was just checked against the new mesh.
         let _kept = self.select(selection);
+        before
     }
 
     /// Identifies the mesh itself: it changes when the mesh is replaced or

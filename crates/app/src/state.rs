@@ -7,7 +7,7 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use edgewise_core::lang::Algorithm;
-use edgewise_core::mesh::{Issue, Mesh};
+use edgewise_core::mesh::{Issue, MeshStats};
 use serde::Serialize;
 
 use crate::{algorithm::TraceFrame, code_editor::Diagnostic};
@@ -98,8 +98,7 @@ pub struct StatsState {
 }
 
 impl StatsState {
-    pub fn new(mesh: &Mesh) -> Self {
-        let stats = mesh.live_stats();
+    pub fn new(stats: &MeshStats) -> Self {
         Self {
             vertices: stats.vertices,
             edges: stats.edges,

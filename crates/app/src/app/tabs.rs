@@ -2,6 +2,9 @@
 //! belongs to one mesh; the app draws and commands the active one, so a tab
 //! switch only changes which one that is.
 
+use std::borrow::Cow;
+use std::cell::RefCell;
+
 use edgewise_core::mesh::{
     Issue, Mesh, MeshStats, Structure,
     operations::{self, Operation},
@@ -51,7 +54,8 @@ pub(crate) struct Tab {
     /// Every rule the mesh breaks at the editing trace's current step.
     pub(crate) broken: Vec<Issue>,
     /// The statistics of the mesh with this mesh id.
-    stats: Option<(u64, MeshStats)>,
+    /// Kept in a cell so that `state()`, which only reads, shares it.
+    stats: RefCell<Option<(u64, MeshStats)>>,
 }
 
 impl Tab {
@@ -76,20 +80,21 @@ impl Tab {
             edit_applied: 0,
             before_edit: None,
             broken: Vec::new(),
-            stats: None,
+            stats: RefCell::new(None),
         }
     }
 
     /// V, E, F, genus, boundary loops and components of the shown mesh,
     /// worked out once per mesh (an edit's every step is a new mesh id).
     /// Deleted rows do not count.
-    pub(crate) fn stats(&mut self) -> Option<&MeshStats> {
+    pub(crate) fn stats(&self) -> Option<MeshStats> {
         let document = self.document.as_ref()?;
         let id = document.mesh_id();
-        if self.stats.as_ref().is_none_or(|(cached, _)| *cached != id) {
-            self.stats = Some((id, document.mesh().live_stats()));
+        let mut cache = self.stats.borrow_mut();
+        if cache.as_ref().is_none_or(|(cached, _)| *cached != id) {
+            *cache = Some((id, document.mesh().live_stats()));
         }
-        self.stats.as_ref().map(|(_, stats)| stats)
+        cache.as_ref().map(|(_, stats)| stats.clone())
     }
 
     /// Keeps the document's mesh at the editing trace's current step: the
@@ -124,30 +129,45 @@ impl Tab {
     /// other goes back to the mesh it started from.
     pub(crate) fn finish_edit(&mut self) {
         self.sync_edit();
-        let (Some(document), Some(session)) = (&mut self.document, self.run.session()) else {
-            return;
-        };
-        if !session.edits() || self.edit_applied == 0 {
+        let Some(session) = self.run.session().filter(|s| s.edits()) else {
             self.edit_applied = 0;
             return;
+        };
+        if self.edit_applied == 0 {
+            return;
         }
-        let trace = &session.trace;
-        let finished = session.at_end() && trace.outcome().error().is_none();
-        let mut before = document.mesh().clone();
-        let restored = trace.seek(&mut before, self.edit_applied, 0);
-        if finished && document.mesh().validate().is_empty() {
-            if restored.is_ok() {
-                self.before_edit = Some((trace.algorithm().name.clone(), before));
+        let finished = session.at_end() && session.trace.outcome().error().is_none();
+        let name = session.trace.algorithm().name.clone();
+        let before = self.mesh_before_trace().map(Cow::into_owned);
+        let sound = finished
+            && self
+                .document
+                .as_ref()
+                .is_some_and(|d| d.mesh().validate().is_empty());
+        if sound {
+            if let Some(before) = before {
+                self.before_edit = Some((name, before));
             }
-            document.sample = None;
-        } else if restored.is_ok() {
-            document.replace_mesh(before);
-            self.view
-                .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+            if let Some(document) = &mut self.document {
+                document.sample = None;
+            }
+        } else if let Some(before) = before {
+            self.replace_mesh(before);
         }
         self.edit_applied = 0;
         self.broken.clear();
         self.paint_key = None;
+    }
+
+    /// Shows `mesh` in place of the document's, keeping its name; gives
+    /// back the mesh it replaced.
+    fn replace_mesh(&mut self, mesh: Mesh) -> Option<Mesh> {
+        let document = self.document.as_mut()?;
+        let before = document.replace_mesh(mesh);
+        self.view
+            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        self.paint_key = None;
+        Some(before)
     }
 
     /// Applies a native operation to the open mesh; the mesh before it stays
@@ -157,34 +177,29 @@ impl Tab {
         operation: Operation,
         ids: &[u32],
     ) -> Result<(), CommandError> {
-        let document = self.document.as_mut().ok_or("no mesh is open")?;
+        let document = self.document.as_ref().ok_or("no mesh is open")?;
         let mut mesh = document.mesh().clone();
         let shown: Vec<String> = ids.iter().map(ToString::to_string).collect();
         let call = format!("{} {}", operation.name(), shown.join(" "));
         operations::apply(&mut mesh, operation, ids)
             .map_err(|refusal| format!("{call}: {refusal}"))?;
-        let before = document.mesh().clone();
         self.run.mesh_changed();
-        document.replace_mesh(mesh);
-        self.before_edit = Some((call, before));
-        self.view
-            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-        self.paint_key = None;
+        self.before_edit = self.replace_mesh(mesh).map(|before| (call, before));
         self.error = None;
         Ok(())
     }
 
     /// The mesh an editing trace started from (the shown mesh otherwise):
     /// what a link must carry so that replaying the run reproduces the view.
-    pub(crate) fn mesh_before_trace(&self) -> Option<std::borrow::Cow<'_, Mesh>> {
+    pub(crate) fn mesh_before_trace(&self) -> Option<Cow<'_, Mesh>> {
         let document = self.document.as_ref()?;
         let session = self.run.session().filter(|_| self.edit_applied > 0);
         let Some(session) = session else {
-            return Some(std::borrow::Cow::Borrowed(document.mesh()));
+            return Some(Cow::Borrowed(document.mesh()));
         };
         let mut before = document.mesh().clone();
         session.trace.seek(&mut before, self.edit_applied, 0).ok()?;
-        Some(std::borrow::Cow::Owned(before))
+        Some(Cow::Owned(before))
     }
 
     /// Puts back the mesh from before the last kept edit.
@@ -193,12 +208,11 @@ impl Tab {
             .before_edit
             .take()
             .ok_or("no edit to take back: the mesh has not been edited since it was opened")?;
-        let document = self.document.as_mut().ok_or("no mesh is open")?;
+        if self.document.is_none() {
+            return Err("no mesh is open".into());
+        }
         self.run.mesh_changed();
-        document.replace_mesh(mesh);
-        self.view
-            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-        self.paint_key = None;
+        self.replace_mesh(mesh);
         self.error = None;
         log::info!("restored the mesh from before {name}");
         Ok(())
