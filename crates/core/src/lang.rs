@@ -44,7 +44,7 @@
 //! primary     := ident | integer | float | "true" | "false" | "null"
 //!              | "new" ("Vertex" | "Edge" | "Face")
 //!              | ident "(" [ expr { "," expr } ] ")"
-//!                    (a built-in: vector, float, sqrt, length; or an
+//!                    (a built-in: vector, float, sqrt, length, id; or an
 //!                     algorithm of the file that returns a value)
 //!              | "(" expr ")"
 //! mesh-type   := "WingedEdge" | "HalfEdge"
@@ -78,6 +78,9 @@
 //! empty. An index out of range stops the run, naming the index and the
 //! length; one run makes at most [`vm::MAX_ARRAY_ITEMS`] items (each new
 //! array counts as one). Arrays cannot be compared, marked or looked into.
+//! `id(x)` is the row number of a vertex, edge or face as an Integer: an
+//! array indexed by it holds a value per element (a whole-mesh algorithm's
+//! "visited" flags or new positions), and comparing ids picks the lower one.
 //!
 //! Keywords, type names, structure names and lookup names ignore case, and
 //! so do the names of called algorithms where that is not ambiguous;

@@ -1,6 +1,7 @@
 //! The built-in functions and a Vector's coordinates: the geometry an
 //! edit needs to place a new vertex at a midpoint or a centroid, and the
-//! two functions on arrays.
+//! two functions on arrays, and `id`, which turns an element into the
+//! number its row has, so an array can hold data per element.
 
 use super::types::{Type, Value};
 use glam::Vec3;
@@ -18,17 +19,20 @@ pub enum Builtin {
     Length,
     /// `append(a, x)`: a statement that adds `x` at the end of array `a`.
     Append,
+    /// `id(x)`: the row number of a vertex, edge or face, as an Integer.
+    Id,
 }
 
 impl Builtin {
-    pub const ALL: [Builtin; 5] = [
+    pub const ALL: [Builtin; 6] = [
         Builtin::Vector,
         Builtin::Float,
         Builtin::Sqrt,
         Builtin::Length,
         Builtin::Append,
+        Builtin::Id,
     ];
-    pub const NAMES: [&'static str; 5] = ["vector", "float", "sqrt", "length", "append"];
+    pub const NAMES: [&'static str; 6] = ["vector", "float", "sqrt", "length", "append", "id"];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -37,6 +41,7 @@ impl Builtin {
             Builtin::Sqrt => "sqrt",
             Builtin::Length => "length",
             Builtin::Append => "append",
+            Builtin::Id => "id",
         }
     }
 
@@ -59,14 +64,14 @@ impl Builtin {
         match self {
             Builtin::Vector => &[Type::Float, Type::Float, Type::Float],
             Builtin::Float | Builtin::Sqrt => &[Type::Float],
-            Builtin::Length | Builtin::Append => &[],
+            Builtin::Length | Builtin::Append | Builtin::Id => &[],
         }
     }
 
     /// How many arguments it takes.
     pub fn arity(self) -> usize {
         match self {
-            Builtin::Length => 1,
+            Builtin::Length | Builtin::Id => 1,
             Builtin::Append => 2,
             other => other.parameters().len(),
         }
@@ -77,7 +82,7 @@ impl Builtin {
         match self {
             Builtin::Vector => Some(Type::Vector),
             Builtin::Float | Builtin::Sqrt => Some(Type::Float),
-            Builtin::Length => Some(Type::Integer),
+            Builtin::Length | Builtin::Id => Some(Type::Integer),
             Builtin::Append => None,
         }
     }
@@ -87,6 +92,7 @@ impl Builtin {
         match self {
             Builtin::Length => return "length(a : Array of …) : Integer".to_owned(),
             Builtin::Append => return "append(a : Array of T; x : T)".to_owned(),
+            Builtin::Id => return "id(x : Vertex, Edge or Face) : Integer".to_owned(),
             _ => {}
         }
         let names = ["x", "y", "z"];
@@ -114,6 +120,10 @@ impl Builtin {
                 }
                 Value::Float(x.sqrt())
             }
+            Builtin::Id => match args.first().and_then(|x| x.element()) {
+                Some(element) => Value::Integer(i32::try_from(element.id).unwrap_or(i32::MAX)),
+                None => return Err("`id` needs a vertex, an edge or a face".to_owned()),
+            },
             Builtin::Length | Builtin::Append => {
                 return Err(format!("`{}` works on an array", self.name()));
             }

@@ -949,7 +949,8 @@ impl Checker<'_> {
         self.error_with_hint(name.span, message, hint);
     }
 
-    /// `vector(x, y, z)`, `float(n)`, `sqrt(x)`, `length(a)`, `append(a, x)`;
+    /// `vector(x, y, z)`, `float(n)`, `sqrt(x)`, `length(a)`, `append(a, x)`,
+    /// `id(x)`;
     /// the type of the value (Null for `append`).
     fn builtin(
         &mut self,
@@ -974,6 +975,21 @@ impl Checker<'_> {
         }
         if builtin.on_arrays() {
             return self.array_builtin(builtin, args, types);
+        }
+        if builtin == Builtin::Id {
+            let (arg, ty) = (args.first()?, (*types.first()?)?);
+            if ty.element_kind().is_none() {
+                let text = self.text(arg.span);
+                self.error(
+                    arg.span,
+                    format!(
+                        "`id` needs a vertex, an edge or a face, but `{text}` is {}",
+                        describe_value(ty)
+                    ),
+                );
+                return None;
+            }
+            return builtin.result();
         }
         for ((arg, ty), want) in args.iter().zip(types).zip(builtin.parameters()) {
             let ty = (*ty)?;

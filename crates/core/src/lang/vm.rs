@@ -1,6 +1,7 @@
 //! The stepping virtual machine: runs compiled code on a [`Topology`],
 //! producing either a full [`Trace`] or, for speed, just the outcome.
 
+use super::builtin::Builtin;
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Instr, MessageItem, Op, Reg, Routine};
 use super::diagnostic::Span;
 use super::topology::Topology;
@@ -916,6 +917,10 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     let mut values = [Value::Null; 3];
                     for (slot, &reg) in values.iter_mut().zip(&args).take(usize::from(argc)) {
                         *slot = self.get(reg);
+                    }
+                    if builtin == Builtin::Id && values[0] == Value::Null {
+                        let message = self.cannot_act_message("take the id of", args[0]);
+                        return self.fail(pc, message);
                     }
                     let result = match builtin.apply(&values[..usize::from(argc)]) {
                         Ok(result) => result,
