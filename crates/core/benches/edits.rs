@@ -6,7 +6,9 @@
 //!   change recorded), against the native flip on the same edge;
 //! - what the app does at every step of an editing trace: moving the mesh
 //!   one change (`Trace::seek`) and checking every rule (`validate`) and
-//!   the statistics (`live_stats`) of the whole mesh.
+//!   the statistics (`live_stats`) of the whole mesh;
+//! - a whole-mesh edit: the library's `loopSubdivide` on the 24×12 torus
+//!   (576 triangles, about 270k steps), traced, then stepped back.
 //!
 //! Run: `cargo bench -p edgewise-core --bench edits`.
 
@@ -87,5 +89,32 @@ fn edits(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, edits);
+fn subdivision(c: &mut Criterion) {
+    let program = lang::library::program("half-edge-subdivision.alg")
+        .expect("shipped")
+        .expect("the library compiles");
+    let algorithm = Arc::clone(program.algorithm("loopSubdivide").expect("shipped"));
+    let (torus, _) = HalfEdgeMesh::build(&generate::torus(24, 12)).expect("the torus builds");
+    let mut mesh = Mesh::Half(torus);
+    let mut group = c.benchmark_group("edits/torus-576");
+    group.sample_size(10);
+    group.bench_function("traced loopSubdivide, then stepped back", |b| {
+        b.iter(|| {
+            let trace = lang::run_editing(
+                &algorithm,
+                &mut mesh,
+                &[("f", Value::Face(0))],
+                RunOptions::default(),
+            )
+            .expect("inputs fit");
+            trace
+                .seek(&mut mesh, trace.changes().len(), 0)
+                .expect("reverts");
+            black_box(trace.len())
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, edits, subdivision);
 criterion_main!(benches);

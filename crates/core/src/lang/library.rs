@@ -4,7 +4,7 @@
 use super::{Program, compile_rendered};
 
 /// The library's source files: (file name, text).
-pub const SOURCES: [(&str, &str); 5] = [
+pub const SOURCES: [(&str, &str); 6] = [
     (
         "winged-edge.alg",
         include_str!("../../../../algorithms/winged-edge.alg"),
@@ -24,6 +24,10 @@ pub const SOURCES: [(&str, &str); 5] = [
     (
         "half-edge-strips.alg",
         include_str!("../../../../algorithms/half-edge-strips.alg"),
+    ),
+    (
+        "half-edge-subdivision.alg",
+        include_str!("../../../../algorithms/half-edge-subdivision.alg"),
     ),
 ];
 

@@ -12,8 +12,11 @@ use crate::schema::{Column, ElementKind, ElementRef, LookupError};
 use std::fmt;
 use std::sync::Arc;
 
-/// Operations run before a trace is cut off, unless configured otherwise.
-pub const DEFAULT_STEP_LIMIT: usize = 100_000;
+/// Operations run before a trace is cut off, unless configured otherwise:
+/// room for a whole-mesh edit such as a subdivision pass over a few thousand
+/// triangles, while a runaway loop still stops within a fraction of a second
+/// and about 17 MB of trace.
+pub const DEFAULT_STEP_LIMIT: usize = 1_000_000;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RunOptions {
