@@ -1153,3 +1153,136 @@ fn journals_match_their_golden_file() {
     }
     golden::assert_matches(&root().join("tests/golden/operations/journals.txt"), text);
 }
+
+/// The library algorithm that traces each operation, in both structures'
+/// edit files.
+const TRACED: [(Operation, &str); 11] = [
+    (Operation::FlipEdge, "flipEdge"),
+    (Operation::SplitEdge, "splitEdge"),
+    (Operation::SplitFace, "splitFace"),
+    (Operation::CollapseEdge, "collapseEdge"),
+    (Operation::RemoveVertex, "removeVertex"),
+    (Operation::Mev, "mev"),
+    (Operation::Kev, "kev"),
+    (Operation::Mef, "mef"),
+    (Operation::Kef, "kef"),
+    (Operation::Kemr, "kemr"),
+    (Operation::Mekr, "mekr"),
+];
+
+/// Runs the traced `name` with `ids` as its arguments, in order (MEV's one
+/// edge is given twice, the dangling-edge case).
+fn traced(
+    program: &edgewise_core::lang::Program,
+    name: &str,
+    mesh: &mut Mesh,
+    ids: &[u32],
+) -> edgewise_core::lang::Trace {
+    use edgewise_core::lang::{self, RunOptions, Value};
+    let algorithm = program
+        .algorithm(name)
+        .unwrap_or_else(|| panic!("the library has no `{name}`"));
+    let mut ids = ids.to_vec();
+    if name == "mev" && ids.len() == 2 {
+        ids.push(ids[1]);
+    }
+    let args: Vec<(&str, Value)> = algorithm
+        .params()
+        .zip(&ids)
+        .map(|(param, &id)| {
+            let kind = param.ty.element_kind().expect("element parameters");
+            (param.name.as_str(), Value::from(ElementRef::new(kind, id)))
+        })
+        .collect();
+    lang::run_editing(algorithm, mesh, &args, RunOptions::default()).expect("inputs fit")
+}
+
+/// The traced operations of the library match the native ones table for
+/// table: wherever the native operation applies, the traced one leaves the
+/// same tables (compared after compacting, which also compares which rows
+/// were deleted); wherever it refuses, the traced one refuses before
+/// writing anything. On every sample, and on meshes with a dangling edge,
+/// a hole and a bridge, which only the Euler operators make.
+#[test]
+fn traced_library_operations_match_the_native_ones() {
+    use Structure::{HalfEdge as Half, WingedEdge as Winged};
+    let programs = [
+        ("winged-edge-edits.alg", Winged),
+        ("half-edge-edits.alg", Half),
+    ]
+    .map(|(file, structure)| {
+        let program = edgewise_core::lang::library::program(file)
+            .expect("shipped")
+            .expect("the library compiles");
+        (structure, program)
+    });
+    let mut meshes: Vec<(String, Mesh)> = Vec::new();
+    for sample in samples() {
+        meshes.push((format!("{} (winged)", sample.name), sample.winged));
+        meshes.push((format!("{} (half)", sample.name), sample.half));
+    }
+    for structure in [Winged, Half] {
+        let holed = build(&grid_with_hole(), structure);
+        let (bridged, _) = after(&holed, Operation::Mekr, &[0, 7, 14]);
+        let (dangling, _, _) = with_dangling_edge(&build(&generate::cube(), structure));
+        meshes.push((format!("holed grid ({structure})"), holed));
+        meshes.push((format!("holed grid bridged ({structure})"), bridged));
+        meshes.push((format!("cube with a dangling edge ({structure})"), dangling));
+    }
+    let mut compared = [[0usize; 2]; TRACED.len()];
+    let mut mismatches = Vec::new();
+    for (name, mesh) in &meshes {
+        let program = &programs
+            .iter()
+            .find(|(s, _)| *s == mesh.structure())
+            .expect("both structures")
+            .1;
+        let budget = if mesh.count(ElementKind::Edge) <= 200 {
+            200
+        } else {
+            30
+        };
+        for (i, (op, algorithm)) in TRACED.into_iter().enumerate() {
+            for ids in arguments(mesh, op, budget) {
+                let mut native = mesh.clone();
+                let native_result = operations::apply(&mut native, op, &ids);
+                let mut by_trace = mesh.clone();
+                let trace = traced(program, algorithm, &mut by_trace, &ids);
+                let context = format!("{name}: {op} {ids:?} ({algorithm})");
+                match (native_result, trace.outcome().error()) {
+                    (Ok(_), None) => {
+                        native.compact();
+                        by_trace.compact();
+                        if native != by_trace {
+                            mismatches.push(format!("{context}: the tables differ"));
+                        }
+                        compared[i][0] += 1;
+                    }
+                    (Err(_), Some(_)) if trace.changes().len() == 0 => compared[i][1] += 1,
+                    (Err(_), Some(error)) => {
+                        mismatches.push(format!("{context}: wrote before refusing: {error}"));
+                    }
+                    (Ok(_), Some(error)) => {
+                        mismatches.push(format!("{context}: only the traced one refused: {error}"));
+                    }
+                    (Err(refusal), None) => {
+                        mismatches
+                            .push(format!("{context}: only the native one refused: {refusal}"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        mismatches.is_empty(),
+        "{} mismatches:\n{}",
+        mismatches.len(),
+        mismatches[..mismatches.len().min(40)].join("\n")
+    );
+    for ((op, _), [applied, refused]) in TRACED.iter().zip(compared) {
+        assert!(
+            applied >= 20,
+            "{op}: only {applied} applied ({refused} refused)"
+        );
+    }
+}
