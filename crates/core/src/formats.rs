@@ -224,6 +224,33 @@ pub fn load_as(bytes: &[u8], format: Format, structure: Structure) -> Result<Loa
     })
 }
 
+/// Reads a mesh file for diagnosis: a `.wtb` or `.htb` file whose tables
+/// break the structure's rules is kept as written, in the structure it
+/// stores, instead of refused, so that a student can see every broken
+/// record and fix it. Rows that cannot be read are still refused. A
+/// reference past the end of its table is read as unset and listed in
+/// [`Loaded::warnings`] at its field. PLY and OBJ hold polygons, not
+/// tables, and load as [`load`] loads them, into `structure`.
+pub fn load_for_diagnosis(
+    bytes: &[u8],
+    name: &str,
+    structure: Structure,
+) -> Result<Loaded, FormatError> {
+    let format = Format::detect(bytes, name)?;
+    check_size(bytes)?;
+    let (mesh, warnings) = match format {
+        Format::Wtb => tables::read_for_diagnosis::<WingedEdgeMesh>(bytes)?,
+        Format::Htb => tables::read_for_diagnosis::<HalfEdgeMesh>(bytes)?,
+        Format::Ply | Format::Obj => return load_as(bytes, format, structure),
+    };
+    Ok(Loaded {
+        mesh,
+        format,
+        converted_from: None,
+        warnings,
+    })
+}
+
 fn tables_loaded(mesh: Mesh, format: Format, structure: Structure) -> Result<Loaded, FormatError> {
     if mesh.structure() == structure {
         return Ok(Loaded {

@@ -42,14 +42,40 @@ pub fn ply(data: &[u8]) {
     load_both(data, Format::Ply);
 }
 
-/// `.wtb` bytes, read and converted to half-edge.
+/// `.wtb` bytes, read and converted to half-edge, and read for diagnosis.
 pub fn wtb(data: &[u8]) {
     load_both(data, Format::Wtb);
+    diagnose(data, "fuzz.wtb");
 }
 
-/// `.htb` bytes, read and converted to winged-edge.
+/// `.htb` bytes, read and converted to winged-edge, and read for diagnosis.
 pub fn htb(data: &[u8]) {
     load_both(data, Format::Htb);
+    diagnose(data, "fuzz.htb");
+}
+
+/// What the app does with tables opened for diagnosis, however broken:
+/// check every rule, draw the faces it can walk, count, and read every
+/// reference; none of it may panic or run without end.
+fn diagnose(data: &[u8], name: &str) {
+    use crate::schema::{Column, ElementKind, Records};
+    let Ok(loaded) = formats::load_for_diagnosis(data, name, Structure::HalfEdge) else {
+        return;
+    };
+    let mesh = &loaded.mesh;
+    drop(mesh.validate());
+    drop(mesh.to_polygons());
+    drop(mesh.live_stats());
+    for kind in ElementKind::ALL {
+        for id in 0..Records::count(mesh, kind) as u32 {
+            for entry in Column::table(mesh.structure(), kind) {
+                drop(mesh.reference(ElementRef::new(kind, id), entry.column));
+            }
+        }
+    }
+    for warning in &loaded.warnings {
+        drop(warning.to_string());
+    }
 }
 
 /// Format detection then loading: the first byte picks a file name from

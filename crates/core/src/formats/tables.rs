@@ -5,10 +5,12 @@
 
 use glam::Vec3;
 
-use super::error::FormatError;
+use super::error::{FormatError, Problem};
 use super::rows::{self, Problems, RowPlaces, Rows as Lines, Section};
-use crate::mesh::{Element, Mesh};
-use crate::schema::{Column, ElementKind, Record, Rows, Structure};
+use crate::mesh::{Element, Issue, Mesh};
+use crate::schema::{
+    Column, ElementKind, ElementRef, Record, RecordsMut, Rows, Storage, Structure,
+};
 
 /// A structure a table file holds.
 pub(super) trait TableFile: Rows + Sized {
@@ -33,7 +35,7 @@ pub(super) trait TableFile: Rows + Sized {
 
     fn into_mesh(self) -> Mesh;
 
-    fn validate(&self) -> Vec<crate::mesh::Issue>;
+    fn validate(&self) -> Vec<Issue>;
 }
 
 /// Implements [`TableFile`] for a structure: its mesh type, its `Mesh`
@@ -120,9 +122,31 @@ fn read_section<R: Record, T>(
     Ok((records, places))
 }
 
-/// Reads a table file of structure `M`, placing every problem at its line
-/// and column.
-pub(super) fn read<M: TableFile>(bytes: &[u8]) -> Result<Mesh, FormatError> {
+/// A table file's tables as written, before any rule is checked, with
+/// where each row was, to place problems.
+struct Read<'t, M> {
+    mesh: M,
+    text: &'t str,
+    vertex_places: RowPlaces,
+    face_places: RowPlaces,
+    edge_places: RowPlaces,
+}
+
+impl<M: TableFile> Read<'_, M> {
+    /// `issues` at the line and column of each field.
+    fn place(&self, issues: Vec<Issue>) -> FormatError {
+        rows::place_issues(issues, self.text, |element| match element {
+            Element::Vertex(_) => Some(&self.vertex_places),
+            Element::Face(_) => Some(&self.face_places),
+            edge if M::is_edge_row(edge) => Some(&self.edge_places),
+            _ => None,
+        })
+    }
+}
+
+/// Reads the rows of a table file of structure `M`; a malformed row is
+/// refused at its line and column.
+fn read_rows<M: TableFile>(bytes: &[u8]) -> Result<Read<'_, M>, FormatError> {
     let text = super::text(bytes)?;
     let mut lines = Lines::new(text);
     rows::header(&mut lines, M::MAGIC, M::OTHER)?;
@@ -152,22 +176,74 @@ pub(super) fn read<M: TableFile>(bytes: &[u8]) -> Result<Mesh, FormatError> {
     let (edges, edge_places) = read_section(&mut lines, &mut problems, &M::EDGES, |_, _, _| ())?;
     rows::end(&mut lines, &M::EDGES, edges.len())?;
     problems.finish()?;
+    Ok(Read {
+        mesh: M::from_tables(
+            vertices,
+            faces.into_iter().map(|((), face)| face).collect(),
+            edges.into_iter().map(|((), edge)| edge).collect(),
+        ),
+        text,
+        vertex_places,
+        face_places,
+        edge_places,
+    })
+}
 
-    let mesh = M::from_tables(
-        vertices,
-        faces.into_iter().map(|((), face)| face).collect(),
-        edges.into_iter().map(|((), edge)| edge).collect(),
-    );
-    let issues = mesh.validate();
+/// Reads a table file of structure `M`, placing every problem, and every
+/// rule the tables break, at its line and column.
+pub(super) fn read<M: TableFile>(bytes: &[u8]) -> Result<Mesh, FormatError> {
+    let read = read_rows::<M>(bytes)?;
+    let issues = read.mesh.validate();
     if issues.is_empty() {
-        return Ok(mesh.into_mesh());
+        return Ok(read.mesh.into_mesh());
     }
-    Err(rows::place_issues(issues, text, |element| match element {
-        Element::Vertex(_) => Some(&vertex_places),
-        Element::Face(_) => Some(&face_places),
-        edge if M::is_edge_row(edge) => Some(&edge_places),
-        _ => None,
-    }))
+    Err(read.place(issues))
+}
+
+/// Reads a table file of structure `M` for diagnosis: tables that break the
+/// structure's rules are kept, for a student to find and fix what is wrong.
+/// A malformed row is still refused. A reference to a row past the end of
+/// its table is read as unset, so that nothing downstream follows it; each
+/// such reference is returned as a problem at its field.
+pub(super) fn read_for_diagnosis<M: TableFile + RecordsMut>(
+    bytes: &[u8],
+) -> Result<(Mesh, Vec<Problem>), FormatError> {
+    let mut read = read_rows::<M>(bytes)?;
+    let structure = M::EDGES.table.0;
+    let mut unset = Vec::new();
+    for kind in ElementKind::ALL {
+        let stored = Column::table(structure, kind)
+            .iter()
+            .filter(|entry| entry.storage == Storage::Stored);
+        for entry in stored {
+            for id in 0..read.mesh.count(kind) as u32 {
+                let row = ElementRef::new(kind, id);
+                let Ok(Some(target)) = read.mesh.reference(row, entry.column) else {
+                    continue;
+                };
+                let rows = read.mesh.count(target.kind);
+                if (target.id as usize) < rows {
+                    continue;
+                }
+                if read.mesh.unset_reference(row, entry.column).is_ok() {
+                    unset.push(Issue {
+                        element: Element::of(structure, row),
+                        field: entry.column,
+                        message: format!(
+                            "{} does not exist (there are {rows}); read as unset",
+                            Element::of(structure, target)
+                        ),
+                    });
+                }
+            }
+        }
+    }
+    let problems = if unset.is_empty() {
+        Vec::new()
+    } else {
+        read.place(unset).problems().to_vec()
+    };
+    Ok((read.mesh.into_mesh(), problems))
 }
 
 /// Writes `mesh`'s tables as its structure's table file.

@@ -11,7 +11,7 @@ use super::deleted::Deleted;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use super::winged_edge::{Side, WingedEdge, WingedEdgeMesh};
-use crate::schema::{Column, ElementRef};
+use crate::schema::{Column, ElementKind, ElementRef, Structure};
 
 /// The table row an issue is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -24,6 +24,19 @@ pub enum Element {
     HalfEdge(HalfEdgeId),
     /// A face row.
     Face(FaceId),
+}
+
+impl Element {
+    /// A row of `structure`'s tables, as messages name it: an edge row is a
+    /// half-edge in a half-edge mesh.
+    pub fn of(structure: Structure, row: ElementRef) -> Self {
+        match (row.kind, structure) {
+            (ElementKind::Vertex, _) => Self::Vertex(VertexId::new(row.id)),
+            (ElementKind::Face, _) => Self::Face(FaceId::new(row.id)),
+            (ElementKind::Edge, Structure::WingedEdge) => Self::Edge(EdgeId::new(row.id)),
+            (ElementKind::Edge, Structure::HalfEdge) => Self::HalfEdge(HalfEdgeId::new(row.id)),
+        }
+    }
 }
 
 impl fmt::Display for Element {

@@ -103,12 +103,7 @@ impl<'m, M: Records + ?Sized> Patch<'m, M> {
     /// A row as messages name it: edge rows are half-edges in a half-edge
     /// mesh.
     pub(crate) fn element(&self, row: ElementRef) -> Element {
-        match (row.kind, self.structure) {
-            (ElementKind::Vertex, _) => Element::Vertex(VertexId::new(row.id)),
-            (ElementKind::Face, _) => Element::Face(FaceId::new(row.id)),
-            (ElementKind::Edge, Structure::WingedEdge) => Element::Edge(EdgeId::new(row.id)),
-            (ElementKind::Edge, Structure::HalfEdge) => Element::HalfEdge(HalfEdgeId::new(row.id)),
-        }
+        Element::of(self.structure, row)
     }
 
     /// The row a dart is stored in: the half-edge, or the winged edge.
