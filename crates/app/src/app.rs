@@ -2,7 +2,9 @@
 //! tables, and the commands the JavaScript API and the UI share.
 
 use crate::command::{Command, CommandError};
+use crate::history::Kind;
 use edgewise_core::schema::{Column, ElementKind, ElementRef};
+use edit_menu::EditMenu;
 use egui_extras::{Size, StripBuilder};
 
 use edgewise_core::{
@@ -21,8 +23,8 @@ use crate::{
     selection::Role,
     settings::Settings,
     state::{
-        AppState, BrokenState, Counts, DialogState, HighlightState, PendingState, StatsState,
-        TraceState,
+        AppState, BrokenState, Counts, DialogState, HighlightState, PendingState, RenumberingState,
+        StatsState, TraceState,
     },
     tables::{self, TablesResponse},
     theme::Theme,
@@ -31,6 +33,7 @@ use crate::{
 
 pub mod algorithm_ui;
 pub mod course;
+pub(crate) mod edit_menu;
 mod edit_ui;
 pub mod embed;
 pub mod execute;
@@ -150,10 +153,33 @@ impl EdgewiseApp {
         bytes: &[u8],
         name: &str,
         structure: Option<Structure>,
+        diagnose: bool,
     ) -> Result<(), CommandError> {
         let structure = structure.unwrap_or_else(|| self.default_structure_for(name));
+        if diagnose {
+            let loaded = Document::load_for_diagnosis(bytes, name, structure);
+            return self.open(loaded, true, false);
+        }
         let loaded = Document::load(bytes, name, structure);
-        self.open(loaded, true)
+        // A table file refused for broken records can be opened to fix.
+        let diagnosable = loaded.is_err()
+            && Document::load_for_diagnosis(bytes, name, structure)
+                .is_ok_and(|document| !document.mesh().validate().is_empty());
+        let result = self.open(loaded, true, false);
+        if diagnosable {
+            self.tab_mut().diagnosable = Some((name.to_owned(), bytes.to_vec()));
+        }
+        result
+    }
+
+    /// [`Command::DiagnoseRefused`].
+    fn diagnose_refused(&mut self) -> Result<(), CommandError> {
+        let (name, bytes) = self
+            .tab_mut()
+            .diagnosable
+            .take()
+            .ok_or("no refused table file to open for diagnosis")?;
+        self.open_bytes(&bytes, &name, None, true)
     }
 
     /// [`Command::LoadSample`].
@@ -186,7 +212,7 @@ impl EdgewiseApp {
             document.sample = Some(sample.name.to_owned());
             document
         });
-        self.open(loaded, true)
+        self.open(loaded, true, false)
     }
 
     /// A table file opens as the structure it stores; PLY and OBJ as the
@@ -197,24 +223,34 @@ impl EdgewiseApp {
             .unwrap_or(self.tab().structure)
     }
 
-    /// Shows a newly loaded document, or keeps the current one and reports why not.
-    /// `frame` points the camera at the new mesh; the OBJ editor keeps the
-    /// student's view while they type.
-    fn open(&mut self, loaded: Result<Document, String>, frame: bool) -> Result<(), CommandError> {
-        match loaded {
-            Ok(document) => {
-                self.tab_mut().structure = document.structure();
-                self.tab_mut()
-                    .view
-                    .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
-                self.tab_mut().document = Some(document);
-                self.tab_mut().run.mesh_changed();
-                self.tab_mut().paint_key = None;
-                self.tab_mut().error = None;
-                Ok(())
-            }
-            Err(message) => Err(message.into()),
-        }
+    /// Shows a newly loaded document, undoably, or keeps the current one
+    /// and reports why not. `frame` points the camera at the new mesh; the
+    /// OBJ editor keeps the student's view while they type, and `merge`s
+    /// its keystrokes into one undo step. A document whose tables break the
+    /// rules (opened for diagnosis) starts diagnosis mode.
+    fn open(
+        &mut self,
+        loaded: Result<Document, String>,
+        frame: bool,
+        merge: bool,
+    ) -> Result<(), CommandError> {
+        let document = loaded?;
+        let tab = self.tab_mut();
+        tab.structure = document.structure();
+        tab.view
+            .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
+        let label = format!("open {}", document.name);
+        let broken = document.mesh().validate();
+        let before = tab.document.replace(document);
+        tab.history.record(label, Kind::Load, before, merge);
+        tab.diagnosis = !broken.is_empty();
+        tab.broken = broken;
+        tab.diagnosable = None;
+        tab.renumbering = None;
+        tab.run.mesh_changed();
+        tab.paint_key = None;
+        tab.error = None;
+        Ok(())
     }
 
     /// [`Command::Select`].
@@ -239,8 +275,15 @@ impl EdgewiseApp {
         if document.structure() == structure {
             return Ok(());
         }
+        let before = document.clone();
         match document.switch_structure(structure) {
             Ok(()) => {
+                tab.history.record(
+                    format!("convert to {}", structure.prose()),
+                    Kind::Load,
+                    Some(before),
+                    false,
+                );
                 tab.view
                     .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
                 tab.run.mesh_changed();
@@ -291,7 +334,7 @@ impl EdgewiseApp {
             let first = self.tab().document.is_none();
             let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
             // The editor marks its own problems; the view keeps the last good mesh.
-            let _marked_in_the_editor = self.open(loaded, first);
+            let _marked_in_the_editor = self.open(loaded, first, true);
         }
     }
 
@@ -372,6 +415,10 @@ impl EdgewiseApp {
                 .collect(),
             error: self.tab().error.clone(),
             broken: self.tab().broken.iter().map(BrokenState::new).collect(),
+            diagnosis: self.tab().diagnosis,
+            history: self.tab().history.state(),
+            renumbering: self.tab().renumbering.as_ref().map(RenumberingState::new),
+            edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
             stats: self.tab().stats().as_ref().map(StatsState::new),
             trace: self.trace_state(),
             pending: self.pending_state(),
@@ -600,10 +647,10 @@ impl EdgewiseApp {
     }
 
     fn error_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(error) = &self.tab().error else {
+        let Some(error) = self.tab().error.clone() else {
             return;
         };
-        let mut dismiss = false;
+        let (mut dismiss, mut diagnose) = (false, false);
         egui::Frame::new()
             .fill(ui.visuals().error_fg_color.gamma_multiply(0.12))
             .inner_margin(8.0)
@@ -620,10 +667,27 @@ impl EdgewiseApp {
                     };
                     ui.add(label);
                 }
-                dismiss = ui.button("Dismiss").clicked();
+                ui.horizontal(|ui| {
+                    dismiss = ui.button("Dismiss").clicked();
+                    if self.tab().diagnosable.is_some()
+                        && ui
+                            .button("Open it for diagnosis")
+                            .on_hover_text(
+                                "Open the tables as written, with every broken record marked, \
+                                 and fix them cell by cell",
+                            )
+                            .clicked()
+                    {
+                        diagnose = true;
+                    }
+                });
             });
         if dismiss {
             self.tab_mut().error = None;
+            self.tab_mut().diagnosable = None;
+        }
+        if diagnose {
+            self.issue(Command::DiagnoseRefused);
         }
     }
 
@@ -675,6 +739,25 @@ impl EdgewiseApp {
         if let Some(clicked) = response.clicked {
             self.element_clicked(Some(clicked));
         }
+        if let Some((element, at)) = response.context {
+            self.open_edit_menu(element, at);
+        }
+        if let Some((element, column, typed)) = response.set_cell {
+            let command = typed.map(|target| Command::SetCell {
+                element,
+                column: column
+                    .language_name()
+                    .unwrap_or(column.record_name())
+                    .to_owned(),
+                target,
+            });
+            match command {
+                Ok(command) => self.issue(command),
+                Err(message) => {
+                    self.report(format!("{element} {}: {message}", column.record_name()));
+                }
+            }
+        }
     }
 
     fn view_ui(&mut self, ui: &mut egui::Ui) {
@@ -707,6 +790,11 @@ impl EdgewiseApp {
         } else if response.background_clicked {
             self.element_clicked(None);
         }
+        if let Some((pick, at)) = response.context {
+            self.open_edit_menu(pick, at);
+        }
+        self.edit_keys(ui.ctx(), view_rect);
+        self.edit_menu_ui(ui.ctx());
     }
 }
 
@@ -755,7 +843,7 @@ impl eframe::App for EdgewiseApp {
         self.settings_window_ui(ui.ctx());
         self.share_window_ui(ui.ctx());
         self.presentation_hint_ui(ui.ctx());
-        if (self.show_algorithm_panel || self.tab().run.is_active())
+        if (self.show_algorithm_panel || self.tab().run.is_active() || self.tab().diagnosis)
             && presenting.is_none_or(|p| p.algorithm)
         {
             egui::Panel::right("algorithm")

@@ -29,7 +29,12 @@ pub enum Command {
         bytes: Vec<u8>,
         name: String,
         structure: Option<Structure>,
+        /// Open a `.wtb` or `.htb` whose tables break the rules anyway, in
+        /// diagnosis mode, instead of refusing it.
+        diagnose: bool,
     },
+    /// Opens the table file the last refused load was, in diagnosis mode.
+    DiagnoseRefused,
     /// Opens a built-in sample by name (a file stem in meshes/).
     LoadSample {
         name: String,
@@ -95,8 +100,23 @@ pub enum Command {
         operation: Operation,
         ids: Vec<u32>,
     },
-    /// Puts back the mesh from before the last edit.
+    /// Puts back the mesh from before the last edit, if the last change
+    /// was an edit.
     RestoreBeforeEdit,
+    /// Takes back the last load or edit.
+    Undo,
+    /// Makes the last undone load or edit again.
+    Redo,
+    /// Drops deleted rows and renumbers the rest.
+    CompactIds,
+    /// Sets one reference of a record by hand (a table cell): `column` is
+    /// named as the language names it (`leftSuccessor`, `pair`), and
+    /// `target` is the id of the element it is to name, or `None`.
+    SetCell {
+        element: ElementRef,
+        column: String,
+        target: Option<u32>,
+    },
 }
 
 /// What a command that succeeded has to say.

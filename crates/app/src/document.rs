@@ -1,14 +1,16 @@
 //! One open mesh: its structure, where it came from, and what is selected.
 
-use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, RecordsMut as _};
 use edgewise_core::{
     formats::{self, FormatError, Loaded},
-    mesh::{EdgeCorrespondence, EdgeId, HalfEdgeId, Mesh, Structure},
+    mesh::{EdgeCorrespondence, EdgeId, Edit as _, HalfEdgeId, Mesh, Renumbering, Structure},
 };
 
 use crate::selection::{self, Highlight};
 
-/// A mesh open in the app with its selection.
+/// A mesh open in the app with its selection. Cloned whole into the undo
+/// history, so that an undo gives back the tables byte for byte.
+#[derive(Clone)]
 pub struct Document {
     /// The file or sample name, shown in the title and used for saving.
     pub name: String,
@@ -33,6 +35,22 @@ impl Document {
     /// message names `name:line:column` for each problem.
     pub fn load(bytes: &[u8], name: &str, structure: Structure) -> Result<Self, String> {
         Self::parse(bytes, name, structure).map_err(|err| err.render(name).trim_end().to_owned())
+    }
+
+    /// Opens a table file for diagnosis: kept as written even if its tables
+    /// break the structure's rules (see [`formats::load_for_diagnosis`]).
+    pub fn load_for_diagnosis(
+        bytes: &[u8],
+        name: &str,
+        structure: Structure,
+    ) -> Result<Self, String> {
+        let Loaded { mesh, warnings, .. } = formats::load_for_diagnosis(bytes, name, structure)
+            .map_err(|err| err.render(name).trim_end().to_owned())?;
+        let warnings = warnings
+            .iter()
+            .map(|warning| format!("{name}:{warning}"))
+            .collect();
+        Ok(Self::new(name, mesh, warnings))
     }
 
     /// [`Self::load`] with the problems and their places kept, for editors
@@ -163,15 +181,86 @@ impl Document {
     }
 
     /// Replaces the mesh with one derived from it (an edit's result or what
-    /// it replaced), keeping the name; gives back the mesh it replaced.
-    pub fn replace_mesh(&mut self, mesh: Mesh) -> Mesh {
-        let before = std::mem::replace(&mut self.mesh, mesh);
+    /// it replaced), keeping the name; gives back the document as it was,
+    /// for the undo history.
+    pub fn replace_mesh(&mut self, mesh: Mesh) -> Document {
+        let before = Document {
+            name: self.name.clone(),
+            mesh: std::mem::replace(&mut self.mesh, mesh),
+            warnings: self.warnings.clone(),
+            selection: self.selection,
+            highlights: self.highlights.clone(),
+            generation: self.generation,
+            mesh_id: self.mesh_id,
+            sample: self.sample.clone(),
+        };
+        self.changed();
+        before
+    }
+
+    /// A copy of this document showing `mesh` instead: what it was before
+    /// an editing trace that has since changed it.
+    pub fn with_mesh(&self, mesh: Mesh) -> Document {
+        let mut copy = Document::new(&self.name, mesh, self.warnings.clone());
+        copy.sample.clone_from(&self.sample);
+        let selection = self.selection.filter(|&s| copy.mesh.contains(s));
+        let _kept = copy.select(selection);
+        copy
+    }
+
+    /// Writes one reference by hand (a table cell): `target` must name a
+    /// live row of the kind the column holds, or be `None` where the
+    /// column may be empty.
+    pub fn set_reference(
+        &mut self,
+        element: ElementRef,
+        column: Column,
+        target: Option<ElementRef>,
+    ) -> Result<(), String> {
+        if !self.mesh.contains(element) {
+            return Err(self.missing(element));
+        }
+        if let Some(target) = target
+            && !self.mesh.contains(target)
+        {
+            return Err(self.missing(target));
+        }
+        self.mesh
+            .set_reference(element, column, target)
+            .map_err(|error| error.to_string())?;
+        self.changed();
+        Ok(())
+    }
+
+    /// Drops the deleted rows and renumbers the rest in order; gives the
+    /// old-to-new mapping. The selection follows its element.
+    pub fn compact(&mut self) -> Renumbering {
+        let renumbering = self.mesh.compact();
+        let selection = self.selection.and_then(|s| renumbering.get(s));
+        self.mesh_id = next_mesh_id();
+        self.sample = None;
+        let _kept = self.select(selection);
+        renumbering
+    }
+
+    /// Why `element` names no row: past the table, or deleted.
+    fn missing(&self, element: ElementRef) -> String {
+        let count = self.mesh.count(element.kind);
+        if (element.id as usize) < count {
+            format!("{element} was deleted")
+        } else {
+            format!("there is no {element} (this mesh has {count}, numbered from 0)")
+        }
+    }
+
+    /// After the mesh changed: a new mesh id, no longer the sample, and the
+    /// selection kept if its element still exists.
+    fn changed(&mut self) {
         self.mesh_id = next_mesh_id();
         self.sample = None;
         let selection = self.selection.filter(|&s| self.mesh.contains(s));
         // The selection was just checked against the new mesh.
         let _kept = self.select(selection);
-        before
     }
 
     /// Identifies the mesh itself: it changes when the mesh is replaced or

@@ -12,6 +12,7 @@ pub mod course_link;
 mod document;
 #[doc(hidden)]
 pub mod fuzzing;
+pub mod history;
 pub mod obj_editor;
 pub mod paint;
 mod platform;

@@ -7,9 +7,10 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use edgewise_core::lang::Algorithm;
-use edgewise_core::mesh::{Issue, MeshStats};
+use edgewise_core::mesh::{Issue, MeshStats, Renumbering};
 use serde::Serialize;
 
+pub use crate::history::HistoryState;
 use crate::{algorithm::TraceFrame, code_editor::Diagnostic};
 
 /// A JSON-serialisable snapshot of what the app shows.
@@ -33,8 +34,18 @@ pub struct AppState {
     /// The message of the last failed load or command, or null.
     pub error: Option<String>,
     /// Every record that breaks a rule of the structure at the editing
-    /// trace's current step (empty otherwise).
+    /// trace's current step, or in diagnosis mode (empty otherwise).
     pub broken: Vec<BrokenState>,
+    /// The mesh is a broken table opened to be fixed (see `broken`).
+    pub diagnosis: bool,
+    /// What undo and redo would take back and make again, oldest first.
+    pub history: HistoryState,
+    /// The old-to-new ids of the last compacting, until dismissed.
+    pub renumbering: Option<RenumberingState>,
+    /// The edit menu, while it is open: what it offers, and why each
+    /// greyed-out entry is refused.
+    #[serde(rename = "editMenu")]
+    pub edit_menu: Option<EditMenuState>,
     /// V, E, F and the invariants of the mesh as it is now, or null.
     pub stats: Option<StatsState>,
     /// The trace being stepped through, or null.
@@ -83,6 +94,38 @@ impl BrokenState {
 }
 
 /// Counts and invariants, without deleted rows.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct EditMenuState {
+    pub element: ElementRef,
+    pub entries: Vec<EditMenuEntry>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct EditMenuEntry {
+    pub operation: &'static str,
+    pub ids: Vec<u32>,
+    pub label: String,
+    pub refused: Option<String>,
+}
+
+/// Per table, each old id's new id (`null`: deleted), indexed by old id.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct RenumberingState {
+    pub vertices: Vec<Option<u32>>,
+    pub edges: Vec<Option<u32>>,
+    pub faces: Vec<Option<u32>>,
+}
+
+impl RenumberingState {
+    pub fn new(renumbering: &Renumbering) -> Self {
+        Self {
+            vertices: renumbering.vertices.clone(),
+            edges: renumbering.edges.clone(),
+            faces: renumbering.faces.clone(),
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct StatsState {
     pub vertices: usize,

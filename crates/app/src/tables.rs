@@ -10,7 +10,7 @@ use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
 use egui::RichText;
 use egui_extras::TableBuilder;
 
-use crate::{paint::Paint, selection::Role};
+use crate::{paint::Paint, selection::Role, trace_role::TraceRole};
 
 const ROW_HEIGHT: f32 = 20.0;
 /// Shown for a missing (boundary) face.
@@ -21,6 +21,36 @@ const NONE: &str = "∅";
 pub struct TablesResponse {
     /// A row or a reference cell was clicked.
     pub clicked: Option<ElementRef>,
+    /// A row's id was right-clicked, where the pointer was: the edit menu.
+    pub context: Option<(ElementRef, egui::Pos2)>,
+    /// A stored reference cell was edited by hand (double-click, type an id
+    /// or `-`, Enter): the row, the column and the id, or why the text is
+    /// not one.
+    pub set_cell: Option<(ElementRef, Column, Result<Option<u32>, String>)>,
+}
+
+/// The reference cell being typed into, kept in egui's memory between
+/// frames.
+#[derive(Clone, Debug, Default)]
+struct CellEdit {
+    cell: Option<(ElementRef, Column)>,
+    text: String,
+}
+
+fn cell_edit_id() -> egui::Id {
+    egui::Id::unique("edgewise_cell_edit")
+}
+
+/// What a typed cell means: an id, or none (`-`, `null` or nothing).
+fn parse_cell(text: &str) -> Result<Option<u32>, String> {
+    let text = text.trim();
+    if text.is_empty() || text == NONE || text.eq_ignore_ascii_case("null") || text == "-" {
+        return Ok(None);
+    }
+    text.parse::<u32>().map(Some).map_err(|_| {
+        let shown: String = text.chars().take(20).collect();
+        format!("`{shown}` is not an id: type a row number, or - for none")
+    })
 }
 
 /// One cell of a row.
@@ -84,12 +114,22 @@ pub fn table_ui(
                 });
             }
         })
-        .body(|body| {
+        .body(|mut body| {
+            let editing = body
+                .ui_mut()
+                .data(|d| d.get_temp::<CellEdit>(cell_edit_id()))
+                .and_then(|edit| edit.cell);
             body.rows(ROW_HEIGHT, rows, |mut row| {
                 let id = row.index() as u32;
                 let element = ElementRef { kind, id };
                 let row_colour = paint.colour_of(element);
-                let selected_row = paint.painted.first().is_some_and(|p| p.element == element);
+                // The first entry is the selection or the current operation;
+                // marks for broken and deleted rows are not.
+                let selected_row = paint.painted.first().is_some_and(|p| {
+                    p.element == element
+                        && p.role != TraceRole::Broken.key()
+                        && p.role != TraceRole::Deleted.key()
+                });
                 let mut cells = row_cells(mesh, element);
                 if let (Some(last), Some(labels)) = (cells.last_mut(), paint.labels.get(&element)) {
                     *last = Cell::Text(labels.clone());
@@ -123,6 +163,12 @@ pub fn table_ui(
                                 if label.clicked() {
                                     clicked_link = Some(element);
                                 }
+                                if label.secondary_clicked() {
+                                    let at = label
+                                        .interact_pointer_pos()
+                                        .unwrap_or(label.rect.left_bottom());
+                                    response.context = Some((element, at));
+                                }
                             }
                             Cell::Text(text) => {
                                 let mut text = RichText::new(text).monospace();
@@ -130,6 +176,11 @@ pub fn table_ui(
                                     text = text.weak();
                                 }
                                 ui.label(text);
+                            }
+                            Cell::Link(_, column) if editing == Some((element, column)) => {
+                                if let Some(result) = cell_edit_ui(ui) {
+                                    response.set_cell = Some((element, column, result));
+                                }
                             }
                             Cell::Link(target, column)
                                 if paint.struck.contains_key(&(element, Role::Column(column))) =>
@@ -141,12 +192,16 @@ pub fn table_ui(
                             }
                             Cell::Link(None, column) => {
                                 let text = RichText::new(NONE).monospace();
-                                match paint.cells.get(&(element, Role::Column(column))) {
+                                let label = match paint.cells.get(&(element, Role::Column(column)))
+                                {
                                     Some(tint) => ui.label(
                                         text.background_color(tint.gamma_multiply(0.55)).strong(),
                                     ),
                                     None => ui.label(text.weak()),
                                 };
+                                if !dim {
+                                    start_cell_edit(ui, label, element, column, NONE);
+                                }
                             }
                             Cell::Link(Some(target), column) => {
                                 let mut text = RichText::new(target.id.to_string()).monospace();
@@ -162,17 +217,21 @@ pub fn table_ui(
                                 let link =
                                     ui.link(text).on_hover_text(format!("select {target_name}"));
                                 // Screen readers (and UI tests) hear which reference this is.
-                                let column = headers.get(i).copied().unwrap_or_default();
+                                let header = headers.get(i).copied().unwrap_or_default();
                                 let row_name = element.to_string();
                                 link.widget_info(|| {
                                     egui::WidgetInfo::labeled(
                                         egui::Role::Link,
                                         true,
-                                        format!("{column} of {row_name}: {target_name}"),
+                                        format!("{header} of {row_name}: {target_name}"),
                                     )
                                 });
                                 if link.clicked() {
                                     clicked_link = Some(target);
+                                }
+                                if !dim {
+                                    let id = target.id.to_string();
+                                    start_cell_edit(ui, link, element, column, &id);
                                 }
                             }
                         }
@@ -183,6 +242,61 @@ pub fn table_ui(
                 }
             });
         });
+}
+
+/// Starts typing into a stored reference cell on a double-click.
+fn start_cell_edit(
+    ui: &egui::Ui,
+    cell: egui::Response,
+    element: ElementRef,
+    column: Column,
+    text: &str,
+) {
+    let cell = cell.on_hover_text("double-click to change this reference");
+    if cell.double_clicked() {
+        ui.data_mut(|d| {
+            d.insert_temp(
+                cell_edit_id(),
+                CellEdit {
+                    cell: Some((element, column)),
+                    text: text.to_owned(),
+                },
+            );
+        });
+    }
+}
+
+/// The cell being typed into: Enter gives what was typed, Escape or a
+/// click elsewhere gives up.
+fn cell_edit_ui(ui: &mut egui::Ui) -> Option<Result<Option<u32>, String>> {
+    let mut edit = ui
+        .data(|d| d.get_temp::<CellEdit>(cell_edit_id()))
+        .unwrap_or_default();
+    let field = ui.add(
+        egui::TextEdit::singleline(&mut edit.text)
+            .desired_width(48.0)
+            .font(egui::TextStyle::Monospace),
+    );
+    if !field.has_focus() && !field.lost_focus() {
+        field.request_focus();
+    }
+    let (enter, escape) = ui.input(|i| {
+        (
+            i.key_pressed(egui::Key::Enter),
+            i.key_pressed(egui::Key::Escape),
+        )
+    });
+    let result = if field.lost_focus() && enter {
+        Some(parse_cell(&edit.text))
+    } else {
+        None
+    };
+    if result.is_some() || escape || (field.lost_focus() && !enter) {
+        ui.data_mut(|d| d.remove::<CellEdit>(cell_edit_id()));
+    } else {
+        ui.data_mut(|d| d.insert_temp(cell_edit_id(), edit));
+    }
+    result
 }
 
 /// The cells of one row, in the order of [`Column::table`]: the id, the

@@ -198,6 +198,8 @@ pub struct ViewResponse {
     pub hovered: Option<ElementRef>,
     /// The background was clicked (the selection should clear).
     pub background_clicked: bool,
+    /// An element was right-clicked, at this point: the edit menu.
+    pub context: Option<(ElementRef, egui::Pos2)>,
 }
 
 /// Ids for views and uploads, unique in the process.
@@ -420,6 +422,11 @@ impl View3d {
                 Some(pick) => view_response.clicked = Some(pick),
                 None => view_response.background_clicked = true,
             }
+        }
+        if response.secondary_clicked()
+            && let Some(pointer) = response.interact_pointer_pos()
+        {
+            view_response.context = query.pick(pointer).map(|pick| (pick, pointer));
         }
         if hovered.is_some() && !dragging {
             ui.ctx().set_cursor_icon(egui::CursorIcon::PointingHand);

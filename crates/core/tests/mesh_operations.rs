@@ -1154,22 +1154,6 @@ fn journals_match_their_golden_file() {
     golden::assert_matches(&root().join("tests/golden/operations/journals.txt"), text);
 }
 
-/// The library algorithm that traces each operation, in both structures'
-/// edit files.
-const TRACED: [(Operation, &str); 11] = [
-    (Operation::FlipEdge, "flipEdge"),
-    (Operation::SplitEdge, "splitEdge"),
-    (Operation::SplitFace, "splitFace"),
-    (Operation::CollapseEdge, "collapseEdge"),
-    (Operation::RemoveVertex, "removeVertex"),
-    (Operation::Mev, "mev"),
-    (Operation::Kev, "kev"),
-    (Operation::Mef, "mef"),
-    (Operation::Kef, "kef"),
-    (Operation::Kemr, "kemr"),
-    (Operation::Mekr, "mekr"),
-];
-
 /// Runs the traced `name` with `ids` as its arguments, in order (MEV's one
 /// edge is given twice, the dangling-edge case).
 fn traced(
@@ -1229,7 +1213,7 @@ fn traced_library_operations_match_the_native_ones() {
         meshes.push((format!("holed grid bridged ({structure})"), bridged));
         meshes.push((format!("cube with a dangling edge ({structure})"), dangling));
     }
-    let mut compared = [[0usize; 2]; TRACED.len()];
+    let mut compared = [[0usize; 2]; Operation::ALL.len()];
     let mut mismatches = Vec::new();
     for (name, mesh) in &meshes {
         let program = &programs
@@ -1242,7 +1226,8 @@ fn traced_library_operations_match_the_native_ones() {
         } else {
             30
         };
-        for (i, (op, algorithm)) in TRACED.into_iter().enumerate() {
+        for (i, op) in Operation::ALL.into_iter().enumerate() {
+            let algorithm = op.algorithm();
             for ids in arguments(mesh, op, budget) {
                 let mut native = mesh.clone();
                 let native_result = operations::apply(&mut native, op, &ids);
@@ -1279,7 +1264,7 @@ fn traced_library_operations_match_the_native_ones() {
         mismatches.len(),
         mismatches[..mismatches.len().min(40)].join("\n")
     );
-    for ((op, _), [applied, refused]) in TRACED.iter().zip(compared) {
+    for (op, [applied, refused]) in Operation::ALL.iter().zip(compared) {
         assert!(
             applied >= 20,
             "{op}: only {applied} applied ({refused} refused)"

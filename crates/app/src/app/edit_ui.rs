@@ -1,9 +1,17 @@
 //! The live mesh panel: V, E, F, V − E + F, genus, boundary loops and
-//! components, updated at every step of an edit, and, while an algorithm
-//! changes the mesh, every record that breaks a rule of the structure.
+//! components, updated at every step of an edit; while an algorithm
+//! changes the mesh, or in diagnosis mode, every record that breaks a rule
+//! of the structure; undo and redo; and compacting the ids, with the
+//! old-to-new mapping it made.
+
+use edgewise_core::mesh::{Edit as _, Renumbering};
+use edgewise_core::schema::ElementKind;
 
 use super::EdgewiseApp;
 use crate::{algorithm::TraceSession, command::Command};
+
+/// Renumbered ids listed per table before "and N more".
+const MAPPED: usize = 8;
 
 /// Broken records listed before "and N more".
 const LISTED: usize = 12;
@@ -37,11 +45,22 @@ impl EdgewiseApp {
             .on_hover_text("Counts and invariants of the mesh as it is now; they update at every step of an edit.");
         let mut command = None;
         let broken = &tab.broken;
+        if tab.diagnosis {
+            ui.label(
+                egui::RichText::new("Diagnosis: these tables break the structure's rules.")
+                    .strong(),
+            );
+            ui.weak(
+                "Double-click a cell to change it. The mesh opens normally once every record \
+                 follows the rules.",
+            );
+        }
         if !broken.is_empty() {
             let colour = ui.visuals().error_fg_color;
+            let when = if tab.diagnosis { "" } else { " at this step" };
             ui.label(
                 egui::RichText::new(format!(
-                    "{} broken record{} at this step:",
+                    "{} broken record{}{when}:",
                     broken.len(),
                     if broken.len() == 1 { "" } else { "s" }
                 ))
@@ -57,22 +76,88 @@ impl EdgewiseApp {
         } else if tab.run.session().is_some_and(TraceSession::edits) {
             ui.weak("Every record follows the structure's rules at this step.");
         }
-        if tab.run.session().is_none()
-            && let Some((name, _)) = &tab.before_edit
-        {
-            ui.horizontal(|ui| {
-                ui.weak(format!("{name} changed the mesh."));
-                if ui
-                    .button("Restore the previous mesh")
-                    .on_hover_text("Put back the mesh as it was before the edit")
-                    .clicked()
+        if tab.run.session().is_none() {
+            ui.horizontal_wrapped(|ui| {
+                let undo = tab.history.last().map(|(label, _)| label.to_owned());
+                let redo = tab.history.next().map(str::to_owned);
+                let button = |ui: &mut egui::Ui, text: &str, label: &Option<String>| {
+                    let hover = label
+                        .as_ref()
+                        .map_or_else(String::new, |l| format!("{text} {l}"));
+                    ui.add_enabled(label.is_some(), egui::Button::new(text))
+                        .on_hover_text(hover)
+                        .on_disabled_hover_text(format!("Nothing to {}", text.to_lowercase()))
+                        .clicked()
+                };
+                if button(ui, "Undo", &undo) {
+                    command = Some(Command::Undo);
+                }
+                if button(ui, "Redo", &redo) {
+                    command = Some(Command::Redo);
+                }
+                if let Some(label) = &undo {
+                    ui.weak(format!("last change: {label}"));
+                }
+                let deleted = tab
+                    .document
+                    .as_ref()
+                    .map_or(0, |d| d.mesh().deleted_rows().iter().count());
+                if deleted > 0
+                    && ui
+                        .button("Compact ids")
+                        .on_hover_text(format!(
+                            "Drop the {deleted} deleted rows and renumber the rest in order"
+                        ))
+                        .clicked()
                 {
-                    command = Some(Command::RestoreBeforeEdit);
+                    command = Some(Command::CompactIds);
                 }
             });
+        }
+        if let Some(renumbering) = &tab.renumbering {
+            let mut dismissed = false;
+            egui::CollapsingHeader::new("Compacting renumbered the ids")
+                .default_open(true)
+                .show(ui, |ui| {
+                    renumbering_ui(ui, renumbering);
+                    dismissed = ui.button("Dismiss").clicked();
+                });
+            if dismissed {
+                tab.renumbering = None;
+            }
         }
         if let Some(command) = command {
             self.issue(command);
         }
+    }
+}
+
+/// Each table's changed ids as `old → new`, deleted ones as `old → gone`.
+fn renumbering_ui(ui: &mut egui::Ui, renumbering: &Renumbering) {
+    for kind in ElementKind::ALL {
+        let moved: Vec<String> = renumbering
+            .changes(kind)
+            .map(|(old, new)| match new {
+                Some(new) => format!("{old} → {new}"),
+                None => format!("{old} → deleted"),
+            })
+            .collect();
+        if moved.is_empty() {
+            continue;
+        }
+        let mut text = format!(
+            "{}: {}",
+            kind.plural(),
+            moved
+                .iter()
+                .take(MAPPED)
+                .cloned()
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        if moved.len() > MAPPED {
+            text.push_str(&format!(", … and {} more", moved.len() - MAPPED));
+        }
+        ui.label(egui::RichText::new(text).monospace().small());
     }
 }

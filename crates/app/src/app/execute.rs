@@ -18,11 +18,28 @@ impl EdgewiseApp {
     pub fn execute(&mut self, command: Command) -> Result<Reply, CommandError> {
         if matches!(
             command,
-            Command::Abort | Command::RunAlgorithm { .. } | Command::Start | Command::Edit { .. }
+            Command::Abort
+                | Command::RunAlgorithm { .. }
+                | Command::Start
+                | Command::Edit { .. }
+                | Command::Undo
+                | Command::Redo
+                | Command::RestoreBeforeEdit
+                | Command::CompactIds
+                | Command::SetCell { .. }
         ) {
             self.tab_mut().finish_edit();
         }
+        // An edit by hand shows the panel with the mesh's status, undo and
+        // redo.
+        let shows_status = matches!(
+            command,
+            Command::Edit { .. } | Command::SetCell { .. } | Command::CompactIds
+        );
         let result = self.dispatch(command);
+        if shows_status && result.is_ok() {
+            self.show_algorithm_panel = true;
+        }
         self.tab_mut().sync_edit();
         if let Err(error) = &result {
             self.report(error.to_string());
@@ -47,7 +64,9 @@ impl EdgewiseApp {
                 bytes,
                 name,
                 structure,
-            } => done(self.open_bytes(&bytes, &name, structure)),
+                diagnose,
+            } => done(self.open_bytes(&bytes, &name, structure, diagnose)),
+            Command::DiagnoseRefused => done(self.diagnose_refused()),
             Command::LoadSample { name, structure } => done(self.open_sample(&name, structure)),
             Command::OpenFile { name, bytes } => done(self.open_named_file(&name, bytes)),
             Command::ChooseStructure(structure) => done(self.resolve_structure_dialog(structure)),
@@ -86,6 +105,14 @@ impl EdgewiseApp {
                 done(self.tab_mut().apply_operation(operation, &ids))
             }
             Command::RestoreBeforeEdit => done(self.tab_mut().restore_before_edit()),
+            Command::Undo => done(self.tab_mut().undo()),
+            Command::Redo => done(self.tab_mut().redo()),
+            Command::CompactIds => done(self.tab_mut().compact_ids()),
+            Command::SetCell {
+                element,
+                column,
+                target,
+            } => done(self.tab_mut().set_cell(element, &column, target)),
         }
     }
 
@@ -101,6 +128,23 @@ impl EdgewiseApp {
             bytes: bytes.to_vec(),
             name: name.to_owned(),
             structure,
+            diagnose: false,
+        })
+        .map(drop)
+    }
+
+    /// [`Command::LoadMesh`] in diagnosis mode: a table file whose tables
+    /// break the rules opens with its broken records marked.
+    pub fn load_mesh_for_diagnosis(
+        &mut self,
+        bytes: &[u8],
+        name: &str,
+    ) -> Result<(), CommandError> {
+        self.execute(Command::LoadMesh {
+            bytes: bytes.to_vec(),
+            name: name.to_owned(),
+            structure: None,
+            diagnose: true,
         })
         .map(drop)
     }
@@ -215,6 +259,36 @@ impl EdgewiseApp {
     /// Shorthand for [`Command::RestoreBeforeEdit`].
     pub fn restore_before_edit(&mut self) -> Result<(), CommandError> {
         self.execute(Command::RestoreBeforeEdit).map(drop)
+    }
+
+    /// Shorthand for [`Command::Undo`].
+    pub fn undo(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::Undo).map(drop)
+    }
+
+    /// Shorthand for [`Command::Redo`].
+    pub fn redo(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::Redo).map(drop)
+    }
+
+    /// Shorthand for [`Command::CompactIds`].
+    pub fn compact_ids(&mut self) -> Result<(), CommandError> {
+        self.execute(Command::CompactIds).map(drop)
+    }
+
+    /// Shorthand for [`Command::SetCell`].
+    pub fn set_cell(
+        &mut self,
+        element: ElementRef,
+        column: &str,
+        target: Option<u32>,
+    ) -> Result<(), CommandError> {
+        self.execute(Command::SetCell {
+            element,
+            column: column.to_owned(),
+            target,
+        })
+        .map(drop)
     }
 
     /// Shorthand for [`Command::NewTab`]; returns the new tab's index.

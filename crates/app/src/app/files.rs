@@ -111,7 +111,7 @@ impl EdgewiseApp {
             .into());
         };
         match format.native_structure() {
-            Some(structure) => self.open_bytes(&bytes, name, Some(structure)),
+            Some(structure) => self.open_bytes(&bytes, name, Some(structure), false),
             None => {
                 self.files.dialog = Some(StructureDialog::new(name, bytes, self.tab().structure));
                 Ok(())

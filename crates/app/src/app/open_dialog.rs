@@ -104,7 +104,7 @@ impl EdgewiseApp {
             return Err("no file is waiting for a structure".into());
         };
         match structure {
-            Some(structure) => self.open_bytes(&dialog.bytes, &dialog.name, Some(structure)),
+            Some(structure) => self.open_bytes(&dialog.bytes, &dialog.name, Some(structure), false),
             None => Ok(()),
         }
     }

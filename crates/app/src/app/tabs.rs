@@ -6,16 +6,17 @@ use std::borrow::Cow;
 use std::cell::RefCell;
 
 use edgewise_core::mesh::{
-    Issue, Mesh, MeshStats, Structure,
+    Edit as _, Issue, Mesh, MeshStats, Renumbering, Structure,
     operations::{self, Operation},
 };
-use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, NameError};
 
-use super::{EdgewiseApp, twin::Twin};
+use super::{EdgewiseApp, edit_menu::EditMenu, twin::Twin};
 use crate::command::{Command, CommandError};
 use crate::{
     algorithm::AlgorithmRun,
     document::Document,
+    history::{History, Kind},
     obj_editor::ObjEditor,
     paint::Paint,
     state::TabState,
@@ -48,11 +49,21 @@ pub(crate) struct Tab {
     pub(crate) hovered: Option<ElementRef>,
     /// How many of an editing trace's changes the document's mesh shows.
     pub(crate) edit_applied: usize,
-    /// The mesh before the last edit that was kept, and what made it: the
-    /// previous mesh stays one click away.
-    pub(crate) before_edit: Option<(String, Mesh)>,
-    /// Every rule the mesh breaks at the editing trace's current step.
+    /// Every load and edit of this tab, to undo and redo.
+    pub(crate) history: History,
+    /// Every rule the mesh breaks at the editing trace's current step, or
+    /// in diagnosis mode.
     pub(crate) broken: Vec<Issue>,
+    /// The mesh is a broken table opened to be fixed: its broken records
+    /// are listed until it validates, which ends diagnosis.
+    pub(crate) diagnosis: bool,
+    /// The old-to-new ids of the last compacting, shown until dismissed.
+    pub(crate) renumbering: Option<Renumbering>,
+    /// The last refused load, when it is a table file that diagnosis can
+    /// open: its name and bytes.
+    pub(crate) diagnosable: Option<(String, Vec<u8>)>,
+    /// The edit menu, while it is open.
+    pub(crate) edit_menu: Option<EditMenu>,
     /// The statistics of the mesh with this mesh id.
     /// Kept in a cell so that `state()`, which only reads, shares it.
     stats: RefCell<Option<(u64, MeshStats)>>,
@@ -78,8 +89,12 @@ impl Tab {
             twin: None,
             hovered: None,
             edit_applied: 0,
-            before_edit: None,
+            history: History::default(),
             broken: Vec::new(),
+            diagnosis: false,
+            renumbering: None,
+            diagnosable: None,
+            edit_menu: None,
             stats: RefCell::new(None),
         }
     }
@@ -102,12 +117,12 @@ impl Tab {
     pub(crate) fn sync_edit(&mut self) {
         let (Some(document), Some(session)) = (&mut self.document, self.run.session()) else {
             self.edit_applied = 0;
-            self.broken.clear();
+            self.diagnose();
             return;
         };
         if !session.edits() {
             self.edit_applied = 0;
-            self.broken.clear();
+            self.diagnose();
             return;
         }
         let wanted = session.changes_wanted();
@@ -124,9 +139,26 @@ impl Tab {
         self.paint_key = None;
     }
 
+    /// Outside an editing trace, lists the broken records in diagnosis
+    /// mode (none otherwise), and ends diagnosis once there are none.
+    fn diagnose(&mut self) {
+        self.broken.clear();
+        if !self.diagnosis {
+            return;
+        }
+        match &self.document {
+            Some(document) => self.broken = document.mesh().validate(),
+            None => self.diagnosis = false,
+        }
+        if self.broken.is_empty() {
+            self.diagnosis = false;
+            log::info!("the tables validate: diagnosis is over");
+        }
+    }
+
     /// Ends an editing run: a run that finished and left a sound mesh keeps
-    /// its result (the mesh before it stays in [`Self::before_edit`]); any
-    /// other goes back to the mesh it started from.
+    /// its result, undoable; any other goes back to the mesh it started
+    /// from.
     pub(crate) fn finish_edit(&mut self) {
         self.sync_edit();
         let Some(session) = self.run.session().filter(|s| s.edits()) else {
@@ -137,7 +169,7 @@ impl Tab {
             return;
         }
         let finished = session.at_end() && session.trace.outcome().error().is_none();
-        let name = session.trace.algorithm().name.clone();
+        let name = format!("{} (traced)", session.trace.algorithm().name);
         let before = self.mesh_before_trace().map(Cow::into_owned);
         let sound = finished
             && self
@@ -145,11 +177,10 @@ impl Tab {
                 .as_ref()
                 .is_some_and(|d| d.mesh().validate().is_empty());
         if sound {
-            if let Some(before) = before {
-                self.before_edit = Some((name, before));
-            }
-            if let Some(document) = &mut self.document {
+            if let (Some(before), Some(document)) = (before, &mut self.document) {
+                let previous = document.with_mesh(before);
                 document.sample = None;
+                self.history.record(name, Kind::Edit, Some(previous), false);
             }
         } else if let Some(before) = before {
             self.replace_mesh(before);
@@ -160,33 +191,159 @@ impl Tab {
     }
 
     /// Shows `mesh` in place of the document's, keeping its name; gives
-    /// back the mesh it replaced.
-    fn replace_mesh(&mut self, mesh: Mesh) -> Option<Mesh> {
+    /// back the document as it was.
+    fn replace_mesh(&mut self, mesh: Mesh) -> Option<Document> {
         let document = self.document.as_mut()?;
         let before = document.replace_mesh(mesh);
-        self.view
-            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-        self.paint_key = None;
+        self.mesh_shown();
         Some(before)
     }
 
-    /// Applies a native operation to the open mesh; the mesh before it stays
-    /// in [`Self::before_edit`]. A refusal leaves everything as it was.
+    /// After the document's mesh changed: the view, the colours and the
+    /// algorithm run follow it.
+    fn mesh_shown(&mut self) {
+        if let Some(document) = &self.document {
+            self.structure = document.structure();
+            self.view
+                .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        }
+        self.run.mesh_changed();
+        self.paint_key = None;
+        self.error = None;
+    }
+
+    /// Refuses edits of a mesh whose tables are broken.
+    fn sound(&self) -> Result<&Document, CommandError> {
+        let document = self.document.as_ref().ok_or("no mesh is open")?;
+        if self.diagnosis {
+            return Err(format!(
+                "{} has broken records; fix them in the tables first (diagnosis)",
+                document.name
+            )
+            .into());
+        }
+        Ok(document)
+    }
+
+    /// Applies a native operation to the open mesh, undoably. A refusal
+    /// leaves everything as it was.
     pub(crate) fn apply_operation(
         &mut self,
         operation: Operation,
         ids: &[u32],
     ) -> Result<(), CommandError> {
-        let document = self.document.as_ref().ok_or("no mesh is open")?;
-        let mut mesh = document.mesh().clone();
+        let mut mesh = self.sound()?.mesh().clone();
         let shown: Vec<String> = ids.iter().map(ToString::to_string).collect();
         let call = format!("{} {}", operation.name(), shown.join(" "));
         operations::apply(&mut mesh, operation, ids)
             .map_err(|refusal| format!("{call}: {refusal}"))?;
-        self.run.mesh_changed();
-        self.before_edit = self.replace_mesh(mesh).map(|before| (call, before));
-        self.error = None;
+        if let Some(before) = self.replace_mesh(mesh) {
+            self.history.record(call, Kind::Edit, Some(before), false);
+        }
         Ok(())
+    }
+
+    /// Sets one reference by hand, undoably: how a student fixes a broken
+    /// table in diagnosis mode, or breaks a sound one to see what happens.
+    pub(crate) fn set_cell(
+        &mut self,
+        element: ElementRef,
+        column: &str,
+        target: Option<u32>,
+    ) -> Result<(), CommandError> {
+        let document = self.document.as_ref().ok_or("no mesh is open")?;
+        let structure = document.structure();
+        let shown = target.map_or_else(|| "null".to_owned(), |id| id.to_string());
+        let call = format!("setCell({element}, {column}, {shown})");
+        let resolved = Column::resolve(structure, element.kind, column).map_err(|error| {
+            let what = match error {
+                NameError::Unknown => format!("there is no column `{column}`"),
+                NameError::OtherStructure(other) => {
+                    format!("`{column}` is a column of a {} mesh", other.prose())
+                }
+                NameError::WrongElement(owner) => {
+                    format!("`{column}` is a column of {}", with_article(owner))
+                }
+            };
+            format!(
+                "{call}: {what}; {} of a {} mesh has {}",
+                with_article(element.kind),
+                structure.prose(),
+                Column::canonical_names_for(structure, element.kind).join(", ")
+            )
+        })?;
+        let Some(target_kind) = resolved.target() else {
+            return Err(format!("{call}: `{column}` is not a reference to an element").into());
+        };
+        let target = target.map(|id| ElementRef::new(target_kind, id));
+        let label = format!(
+            "{element} {} := {}",
+            resolved.language_name().unwrap_or(column),
+            target.map_or_else(|| "null".to_owned(), |t| t.to_string())
+        );
+        let mut edited = document.clone();
+        edited
+            .set_reference(element, resolved, target)
+            .map_err(|error| format!("{call}: {error}"))?;
+        let before = self.document.replace(edited);
+        self.history.record(label, Kind::Edit, before, false);
+        self.diagnosis = self.diagnosis || !self.mesh_validates();
+        self.mesh_shown();
+        self.diagnose();
+        Ok(())
+    }
+
+    fn mesh_validates(&self) -> bool {
+        self.document
+            .as_ref()
+            .is_none_or(|d| d.mesh().validate().is_empty())
+    }
+
+    /// Drops the deleted rows and renumbers the rest, undoably; the mapping
+    /// stays shown until dismissed.
+    pub(crate) fn compact_ids(&mut self) -> Result<(), CommandError> {
+        let document = self.sound()?;
+        if document.mesh().deleted_rows().is_empty() {
+            return Err(format!("{} has no deleted rows to compact", document.name).into());
+        }
+        let mut compacted = document.clone();
+        let renumbering = compacted.compact();
+        let before = self.document.replace(compacted);
+        self.history
+            .record("compact ids".to_owned(), Kind::Edit, before, false);
+        self.renumbering = Some(renumbering);
+        self.mesh_shown();
+        Ok(())
+    }
+
+    /// Takes back the last load or edit.
+    pub(crate) fn undo(&mut self) -> Result<(), CommandError> {
+        let label = self
+            .history
+            .undo(&mut self.document)
+            .ok_or("nothing to undo")?;
+        log::info!("undid {label}");
+        self.restored();
+        Ok(())
+    }
+
+    /// Makes the last undone change again.
+    pub(crate) fn redo(&mut self) -> Result<(), CommandError> {
+        let label = self
+            .history
+            .redo(&mut self.document)
+            .ok_or("nothing to redo")?;
+        log::info!("redid {label}");
+        self.restored();
+        Ok(())
+    }
+
+    /// After an undo or redo put a document from the history in place.
+    fn restored(&mut self) {
+        self.renumbering = None;
+        self.diagnosis = !self.mesh_validates();
+        self.mesh_shown();
+        self.diagnose();
     }
 
     /// The mesh an editing trace started from (the shown mesh otherwise):
@@ -202,20 +359,15 @@ impl Tab {
         Some(Cow::Owned(before))
     }
 
-    /// Puts back the mesh from before the last kept edit.
+    /// Puts back the mesh from before the last edit, if the last change
+    /// was an edit.
     pub(crate) fn restore_before_edit(&mut self) -> Result<(), CommandError> {
-        let (name, mesh) = self
-            .before_edit
-            .take()
-            .ok_or("no edit to take back: the mesh has not been edited since it was opened")?;
-        if self.document.is_none() {
-            return Err("no mesh is open".into());
+        match self.history.last() {
+            Some((_, Kind::Edit)) => self.undo(),
+            _ => {
+                Err("no edit to take back: the mesh has not been edited since it was opened".into())
+            }
         }
-        self.run.mesh_changed();
-        self.replace_mesh(mesh);
-        self.error = None;
-        log::info!("restored the mesh from before {name}");
-        Ok(())
     }
 }
 
@@ -339,5 +491,14 @@ impl EdgewiseApp {
         if let Some(i) = close {
             self.issue(Command::CloseTab(i));
         }
+    }
+}
+
+/// "a vertex", "an edge", "a face".
+fn with_article(kind: ElementKind) -> &'static str {
+    match kind {
+        ElementKind::Vertex => "a vertex",
+        ElementKind::Edge => "an edge",
+        ElementKind::Face => "a face",
     }
 }

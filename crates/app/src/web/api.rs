@@ -18,8 +18,8 @@ use edgewise_core::{
 };
 
 use super::arguments::{
-    MAX_NAME_CHARS, arguments, check_options, expected, option_string, shown, structure_option,
-    text_argument, whole_number,
+    MAX_NAME_CHARS, arguments, check_options, expected, option_bool, option_string, shown,
+    structure_option, text_argument, whole_number,
 };
 use super::{after_a_paint, with_app};
 use crate::{
@@ -158,6 +158,21 @@ const COMMANDS: &[CommandEntry] = &[
         read: |_, _, _| Ok(Command::RestoreBeforeEdit),
     },
     CommandEntry {
+        name: "undo",
+        call: "undo()",
+        read: |_, _, _| Ok(Command::Undo),
+    },
+    CommandEntry {
+        name: "redo",
+        call: "redo()",
+        read: |_, _, _| Ok(Command::Redo),
+    },
+    CommandEntry {
+        name: "compactIds",
+        call: "compactIds()",
+        read: |_, _, _| Ok(Command::CompactIds),
+    },
+    CommandEntry {
         name: "newTab",
         call: "newTab()",
         read: |_, _, _| Ok(Command::NewTab),
@@ -247,6 +262,40 @@ fn read_edit(call: &'static str, op: &JsValue, ids: &JsValue) -> Result<Command,
     Ok(Command::Edit { operation, ids })
 }
 
+/// `setCell(kind, id, column, value)`: a record's reference set by hand;
+/// `column` as the language names it, `value` an id or `null`.
+fn read_set_cell(
+    kind: &JsValue,
+    id: &JsValue,
+    column: &JsValue,
+    value: &JsValue,
+) -> Result<Command, String> {
+    const CALL: &str = "setCell(kind, id, column, value)";
+    let kind = kind
+        .as_string()
+        .and_then(|k| ElementKind::parse(&k))
+        .ok_or_else(|| expected(CALL, "kind", "'vertex', 'edge' or 'face'", kind))?;
+    let element_id = whole_number(CALL, "id", id)?;
+    let element_id = u32::try_from(element_id)
+        .map_err(|_| format!("{CALL}: id {element_id} is larger than any element id"))?;
+    let column = text_argument(CALL, "column", column, MAX_NAME_CHARS)?;
+    let target = if value.is_null() {
+        None
+    } else {
+        let target = whole_number(CALL, "value", value)
+            .map_err(|_| expected(CALL, "value", "an id or null", value))?;
+        Some(
+            u32::try_from(target)
+                .map_err(|_| format!("{CALL}: value {target} is larger than any element id"))?,
+        )
+    };
+    Ok(Command::SetCell {
+        element: ElementRef::new(kind, element_id),
+        column,
+        target,
+    })
+}
+
 /// The most ids an operation takes (MEKR: a face and two vertices).
 const MAX_EDIT_IDS: usize = 3;
 
@@ -257,7 +306,7 @@ fn read_load_mesh(
     options: &JsValue,
 ) -> Result<Command, String> {
     let text = text_argument(call, "text", text, MAX_FILE_BYTES)?;
-    check_options(call, options, &["format", "structure"])?;
+    check_options(call, options, &["format", "structure", "diagnose"])?;
     let format = option_string(call, options, "format")?;
     if let Some(format) = &format
         && Format::from_name(&format!("x.{format}")).is_none()
@@ -270,10 +319,12 @@ fn read_load_mesh(
     let structure = structure_option(call, options)?;
     // Without a format the content decides (a pasted file has no name).
     let name = format.map_or_else(|| "pasted".to_owned(), |f| format!("pasted.{f}"));
+    let diagnose = option_bool(call, options, "diagnose")?.unwrap_or(false);
     Ok(Command::LoadMesh {
         bytes: text.into_bytes(),
         name,
         structure,
+        diagnose,
     })
 }
 
@@ -315,6 +366,19 @@ pub(super) fn install(runner: &eframe::WebRunner) -> Result<(), JsValue> {
         );
         set_fn(&api, entry.name, &function.into_js_value())?;
     }
+    // setCell takes four arguments; every other command two at most.
+    let set_cell = {
+        let runner = runner.clone();
+        Closure::<dyn Fn(JsValue, JsValue, JsValue, JsValue) -> js_sys::Promise>::new(
+            move |kind: JsValue, id: JsValue, column: JsValue, value: JsValue| match read_set_cell(
+                &kind, &id, &column, &value,
+            ) {
+                Ok(command) => perform(&runner, command),
+                Err(message) => settle(Err(message)),
+            },
+        )
+    };
+    set_fn(&api, "setCell", &set_cell.into_js_value())?;
     for entry in QUERIES {
         let runner = runner.clone();
         let function = Closure::<dyn Fn(JsValue) -> Result<JsValue, JsValue>>::new(

@@ -118,6 +118,25 @@ pub(super) fn option_string(
     text_argument(call, &format!("options.{key}"), &value, MAX_NAME_CHARS).map(Some)
 }
 
+/// `options[key]` as a Boolean, if present.
+pub(super) fn option_bool(
+    call: &str,
+    options: &JsValue,
+    key: &str,
+) -> Result<Option<bool>, String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(None);
+    }
+    let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
+    if value.is_undefined() {
+        return Ok(None);
+    }
+    value
+        .as_bool()
+        .map(Some)
+        .ok_or_else(|| expected(call, &format!("options.{key}"), "true or false", &value))
+}
+
 pub(super) fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
     option_string(call, options, "structure")?
         .map(|name| {

@@ -1124,7 +1124,7 @@ impl Checker<'_> {
         let available: Vec<&str> = Column::language_names_for(structure, kind).collect();
         let listing = format!(
             "{kind_name} lookups in a {structure} structure: {}",
-            canonical_names(structure, kind).join(", ")
+            Column::canonical_names_for(structure, kind).join(", ")
         );
         match error {
             NameError::Unknown => {
@@ -1159,19 +1159,6 @@ impl Checker<'_> {
             }
         }
     }
-}
-
-/// The canonical (non-alias) lookup names on `kind`, for hints.
-fn canonical_names(structure: Structure, kind: ElementKind) -> Vec<&'static str> {
-    let mut names: Vec<&'static str> = Vec::new();
-    for name in Column::language_names_for(structure, kind) {
-        if let Ok(field) = Column::resolve(structure, kind, name)
-            && field.language_name() == Some(name)
-        {
-            names.push(name);
-        }
-    }
-    names
 }
 
 /// Where a derived column's value is written instead.

@@ -195,6 +195,15 @@ impl Renumbering {
         Some(ElementRef::new(element.kind, id))
     }
 
+    /// The ids of `kind` that changed, in order, each with its new id
+    /// (`None`: the row was deleted and is gone).
+    pub fn changes(&self, kind: ElementKind) -> impl Iterator<Item = (u32, Option<u32>)> + '_ {
+        (0u32..)
+            .zip(self.table(kind))
+            .filter(|&(old, new)| *new != Some(old))
+            .map(|(old, new)| (old, *new))
+    }
+
     /// Whether no id changed.
     pub fn is_identity(&self) -> bool {
         ElementKind::ALL.into_iter().all(|kind| {

@@ -264,6 +264,26 @@ impl Operation {
         }
     }
 
+    /// The library algorithm that traces the operation record by record,
+    /// in each structure's edits file (`half-edge-edits.alg`,
+    /// `winged-edge-edits.alg`), taking the same ids in the same order
+    /// (MEV's one edge given twice). Tests hold the two to identical tables.
+    pub fn algorithm(self) -> &'static str {
+        match self {
+            Self::FlipEdge => "flipEdge",
+            Self::SplitEdge => "splitEdge",
+            Self::SplitFace => "splitFace",
+            Self::CollapseEdge => "collapseEdge",
+            Self::RemoveVertex => "removeVertex",
+            Self::Mev => "mev",
+            Self::Mef => "mef",
+            Self::Kev => "kev",
+            Self::Kef => "kef",
+            Self::Kemr => "kemr",
+            Self::Mekr => "mekr",
+        }
+    }
+
     /// The ids the operation takes, in order.
     pub fn arguments(self) -> &'static [Argument] {
         match self {

@@ -430,6 +430,17 @@ impl Column {
             .map(|(name, _, _)| name)
     }
 
+    /// The canonical (non-alias) lookup names valid on `kind` in
+    /// `structure`, for hints.
+    pub fn canonical_names_for(structure: Structure, kind: ElementKind) -> Vec<&'static str> {
+        Self::language_names_for(structure, kind)
+            .filter(|&name| {
+                Self::resolve(structure, kind, name)
+                    .is_ok_and(|column| column.language_name() == Some(name))
+            })
+            .collect()
+    }
+
     /// Every lookup name of either structure.
     pub fn all_language_names() -> impl Iterator<Item = &'static str> {
         language_names().map(|(name, _, _)| name)
