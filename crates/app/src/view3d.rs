@@ -243,6 +243,8 @@ pub struct View3d {
     /// Elements with a colour or label, for the labels pass.
     highlighted: Vec<ElementRef>,
     last_aspect: f32,
+    /// Where the view was drawn last, for [`Self::screen_position`].
+    last_viewport: Option<Rect>,
     frame_pending: bool,
     hover: Option<(HoverKey, Option<ElementRef>)>,
     gpu: Option<GpuLink>,
@@ -271,6 +273,7 @@ impl View3d {
             styles_key: None,
             highlighted: Vec::new(),
             last_aspect: 1.5,
+            last_viewport: None,
             frame_pending: false,
             hover: None,
             gpu,
@@ -355,6 +358,15 @@ impl View3d {
         self.scene.anchor(pick)
     }
 
+    /// Where an element's anchor (a vertex, an edge's middle, a face's
+    /// centre) was on screen in the last frame drawn, in points; `None` if
+    /// it is behind the eye, off the view, or not drawn yet.
+    pub fn screen_position(&self, element: ElementRef) -> Option<egui::Pos2> {
+        let viewport = self.last_viewport?;
+        let (at, _) = self.transforms(viewport).project(self.anchor(element)?)?;
+        viewport.contains(at).then_some(at)
+    }
+
     /// Draws the view filling `ui`'s available rect and handles camera input
     /// and picking.
     pub fn ui(
@@ -368,6 +380,7 @@ impl View3d {
             return ViewResponse::default();
         }
         self.last_aspect = rect.aspect_ratio();
+        self.last_viewport = Some(rect);
         if self.frame_pending {
             self.frame_all();
             self.frame_pending = false;

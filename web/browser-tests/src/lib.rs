@@ -249,6 +249,73 @@ impl Browser {
             .with_context(|| format!("CDP command {command} failed"))
     }
 
+    /// Clicks with `button` (`"left"`, `"right"`) at `(x, y)` CSS pixels of
+    /// the page, as a real mouse does: moved, pressed, released.
+    pub async fn click_at(&self, x: f64, y: f64, button: &str) -> anyhow::Result<()> {
+        self.cdp(
+            "Input.dispatchMouseEvent",
+            json!({ "type": "mouseMoved", "x": x, "y": y }),
+        )
+        .await?;
+        for kind in ["mousePressed", "mouseReleased"] {
+            self.cdp(
+                "Input.dispatchMouseEvent",
+                json!({ "type": kind, "x": x, "y": y, "button": button, "clickCount": 1 }),
+            )
+            .await?;
+        }
+        Ok(())
+    }
+
+    /// Where the app draws an element, in CSS pixels of the page: its
+    /// `screenPosition` plus the canvas's offset; `None` if not in view.
+    pub async fn element_at(&self, kind: &str, id: u32) -> anyhow::Result<Option<(f64, f64)>> {
+        let at = self
+            .eval(&format!(
+                "const p = window.edgewise.screenPosition('{kind}', {id});
+                 if (!p) return null;
+                 const r = document.querySelector('canvas').getBoundingClientRect();
+                 return [r.left + p[0], r.top + p[1]];"
+            ))
+            .await?;
+        Ok(at
+            .as_array()
+            .and_then(|p| Some((p.first()?.as_f64()?, p.get(1)?.as_f64()?))))
+    }
+
+    /// Presses and releases a key (`"Enter"`, `"e"`, `"z"`), with
+    /// `modifiers` as CDP counts them (2 is Ctrl, 8 is Shift).
+    pub async fn press_key(&self, key: &str, modifiers: u32) -> anyhow::Result<()> {
+        let code = match key {
+            "Enter" => "Enter".to_owned(),
+            "Escape" => "Escape".to_owned(),
+            other => format!("Key{}", other.to_uppercase()),
+        };
+        let key_code = match key {
+            "Enter" => 13,
+            "Escape" => 27,
+            other => u32::from(other.to_ascii_uppercase().bytes().next().unwrap_or(b'A')),
+        };
+        let text = if key.len() == 1 && modifiers == 0 {
+            key
+        } else {
+            ""
+        };
+        self.cdp(
+            "Input.dispatchKeyEvent",
+            json!({ "type": "keyDown", "key": key, "code": code, "text": text,
+                    "windowsVirtualKeyCode": key_code, "modifiers": modifiers }),
+        )
+        .await?;
+        self.cdp(
+            "Input.dispatchKeyEvent",
+            json!({ "type": "keyUp", "key": key, "code": code,
+                    "windowsVirtualKeyCode": key_code, "modifiers": modifiers }),
+        )
+        .await?;
+        Ok(())
+    }
+
     /// Makes every request whose URL matches one of `patterns` (with `*`
     /// wildcards) fail, as a broken network or a bad deploy would.
     pub async fn block_urls(&self, patterns: &[&str]) -> anyhow::Result<()> {

@@ -313,4 +313,13 @@ impl EdgewiseApp {
     pub fn set_side_by_side(&mut self, on: bool) -> Result<(), CommandError> {
         self.execute(Command::SetSideBySide(on)).map(drop)
     }
+
+    /// Where `element` is in the 3D view, in CSS pixels from the canvas's
+    /// top left, as of the last frame: for pointer events and for pages
+    /// that point at an element. `None` if it is not in view.
+    pub fn screen_position(&self, element: ElementRef) -> Option<[f32; 2]> {
+        let zoom = self.ctx.as_ref().map_or(1.0, egui::Context::zoom_factor);
+        let at = self.tab().view.screen_position(element)?;
+        Some([at.x * zoom, at.y * zoom])
+    }
 }

@@ -58,16 +58,7 @@ const COMMANDS: &[CommandEntry] = &[
     CommandEntry {
         name: "select",
         call: "select(kind, id)",
-        read: |call, kind, id| {
-            let kind = kind
-                .as_string()
-                .and_then(|k| ElementKind::parse(&k))
-                .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
-            let id = whole_number(call, "id", id)?;
-            let id = u32::try_from(id)
-                .map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
-            Ok(Command::Select(Some(ElementRef::new(kind, id))))
-        },
+        read: |call, kind, id| Ok(Command::Select(Some(read_element(call, kind, id)?))),
     },
     CommandEntry {
         name: "clearSelection",
@@ -202,22 +193,22 @@ const COMMANDS: &[CommandEntry] = &[
 /// A query of the API: its name and how it answers.
 struct QueryEntry {
     name: &'static str,
-    answer: fn(&eframe::WebRunner, &JsValue) -> Result<JsValue, JsValue>,
+    answer: fn(&eframe::WebRunner, &JsValue, &JsValue) -> Result<JsValue, JsValue>,
 }
 
 /// Every query.
 const QUERIES: &[QueryEntry] = &[
     QueryEntry {
         name: "state",
-        answer: |runner, _| json(runner, |app| serde_json::to_string(&app.state())),
+        answer: |runner, _, _| json(runner, |app| serde_json::to_string(&app.state())),
     },
     QueryEntry {
         name: "algorithms",
-        answer: |runner, _| json(runner, |app| serde_json::to_string(&app.algorithm_list())),
+        answer: |runner, _, _| json(runner, |app| serde_json::to_string(&app.algorithm_list())),
     },
     QueryEntry {
         name: "shareUrl",
-        answer: |runner, _| {
+        answer: |runner, _, _| {
             let base = crate::platform::page_base();
             with_app(runner, |app| app.share_url(&base))?
                 .map(|url| JsValue::from_str(&url))
@@ -226,7 +217,16 @@ const QUERIES: &[QueryEntry] = &[
     },
     QueryEntry {
         name: "exportMesh",
-        answer: |runner, format| Ok(export(runner, format).into()),
+        answer: |runner, format, _| Ok(export(runner, format).into()),
+    },
+    QueryEntry {
+        name: "screenPosition",
+        answer: |runner, kind, id| {
+            let element = read_element("screenPosition(kind, id)", kind, id)
+                .map_err(|message| JsValue::from(js_sys::Error::new(&message)))?;
+            let position = with_app(runner, |app| app.screen_position(element))?;
+            json(runner, |_| serde_json::to_string(&position))
+        },
     },
 ];
 
@@ -271,13 +271,7 @@ fn read_set_cell(
     value: &JsValue,
 ) -> Result<Command, String> {
     const CALL: &str = "setCell(kind, id, column, value)";
-    let kind = kind
-        .as_string()
-        .and_then(|k| ElementKind::parse(&k))
-        .ok_or_else(|| expected(CALL, "kind", "'vertex', 'edge' or 'face'", kind))?;
-    let element_id = whole_number(CALL, "id", id)?;
-    let element_id = u32::try_from(element_id)
-        .map_err(|_| format!("{CALL}: id {element_id} is larger than any element id"))?;
+    let element = read_element(CALL, kind, id)?;
     let column = text_argument(CALL, "column", column, MAX_NAME_CHARS)?;
     let target = if value.is_null() {
         None
@@ -290,10 +284,22 @@ fn read_set_cell(
         )
     };
     Ok(Command::SetCell {
-        element: ElementRef::new(kind, element_id),
+        element,
         column,
         target,
     })
+}
+
+/// An element named by its kind (`'vertex'`, `'edge'`, `'face'`) and id.
+fn read_element(call: &str, kind: &JsValue, id: &JsValue) -> Result<ElementRef, String> {
+    let kind = kind
+        .as_string()
+        .and_then(|k| ElementKind::parse(&k))
+        .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
+    let id = whole_number(call, "id", id)?;
+    let id =
+        u32::try_from(id).map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
+    Ok(ElementRef::new(kind, id))
 }
 
 /// The most ids an operation takes (MEKR: a face and two vertices).
@@ -381,8 +387,8 @@ pub(super) fn install(runner: &eframe::WebRunner) -> Result<(), JsValue> {
     set_fn(&api, "setCell", &set_cell.into_js_value())?;
     for entry in QUERIES {
         let runner = runner.clone();
-        let function = Closure::<dyn Fn(JsValue) -> Result<JsValue, JsValue>>::new(
-            move |argument: JsValue| (entry.answer)(&runner, &argument),
+        let function = Closure::<dyn Fn(JsValue, JsValue) -> Result<JsValue, JsValue>>::new(
+            move |first: JsValue, second: JsValue| (entry.answer)(&runner, &first, &second),
         );
         set_fn(&api, entry.name, &function.into_js_value())?;
     }
