@@ -255,6 +255,9 @@ impl EdgewiseApp {
 
     /// [`Command::Select`].
     fn set_selection(&mut self, element: Option<ElementRef>) -> Result<(), CommandError> {
+        if element.is_some() {
+            self.tab_mut().last_changes.clear();
+        }
         let Some(document) = &mut self.tab_mut().document else {
             return match element {
                 Some(_) => Err("no mesh is open".into()),
@@ -466,6 +469,9 @@ impl EdgewiseApp {
             Some(frame) => frame.into_owned().paint,
             None => Paint::from_selection(document.highlights(), &self.theme),
         };
+        if document.selection().is_none() && tab.run.session().is_none() {
+            paint.add_changes(&tab.last_changes, &self.theme);
+        }
         if !tab.broken.is_empty() {
             paint.add_broken(&tab.broken, &self.theme);
         }

@@ -12,7 +12,7 @@ use crate::{
     theme::Theme,
     trace_role::TraceRole,
 };
-use edgewise_core::mesh::Issue;
+use edgewise_core::mesh::{Change, Issue};
 
 /// One coloured element and why, for the views and `state().highlights`.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,6 +42,9 @@ pub struct Paint {
     pub struck: HashMap<(ElementRef, Role), String>,
     /// The rules each broken record breaks, one line each.
     pub broken: HashMap<ElementRef, Vec<String>>,
+    /// The selected element, or the current operation's first: its row in
+    /// the tables is shown selected.
+    pub focus: Option<ElementRef>,
 }
 
 impl Paint {
@@ -56,6 +59,7 @@ impl Paint {
         let Some(selected) = highlights.first() else {
             return paint;
         };
+        paint.focus = Some(selected.element);
         for h in highlights {
             let colour = theme.role_colour(h.role);
             paint.painted.push(Painted {
@@ -114,6 +118,46 @@ impl Paint {
             });
             self.labels.insert(element, "deleted".to_owned());
         }
+    }
+
+    /// What an applied operation changed, until something else is chosen:
+    /// each written cell tinted with its old value struck through, written
+    /// rows and new rows in their trace colours.
+    pub fn add_changes(&mut self, journal: &[Change], theme: &Theme) {
+        let mut push = |element: ElementRef, role: TraceRole| {
+            if !self.painted.iter().any(|p| p.element == element) {
+                self.painted.push(Painted {
+                    element,
+                    colour: theme.trace_colour(role),
+                    role: role.key().to_owned(),
+                });
+            }
+        };
+        let mut struck = Vec::new();
+        for change in journal {
+            match *change {
+                Change::Create(element) => push(element, TraceRole::Created),
+                Change::Reference {
+                    element,
+                    column,
+                    old,
+                    ..
+                } => {
+                    push(element, TraceRole::Written);
+                    let old = old.map_or_else(|| "∅".to_owned(), |e| e.id.to_string());
+                    struck.push(((element, Role::Column(column)), old));
+                }
+                Change::Position { vertex, .. } => push(vertex.into(), TraceRole::Written),
+                Change::Delete(_) => {}
+            }
+        }
+        let colour = theme.trace_colour(TraceRole::Written);
+        for (cell, old) in struck {
+            self.cells.insert(cell, colour);
+            // The value before the operation: the first write's old value.
+            self.struck.entry(cell).or_insert(old);
+        }
+        self.fade_others = true;
     }
 
     /// The colour of `element`, if it is painted.

@@ -10,7 +10,7 @@ use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
 use egui::RichText;
 use egui_extras::TableBuilder;
 
-use crate::{paint::Paint, selection::Role, trace_role::TraceRole};
+use crate::{paint::Paint, selection::Role};
 
 const ROW_HEIGHT: f32 = 20.0;
 /// Shown for a missing (boundary) face.
@@ -123,13 +123,7 @@ pub fn table_ui(
                 let id = row.index() as u32;
                 let element = ElementRef { kind, id };
                 let row_colour = paint.colour_of(element);
-                // The first entry is the selection or the current operation;
-                // marks for broken and deleted rows are not.
-                let selected_row = paint.painted.first().is_some_and(|p| {
-                    p.element == element
-                        && p.role != TraceRole::Broken.key()
-                        && p.role != TraceRole::Deleted.key()
-                });
+                let selected_row = paint.focus == Some(element);
                 let mut cells = row_cells(mesh, element);
                 if let (Some(last), Some(labels)) = (cells.last_mut(), paint.labels.get(&element)) {
                     *last = Cell::Text(labels.clone());

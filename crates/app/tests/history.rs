@@ -336,6 +336,19 @@ fn the_edit_menu_offers_what_applies_and_says_why_the_rest_is_refused() {
     );
     let stats = state.stats.expect("stats");
     assert_eq!((stats.vertices, stats.edges, stats.faces), (8, 14, 7));
+    // What the split wrote and made stays marked until the next click.
+    let roles: Vec<&str> = state.highlights.iter().map(|h| h.role.as_str()).collect();
+    assert!(
+        roles.contains(&"written") && roles.contains(&"created"),
+        "{roles:?}"
+    );
+    harness.snapshot("edit_menu_split_applied");
+    harness
+        .state_mut()
+        .select(Some(ElementRef::new(ElementKind::Vertex, 7)))
+        .expect("selects the new vertex");
+    let state = harness.state().state();
+    assert!(state.highlights.iter().all(|h| h.role != "written"));
 }
 
 #[test]

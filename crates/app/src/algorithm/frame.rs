@@ -215,6 +215,7 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
             _ => {}
         }
     }
+    paint.focus = paint.painted.first().map(|p| p.element);
     for &element in &highlighted {
         push(&mut paint, element, TraceRole::Highlighted);
     }

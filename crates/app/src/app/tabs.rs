@@ -6,7 +6,7 @@ use std::borrow::Cow;
 use std::cell::RefCell;
 
 use edgewise_core::mesh::{
-    Edit as _, Issue, Mesh, MeshStats, Renumbering, Structure,
+    Change, Edit as _, Issue, Mesh, MeshStats, Renumbering, Structure,
     operations::{self, Operation},
 };
 use edgewise_core::schema::{Column, ElementKind, ElementRef, NameError};
@@ -64,6 +64,9 @@ pub(crate) struct Tab {
     pub(crate) diagnosable: Option<(String, Vec<u8>)>,
     /// The edit menu, while it is open.
     pub(crate) edit_menu: Option<EditMenu>,
+    /// What the last operation applied by hand changed, shown until the
+    /// next selection or change.
+    pub(crate) last_changes: Vec<Change>,
     /// The statistics of the mesh with this mesh id.
     /// Kept in a cell so that `state()`, which only reads, shares it.
     stats: RefCell<Option<(u64, MeshStats)>>,
@@ -95,6 +98,7 @@ impl Tab {
             renumbering: None,
             diagnosable: None,
             edit_menu: None,
+            last_changes: Vec::new(),
             stats: RefCell::new(None),
         }
     }
@@ -199,17 +203,24 @@ impl Tab {
         Some(before)
     }
 
-    /// After the document's mesh changed: the view, the colours and the
-    /// algorithm run follow it.
+    /// After the document's mesh changed: the view and the colours follow
+    /// it.
     fn mesh_shown(&mut self) {
+        self.last_changes.clear();
         if let Some(document) = &self.document {
             self.structure = document.structure();
             self.view
                 .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
         }
-        self.run.mesh_changed();
         self.paint_key = None;
         self.error = None;
+    }
+
+    /// A change by hand: as [`Self::mesh_shown`], and a running algorithm,
+    /// whose trace no longer describes the mesh, stops.
+    fn mesh_changed_by_hand(&mut self) {
+        self.run.mesh_changed();
+        self.mesh_shown();
     }
 
     /// Refuses edits of a mesh whose tables are broken.
@@ -235,9 +246,13 @@ impl Tab {
         let mut mesh = self.sound()?.mesh().clone();
         let shown: Vec<String> = ids.iter().map(ToString::to_string).collect();
         let call = format!("{} {}", operation.name(), shown.join(" "));
-        operations::apply(&mut mesh, operation, ids)
+        let applied = operations::apply(&mut mesh, operation, ids)
             .map_err(|refusal| format!("{call}: {refusal}"))?;
+        self.run.mesh_changed();
         if let Some(before) = self.replace_mesh(mesh) {
+            // The view shows what the operation changed, nothing selected.
+            let _cleared = self.document.as_mut().map(|d| d.select(None));
+            self.last_changes = applied.journal;
             self.history.record(call, Kind::Edit, Some(before), false);
         }
         Ok(())
@@ -288,7 +303,7 @@ impl Tab {
         let before = self.document.replace(edited);
         self.history.record(label, Kind::Edit, before, false);
         self.diagnosis = self.diagnosis || !self.mesh_validates();
-        self.mesh_shown();
+        self.mesh_changed_by_hand();
         self.diagnose();
         Ok(())
     }
@@ -312,7 +327,7 @@ impl Tab {
         self.history
             .record("compact ids".to_owned(), Kind::Edit, before, false);
         self.renumbering = Some(renumbering);
-        self.mesh_shown();
+        self.mesh_changed_by_hand();
         Ok(())
     }
 
@@ -342,7 +357,7 @@ impl Tab {
     fn restored(&mut self) {
         self.renumbering = None;
         self.diagnosis = !self.mesh_validates();
-        self.mesh_shown();
+        self.mesh_changed_by_hand();
         self.diagnose();
     }
 
