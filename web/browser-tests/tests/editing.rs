@@ -61,6 +61,13 @@ async fn the_edit_menu_undo_redo_and_a_diagnosed_wing() -> anyhow::Result<()> {
     let state = browser.state().await?;
     assert_eq!(state["history"]["undo"][1], "flip-edge 2", "{state}");
     assert_eq!(state["error"], Value::Null);
+    // What the flip wrote stays marked, old values struck through.
+    let roles: Vec<&str> = state["highlights"]
+        .as_array()
+        .map(|h| h.iter().filter_map(|h| h["role"].as_str()).collect())
+        .unwrap_or_default();
+    assert!(roles.contains(&"written"), "{roles:?}");
+    browser.screenshot("edit-applied").await?;
 
     // Ctrl+Z takes it back; redo() makes it again; undo() again.
     browser.press_key("z", 2).await?;
