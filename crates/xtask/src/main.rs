@@ -45,6 +45,9 @@ enum Command {
     },
     /// Build dist/ and run only the browser tests.
     BrowserTest,
+    /// Build dist/, then measure it in headless Chromium beside a bare WebGL2
+    /// page drawing the same torus, and print the table (see README).
+    BenchWeb,
     /// Fuzz one target, or each in turn, with cargo-fuzz and libFuzzer (needs
     /// a nightly toolchain; see docs/reliability.md), then print the
     /// executions, seconds and crashes of each.
@@ -93,6 +96,10 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::BrowserTest => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::browser_tests(&root, &dist)
+        }
+        Command::BenchWeb => {
+            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            test::bench_web(&root, &dist)
         }
         Command::Fuzz {
             ref target,

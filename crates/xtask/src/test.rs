@@ -120,6 +120,36 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
     )
 }
 
+/// `cargo xtask bench-web`: serves dist/ and web/bench/, and runs the
+/// benchmark driver of the browser tests' crate, which prints the table.
+pub fn bench_web(root: &Path, dist: &Path) -> anyhow::Result<()> {
+    process::ensure_debian_packages(
+        "the web benchmark",
+        &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
+    )?;
+    let app = serve::serve_in_background(dist)?;
+    let baseline = serve::serve_in_background(&root.join("web/bench"))?;
+    eprintln!("==> benchmarking http://{app}/ beside http://{baseline}/baseline.html");
+    process::run(
+        "web benchmark",
+        cargo()
+            .current_dir(root)
+            .args([
+                "run",
+                "--locked",
+                "--package",
+                BROWSER_TESTS,
+                "--bin",
+                "bench_web",
+            ])
+            .env("EDGEWISE_URL", format!("http://{app}/"))
+            .env("EDGEWISE_BASELINE_URL", format!("http://{baseline}/"))
+            .env("EDGEWISE_DIST", dist)
+            .env("EDGEWISE_CHROMIUM", CHROMIUM)
+            .env("EDGEWISE_CHROMEDRIVER", CHROMEDRIVER),
+    )
+}
+
 /// How long each step took, printed at the end so slow steps stand out.
 #[derive(Default)]
 struct Timings(Vec<(&'static str, f64)>);

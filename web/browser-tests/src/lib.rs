@@ -316,6 +316,19 @@ impl Browser {
         Ok(())
     }
 
+    /// How long a script may run before WebDriver stops it (60 s unless
+    /// set): the benchmark waits out frames that take many seconds.
+    pub async fn set_script_timeout(&self, timeout: Duration) -> anyhow::Result<()> {
+        self.client
+            .update_timeouts(fantoccini::wd::TimeoutConfiguration::new(
+                Some(timeout),
+                Some(timeout),
+                Some(Duration::ZERO),
+            ))
+            .await
+            .context("cannot set the script timeout")
+    }
+
     /// Makes every request whose URL matches one of `patterns` (with `*`
     /// wildcards) fail, as a broken network or a bad deploy would.
     pub async fn block_urls(&self, patterns: &[&str]) -> anyhow::Result<()> {

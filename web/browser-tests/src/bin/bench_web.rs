@@ -1,0 +1,270 @@
+//! `cargo xtask bench-web`: the served release build in headless Chromium,
+//! driven through `window.edgewise` and pointer events, beside a bare WebGL2
+//! page drawing the same torus (web/bench/baseline.html). Prints one table.
+//!
+//! Environment (set by the xtask): `EDGEWISE_URL` (the app),
+//! `EDGEWISE_BASELINE_URL` (the baseline page), `EDGEWISE_DIST` (dist/, for
+//! the transfer sizes), `EDGEWISE_CHROMIUM` and `EDGEWISE_CHROMEDRIVER`.
+
+use std::io::Write as _;
+use std::path::Path;
+use std::time::Duration;
+
+use anyhow::Context as _;
+use edgewise_browser_tests::{Browser, LaunchOptions};
+use serde_json::{Value, json};
+
+/// How long each orbit is measured.
+const ORBIT_SECONDS: f64 = 4.0;
+
+/// Installed before any page script: when `window.edgewise` appears, and
+/// every long task (over 50 ms) on the main thread.
+const PROBE: &str = "
+  window.__bench = { readyAt: null, longTasks: [] };
+  const poll = setInterval(() => {
+    if (window.edgewise) { window.__bench.readyAt = performance.now(); clearInterval(poll); }
+  }, 5);
+  try {
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) {
+        window.__bench.longTasks.push([entry.startTime, entry.duration]);
+      }
+    }).observe({ type: 'longtask', buffered: true });
+  } catch (e) {}
+";
+
+/// Times an awaited API call in the page, up to the next painted frame,
+/// in milliseconds; also the longest main-thread task meanwhile.
+fn timed(call: &str) -> String {
+    format!(
+        "(async () => {{
+           const start = performance.now();
+           await {call};
+           await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+           const end = performance.now();
+           const longest = window.__bench.longTasks
+             .filter(([at, d]) => at + d >= start && at <= end)
+             .reduce((m, [, d]) => Math.max(m, d), 0);
+           return [end - start, longest];
+         }})()"
+    )
+}
+
+/// Drags across the middle of the canvas for `seconds`, one pointer move
+/// per animation frame, and counts the app's frames meanwhile.
+fn orbit(seconds: f64) -> String {
+    format!(
+        "(async () => {{
+           const canvas = document.querySelector('canvas');
+           const r = canvas.getBoundingClientRect();
+           const y = r.top + r.height * 0.4;
+           let x = r.left + r.width * 0.3;
+           const fire = (type, x, buttons) => {{
+             const init = {{ clientX: x, clientY: y, bubbles: true, cancelable: true,
+                            pointerId: 1, pointerType: 'mouse', isPrimary: true,
+                            button: 0, buttons }};
+             canvas.dispatchEvent(new PointerEvent('pointer' + type, init));
+             canvas.dispatchEvent(new MouseEvent('mouse' + type, init));
+           }};
+           fire('move', x, 0);
+           fire('down', x, 1);
+           const before = window.edgewise.state().frames;
+           const start = performance.now();
+           let step = 3;
+           while (performance.now() - start < {seconds} * 1000) {{
+             await new Promise((r) => requestAnimationFrame(r));
+             x += step;
+             if (x > r.left + r.width * 0.7 || x < r.left + r.width * 0.3) step = -step;
+             fire('move', x, 1);
+           }}
+           const frames = window.edgewise.state().frames - before;
+           const secs = (performance.now() - start) / 1000;
+           fire('up', x, 0);
+           return frames / secs;
+         }})()"
+    )
+}
+
+struct Row {
+    what: String,
+    app: String,
+    baseline: String,
+    note: String,
+}
+
+fn row(what: &str, app: String, baseline: &str, note: String) -> Row {
+    Row {
+        what: what.to_owned(),
+        app,
+        baseline: baseline.to_owned(),
+        note,
+    }
+}
+
+fn ms(value: &Value) -> String {
+    value
+        .as_f64()
+        .map_or_else(|| "–".to_owned(), |v| format!("{v:.0} ms"))
+}
+
+fn fps(value: &Value) -> String {
+    value
+        .as_f64()
+        .map_or_else(|| "–".to_owned(), |v| format!("{v:.1} frames/s"))
+}
+
+/// The bytes of every file in dist/, raw and gzipped (level 9).
+fn transfer(dist: &Path) -> anyhow::Result<(u64, u64)> {
+    let mut raw = 0;
+    let mut gzipped = 0;
+    for entry in std::fs::read_dir(dist).with_context(|| format!("{}", dist.display()))? {
+        let path = entry?.path();
+        if !path.is_file() {
+            continue;
+        }
+        let bytes = std::fs::read(&path)?;
+        raw += bytes.len() as u64;
+        let mut encoder = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+        encoder.write_all(&bytes)?;
+        gzipped += encoder.finish()?.len() as u64;
+    }
+    Ok((raw, gzipped))
+}
+
+#[tokio::main]
+async fn main() -> anyhow::Result<()> {
+    let baseline_url = std::env::var("EDGEWISE_BASELINE_URL").context("EDGEWISE_BASELINE_URL")?;
+    let dist = std::env::var("EDGEWISE_DIST").context("EDGEWISE_DIST")?;
+    let window_size = (1280, 800);
+    let mut rows = Vec::new();
+
+    // The baseline first: its frame rate on torus-200k.
+    let baseline = Browser::launch_with(LaunchOptions {
+        window_size,
+        base_url: Some(baseline_url),
+        ..LaunchOptions::default()
+    })
+    .await?;
+    baseline.goto("baseline.html").await?;
+    baseline
+        .wait_for(
+            "window.baseline && window.baseline.frames > 3",
+            Duration::from_secs(120),
+        )
+        .await?;
+    let baseline_fps = baseline
+        .eval_async(&format!(
+            "(async () => {{
+               const before = window.baseline.frames, start = performance.now();
+               await new Promise((r) => setTimeout(r, {ORBIT_SECONDS} * 1000));
+               return (window.baseline.frames - before) / ((performance.now() - start) / 1000);
+             }})()"
+        ))
+        .await?;
+    baseline.close().await?;
+
+    let app = Browser::launch_with(LaunchOptions {
+        window_size,
+        ..LaunchOptions::default()
+    })
+    .await?;
+    // A frame of the 3D view on torus-200k can take many seconds on the
+    // software renderer: wait for it rather than fail.
+    app.set_script_timeout(Duration::from_secs(600)).await?;
+    app.cdp(
+        "Page.addScriptToEvaluateOnNewDocument",
+        json!({ "source": PROBE }),
+    )
+    .await?;
+    app.open("").await?;
+    app.wait_for("window.__bench.readyAt !== null", Duration::from_secs(120))
+        .await?;
+    let ready = app.eval("return window.__bench.readyAt;").await?;
+    rows.push(row(
+        "start-up to window.edgewise",
+        ms(&ready),
+        "",
+        "from navigation start".to_owned(),
+    ));
+
+    let mut torus_fps = Value::Null;
+    for sample in ["cube", "icosphere-20k", "torus-200k"] {
+        let loaded = app
+            .eval_async(&timed(&format!(
+                "window.edgewise.loadSample('{sample}', {{ structure: 'half' }})"
+            )))
+            .await?;
+        if sample == "torus-200k" {
+            rows.push(row(
+                "torus-200k: load (half-edge)",
+                ms(&loaded[0]),
+                "",
+                format!("longest task {}", ms(&loaded[1])),
+            ));
+        }
+        let rate = app.eval_async(&orbit(ORBIT_SECONDS)).await?;
+        let baseline_cell = if sample == "torus-200k" {
+            torus_fps = rate.clone();
+            fps(&baseline_fps)
+        } else {
+            String::new()
+        };
+        rows.push(row(
+            &format!("orbit {sample}"),
+            fps(&rate),
+            &baseline_cell,
+            String::new(),
+        ));
+    }
+    if let (Some(app_fps), Some(base)) = (torus_fps.as_f64(), baseline_fps.as_f64())
+        && app_fps > 0.0
+    {
+        rows.push(row(
+            "torus-200k frame time, app ÷ baseline",
+            format!("{:.1}×", base / app_fps),
+            "1×",
+            "goal: at most 2×".to_owned(),
+        ));
+    }
+
+    for (what, call) in [
+        (
+            "torus-200k: select an edge",
+            "window.edgewise.select('edge', 1000)",
+        ),
+        (
+            "torus-200k: convert to winged-edge",
+            "window.edgewise.setStructure('winged')",
+        ),
+        (
+            "torus-200k: run vertexStar (records the trace)",
+            "window.edgewise.run('vertexStar', { v: 0 })",
+        ),
+        ("torus-200k: one step", "window.edgewise.step(1)"),
+        ("torus-200k: another step", "window.edgewise.step(1)"),
+    ] {
+        let taken = app.eval_async(&timed(call)).await?;
+        rows.push(row(
+            what,
+            ms(&taken[0]),
+            "",
+            format!("longest task {}", ms(&taken[1])),
+        ));
+    }
+    app.close().await?;
+
+    let (raw, gzipped) = transfer(Path::new(&dist))?;
+    rows.push(row(
+        "transfer: dist/ raw, gzipped",
+        format!("{:.1} MB", raw as f64 / 1e6),
+        "",
+        format!("{:.1} MB gzipped (level 9)", gzipped as f64 / 1e6),
+    ));
+
+    println!("| measure | app | bare WebGL2 | note |");
+    println!("| --- | --- | --- | --- |");
+    for r in rows {
+        println!("| {} | {} | {} | {} |", r.what, r.app, r.baseline, r.note);
+    }
+    Ok(())
+}
