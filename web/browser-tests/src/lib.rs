@@ -316,7 +316,7 @@ impl Browser {
         Ok(())
     }
 
-    /// How long a script may run before WebDriver stops it (60 s unless
+    /// How long a script may run before the driver stops it (60 s unless
     /// set): the benchmark waits out frames that take many seconds.
     pub async fn set_script_timeout(&self, timeout: Duration) -> anyhow::Result<()> {
         self.client
