@@ -27,6 +27,15 @@ fn flip_edge() -> Arc<Algorithm> {
     Arc::clone(program.algorithm("flipEdge").expect("shipped"))
 }
 
+/// Runs an editing algorithm, recording its trace, then steps the mesh back
+/// to where it was; gives the number of steps.
+fn traced_then_back(algorithm: &Arc<Algorithm>, mesh: &mut Mesh, input: (&str, Value)) -> usize {
+    let trace =
+        lang::run_editing(algorithm, mesh, &[input], RunOptions::default()).expect("inputs fit");
+    trace.seek(mesh, trace.changes().len(), 0).expect("reverts");
+    black_box(trace.len())
+}
+
 fn edits(c: &mut Criterion) {
     let (torus, _) = HalfEdgeMesh::build(&generate::torus(316, 316)).expect("the torus builds");
     let mut mesh = Mesh::Half(torus);
@@ -51,19 +60,7 @@ fn edits(c: &mut Criterion) {
 
     let algorithm = flip_edge();
     group.bench_function("traced flipEdge (run_editing)", |b| {
-        b.iter(|| {
-            let trace = lang::run_editing(
-                &algorithm,
-                &mut mesh,
-                &[("h", Value::Edge(edge))],
-                RunOptions::default(),
-            )
-            .expect("inputs fit");
-            trace
-                .seek(&mut mesh, trace.changes().len(), 0)
-                .expect("reverts");
-            black_box(trace.len())
-        });
+        b.iter(|| traced_then_back(&algorithm, &mut mesh, ("h", Value::Edge(edge))));
     });
 
     let trace = lang::run_editing(
@@ -99,19 +96,7 @@ fn subdivision(c: &mut Criterion) {
     let mut group = c.benchmark_group("edits/torus-576");
     group.sample_size(10);
     group.bench_function("traced loopSubdivide, then stepped back", |b| {
-        b.iter(|| {
-            let trace = lang::run_editing(
-                &algorithm,
-                &mut mesh,
-                &[("f", Value::Face(0))],
-                RunOptions::default(),
-            )
-            .expect("inputs fit");
-            trace
-                .seek(&mut mesh, trace.changes().len(), 0)
-                .expect("reverts");
-            black_box(trace.len())
-        });
+        b.iter(|| traced_then_back(&algorithm, &mut mesh, ("f", Value::Face(0))));
     });
     group.finish();
 }

@@ -214,18 +214,24 @@ impl Operation {
 
     /// The command-line name: `flip-edge`, `mev`.
     pub fn name(self) -> &'static str {
+        self.names().0
+    }
+
+    /// The command-line name, and the library algorithm that traces the
+    /// operation.
+    fn names(self) -> (&'static str, &'static str) {
         match self {
-            Self::FlipEdge => "flip-edge",
-            Self::SplitEdge => "split-edge",
-            Self::SplitFace => "split-face",
-            Self::CollapseEdge => "collapse-edge",
-            Self::RemoveVertex => "remove-vertex",
-            Self::Mev => "mev",
-            Self::Mef => "mef",
-            Self::Kev => "kev",
-            Self::Kef => "kef",
-            Self::Kemr => "kemr",
-            Self::Mekr => "mekr",
+            Self::FlipEdge => ("flip-edge", "flipEdge"),
+            Self::SplitEdge => ("split-edge", "splitEdge"),
+            Self::SplitFace => ("split-face", "splitFace"),
+            Self::CollapseEdge => ("collapse-edge", "collapseEdge"),
+            Self::RemoveVertex => ("remove-vertex", "removeVertex"),
+            Self::Mev => ("mev", "mev"),
+            Self::Mef => ("mef", "mef"),
+            Self::Kev => ("kev", "kev"),
+            Self::Kef => ("kef", "kef"),
+            Self::Kemr => ("kemr", "kemr"),
+            Self::Mekr => ("mekr", "mekr"),
         }
     }
 
@@ -269,19 +275,7 @@ impl Operation {
     /// `winged-edge-edits.alg`), taking the same ids in the same order
     /// (MEV's one edge given twice). Tests hold the two to identical tables.
     pub fn algorithm(self) -> &'static str {
-        match self {
-            Self::FlipEdge => "flipEdge",
-            Self::SplitEdge => "splitEdge",
-            Self::SplitFace => "splitFace",
-            Self::CollapseEdge => "collapseEdge",
-            Self::RemoveVertex => "removeVertex",
-            Self::Mev => "mev",
-            Self::Mef => "mef",
-            Self::Kev => "kev",
-            Self::Kef => "kef",
-            Self::Kemr => "kemr",
-            Self::Mekr => "mekr",
-        }
+        self.names().1
     }
 
     /// The ids the operation takes, in order.
