@@ -334,19 +334,19 @@ impl Tab {
     /// Takes back the last load or edit.
     pub(crate) fn undo(&mut self) -> Result<(), CommandError> {
         let label = self.history.undo(&mut self.document);
-        self.restored("undid", label.ok_or("nothing to undo")?);
+        self.restored("undid", &label.ok_or("nothing to undo")?);
         Ok(())
     }
 
     /// Makes the last undone change again.
     pub(crate) fn redo(&mut self) -> Result<(), CommandError> {
         let label = self.history.redo(&mut self.document);
-        self.restored("redid", label.ok_or("nothing to redo")?);
+        self.restored("redid", &label.ok_or("nothing to redo")?);
         Ok(())
     }
 
     /// After an undo or redo put a document from the history in place.
-    fn restored(&mut self, what: &str, label: String) {
+    fn restored(&mut self, what: &str, label: &str) {
         log::info!("{what} {label}");
         self.renumbering = None;
         self.diagnosis = !self.mesh_validates();
