@@ -422,6 +422,7 @@ impl EdgewiseApp {
             history: self.tab().history.state(),
             renumbering: self.tab().renumbering.as_ref().map(RenumberingState::new),
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
+            coarse_view: self.tab().view.coarse(),
             stats: self.tab().stats().as_ref().map(StatsState::new),
             trace: self.trace_state(),
             pending: self.pending_state(),

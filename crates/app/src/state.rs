@@ -42,6 +42,11 @@ pub struct AppState {
     pub history: HistoryState,
     /// The old-to-new ids of the last compacting, until dismissed.
     pub renumbering: Option<RenumberingState>,
+    /// Whether the 3D view's last frame was drawn at the coarse level of
+    /// detail: edges as lines and no vertex spheres, highlighted elements
+    /// in full (a dense mesh seen from afar).
+    #[serde(rename = "coarseView")]
+    pub coarse_view: bool,
     /// The edit menu, while it is open: what it offers, and why each
     /// greyed-out entry is refused.
     #[serde(rename = "editMenu")]

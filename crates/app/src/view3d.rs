@@ -21,6 +21,7 @@ mod camera;
 mod faces;
 mod gpu;
 mod labels;
+mod lines;
 mod orientation;
 mod picking;
 mod renderer;
@@ -45,6 +46,15 @@ use gpu::FrameUniform;
 use picking::{PickAccel, PickQuery};
 use renderer::{DrawFlags, GeometryUpload, Renderers, StyleUpload, UploadState, ViewCallback};
 use scene::Scene;
+
+/// Edges shorter than this many points on screen (the mean edge, at the
+/// mesh's centre) are drawn as lines, without vertex spheres: arrows that
+/// small show no direction, and cost a software renderer 36 triangles each.
+pub const COARSE_BELOW_POINTS: f32 = 6.0;
+
+/// Meshes of at most this many edges (or half-edges) always draw in full:
+/// they are cheap at any size.
+pub const COARSE_ABOVE_EDGES: usize = 3_000;
 
 /// The mesh as the view draws it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -243,6 +253,8 @@ pub struct View3d {
     /// Elements with a colour or label, for the labels pass.
     highlighted: Vec<ElementRef>,
     last_aspect: f32,
+    /// Whether the last frame drew the coarse level of detail.
+    coarse: bool,
     /// Where the view was drawn last, for [`Self::screen_position`].
     last_viewport: Option<Rect>,
     frame_pending: bool,
@@ -273,6 +285,7 @@ impl View3d {
             styles_key: None,
             highlighted: Vec::new(),
             last_aspect: 1.5,
+            coarse: false,
             last_viewport: None,
             frame_pending: false,
             hover: None,
@@ -358,6 +371,24 @@ impl View3d {
         self.scene.anchor(pick)
     }
 
+    /// Whether the last frame drew the coarse level of detail: edges as
+    /// lines, no vertex spheres, highlighted elements in full.
+    pub fn coarse(&self) -> bool {
+        self.coarse
+    }
+
+    /// Whether the mesh's edges are so small on screen, and so many, that
+    /// arrows and spheres would cost far more than they show: the mean edge
+    /// at the mesh's centre under [`COARSE_BELOW_POINTS`] long, and more
+    /// than [`COARSE_ABOVE_EDGES`] edges.
+    fn is_small_on_screen(&self, transforms: &ViewTransforms) -> bool {
+        if self.scene.edge_count() <= COARSE_ABOVE_EDGES {
+            return false;
+        }
+        let distance = (self.scene.center - transforms.eye).length();
+        self.scene.unit < COARSE_BELOW_POINTS * transforms.world_per_point(distance)
+    }
+
     /// Where an element's anchor (a vertex, an edge's middle, a face's
     /// centre) was on screen in the last frame drawn, in points; `None` if
     /// it is behind the eye, off the view, or not drawn yet.
@@ -390,6 +421,7 @@ impl View3d {
         self.update_styles(styles, options.dark, &palette);
 
         let transforms = self.transforms(rect);
+        self.coarse = self.is_small_on_screen(&transforms);
         let sizes = self.scene.sizes(options.mesh_scale);
         let query = PickQuery {
             scene: &self.scene,
@@ -618,6 +650,7 @@ impl View3d {
                 axes: options.show_axes,
                 orientation: options.show_orientation,
                 solid_faces: options.solid_faces,
+                coarse: self.coarse,
             },
             uploaded: gpu.uploaded.clone(),
         };

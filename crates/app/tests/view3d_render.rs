@@ -379,3 +379,61 @@ fn torus_20k_faces() {
     let middle = close.pixel(450, 320);
     assert_ne!(middle, image.pixel(0, 0), "nothing drawn in the close-up");
 }
+
+/// A mesh whose edges are a few pixels long is drawn coarse: edges as lines,
+/// no vertex spheres, but the highlighted vertex and edge in full. Closer
+/// up, the full arrows and spheres return.
+#[test]
+fn a_dense_mesh_far_away_is_drawn_coarse_with_its_highlights_in_full() {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [640, 480]);
+    let geometry = geometry(&generate::torus(200, 200), Structure::HalfEdge);
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    let mut styles = styles_for(&geometry);
+    styles.vertices[0] = ElementStyle {
+        colour: Some(PURPLE),
+        faded: false,
+        label: Some("0: Selected Vertex".to_owned()),
+    };
+    styles.edges[0] = ElementStyle {
+        colour: Some(GREEN),
+        faded: false,
+        label: None,
+    };
+    let options = ViewOptions::default();
+    let (far, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    far.save("torus_80k_coarse.png");
+    assert!(view.coarse(), "80k faces seen whole are drawn coarse");
+    let transforms = view.transforms(harness.screen());
+    let (at, _) = transforms
+        .project(geometry.positions[0])
+        .expect("vertex 0 is in view");
+    far.zoomed(at, 120, 3).save("torus_80k_coarse_zoom.png");
+    assert!(
+        far.any_near(at, 4, |p| is_near_colour(p, PURPLE, 70)),
+        "the highlighted vertex keeps its sphere: {:?}",
+        far.pixel(at.x as u32, at.y as u32)
+    );
+    // The wireframe is drawn: many pixels are neither background nor face.
+    let background = far.pixel(0, 0);
+    let drawn = (0..far.height)
+        .step_by(4)
+        .flat_map(|y| (0..far.width).step_by(4).map(move |x| (x, y)))
+        .filter(|&(x, y)| far.pixel(x, y) != background)
+        .count();
+    assert!(drawn > 2000, "only {drawn} sampled pixels drawn");
+
+    view.set_camera(Camera {
+        target: [1.35, 0.0, 0.0],
+        yaw: 1.2,
+        pitch: 0.3,
+        distance: 0.4,
+    });
+    let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
+    close.save("torus_80k_close.png");
+    assert!(!view.coarse(), "close up, arrows and spheres return");
+}

@@ -149,6 +149,7 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         buffers: &instanced_layouts::<ArrowVertex, ArrowInstance>(&template, &instance, &style),
         transparent: false,
         depth_bias: false,
+        lines: false,
     })
 }
 

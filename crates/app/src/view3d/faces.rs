@@ -84,6 +84,7 @@ fn pipelines(factory: &PipelineFactory<'_>) -> (wgpu::RenderPipeline, wgpu::Rend
         buffers: &buffers,
         transparent: true,
         depth_bias: true,
+        lines: false,
     });
     let solid = factory.create(&PipelineSpec {
         label: "view3d solid faces",
@@ -93,6 +94,7 @@ fn pipelines(factory: &PipelineFactory<'_>) -> (wgpu::RenderPipeline, wgpu::Rend
         buffers: &buffers,
         transparent: false,
         depth_bias: true,
+        lines: false,
     });
     (transparent, solid)
 }

@@ -120,6 +120,8 @@ pub struct PipelineSpec<'a> {
     pub transparent: bool,
     /// Pushed slightly back so edges lying on a face stay in front of it.
     pub depth_bias: bool,
+    /// A line list (two template points per line) instead of triangles.
+    pub lines: bool,
 }
 
 /// Creates pipelines (and their template buffers, through `device`) for one
@@ -181,7 +183,11 @@ impl<'a> PipelineFactory<'a> {
                     buffers: spec.buffers,
                 },
                 primitive: wgpu::PrimitiveState {
-                    topology: wgpu::PrimitiveTopology::TriangleList,
+                    topology: if spec.lines {
+                        wgpu::PrimitiveTopology::LineList
+                    } else {
+                        wgpu::PrimitiveTopology::TriangleList
+                    },
                     cull_mode: None,
                     ..Default::default()
                 },

@@ -161,5 +161,6 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         ],
         transparent: false,
         depth_bias: false,
+        lines: false,
     })
 }

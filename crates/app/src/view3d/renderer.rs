@@ -13,6 +13,7 @@ use super::faces::{FaceBuffers, FaceRenderer};
 use super::gpu::{
     FrameBindGroup, FrameUniform, PipelineFactory, StyleVertex, frame_bind_group_layout,
 };
+use super::lines::LineRenderer;
 use super::orientation::{MarkInstance, OrientationBuffers, OrientationRenderer};
 use super::spheres::{SphereBuffers, SphereInstance, SphereRenderer};
 
@@ -36,6 +37,10 @@ pub struct StyleUpload {
     pub edges: Vec<StyleVertex>,
     /// Three per triangle, like [`GeometryUpload::faces`].
     pub faces: Vec<StyleVertex>,
+    /// The highlighted vertices and edges again, drawn in full over the
+    /// coarse level of detail: instances, then styles.
+    pub full_spheres: (Vec<SphereInstance>, Vec<StyleVertex>),
+    pub full_arrows: (Vec<ArrowInstance>, Vec<StyleVertex>),
 }
 
 /// Tells the view which uploads the GPU side has taken, so it can drop its
@@ -52,6 +57,9 @@ pub struct DrawFlags {
     pub axes: bool,
     pub orientation: bool,
     pub solid_faces: bool,
+    /// The coarse level of detail: edges as lines and no vertex spheres,
+    /// but highlighted elements in full.
+    pub coarse: bool,
 }
 
 /// Every drawable's renderer, shared by all views, and each view's buffers;
@@ -60,6 +68,7 @@ pub struct Renderers {
     frame_layout: wgpu::BindGroupLayout,
     spheres: SphereRenderer,
     arrows: ArrowRenderer,
+    lines: LineRenderer,
     faces: FaceRenderer,
     orientation: OrientationRenderer,
     srgb_target: bool,
@@ -74,6 +83,7 @@ impl Renderers {
         Self {
             spheres: SphereRenderer::new(&factory),
             arrows: ArrowRenderer::new(&factory),
+            lines: LineRenderer::new(&factory),
             faces: FaceRenderer::new(&factory),
             orientation: OrientationRenderer::new(&factory),
             frame_layout,
@@ -109,6 +119,8 @@ struct ViewBuffers {
     faces: FaceBuffers,
     marks: OrientationBuffers,
     axes: ArrowBuffers,
+    full_spheres: SphereBuffers,
+    full_arrows: ArrowBuffers,
 }
 
 impl ViewBuffers {
@@ -122,6 +134,8 @@ impl ViewBuffers {
             faces: FaceBuffers::new("view3d faces", "view3d face styles"),
             marks: OrientationBuffers::default(),
             axes: ArrowBuffers::new("view3d axes", "view3d axes styles"),
+            full_spheres: SphereBuffers::new("view3d full spheres", "view3d full sphere styles"),
+            full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
         }
     }
 }
@@ -177,6 +191,14 @@ impl CallbackTrait for ViewCallback {
             view.spheres.write_styles(device, queue, &styles.vertices);
             view.arrows.write_styles(device, queue, &styles.edges);
             view.faces.write_styles(device, queue, &styles.faces);
+            view.full_spheres
+                .replace_elements(device, &styles.full_spheres.0);
+            view.full_spheres
+                .write_styles(device, queue, &styles.full_spheres.1);
+            view.full_arrows
+                .replace_elements(device, &styles.full_arrows.0);
+            view.full_arrows
+                .write_styles(device, queue, &styles.full_arrows.1);
             view.styles_id = styles.id;
             self.uploaded.styles.store(styles.id, Ordering::Release);
         }
@@ -211,8 +233,14 @@ impl CallbackTrait for ViewCallback {
         view.frame.bind(pass);
 
         // Opaque first: spheres, arrows, axes, orientation marks.
-        renderers.spheres.draw(pass, &view.spheres);
-        renderers.arrows.draw(pass, &view.arrows);
+        if self.flags.coarse {
+            renderers.lines.draw(pass, &view.arrows);
+            renderers.spheres.draw(pass, &view.full_spheres);
+            renderers.arrows.draw(pass, &view.full_arrows);
+        } else {
+            renderers.spheres.draw(pass, &view.spheres);
+            renderers.arrows.draw(pass, &view.arrows);
+        }
         if self.flags.axes {
             renderers.arrows.draw(pass, &view.axes);
         }

@@ -159,6 +159,7 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         buffers: &instanced_layouts::<[f32; 3], SphereInstance>(&template, &instance, &style),
         transparent: false,
         depth_bias: false,
+        lines: false,
     })
 }
 

@@ -4,9 +4,11 @@
 
 use egui::Color32;
 
+use super::arrows::ArrowInstance;
 use super::gpu::StyleVertex;
 use super::renderer::StyleUpload;
 use super::scene::Scene;
+use super::spheres::SphereInstance;
 use super::{ElementStyle, SceneStyles, faces};
 
 /// The view's own colours for one theme.
@@ -130,15 +132,49 @@ pub fn face_style(style: Option<&ElementStyle>, palette: &Palette) -> StyleVerte
 
 /// Every element's GPU style.
 pub fn build(scene: &Scene, styles: &SceneStyles, palette: &Palette, id: u64) -> StyleUpload {
+    let vertices: Vec<StyleVertex> = (0..scene.vertex_count())
+        .map(|v| line_style(styles.vertices.get(v), palette))
+        .collect();
+    let edges: Vec<StyleVertex> = (0..scene.edge_count())
+        .map(|e| line_style(styles.edges.get(e), palette))
+        .collect();
+    let highlighted = |list: &[ElementStyle], count: usize| -> Vec<usize> {
+        list.iter()
+            .take(count)
+            .enumerate()
+            .filter(|(_, s)| is_highlighted(s))
+            .map(|(i, _)| i)
+            .collect()
+    };
+    let full_spheres = highlighted(&styles.vertices, scene.vertex_count())
+        .into_iter()
+        .map(|v| {
+            let center = scene.position(u32::try_from(v).unwrap_or(u32::MAX));
+            (
+                SphereInstance {
+                    center: center.to_array(),
+                },
+                vertices[v],
+            )
+        })
+        .unzip();
+    let full_arrows = highlighted(&styles.edges, scene.edge_count())
+        .into_iter()
+        .map(|e| {
+            let instance = ArrowInstance {
+                start: scene.arrow_starts[e].to_array(),
+                end: scene.arrow_ends[e].to_array(),
+            };
+            (instance, edges[e])
+        })
+        .unzip();
     StyleUpload {
         id,
-        vertices: (0..scene.vertex_count())
-            .map(|v| line_style(styles.vertices.get(v), palette))
-            .collect(),
-        edges: (0..scene.edge_count())
-            .map(|e| line_style(styles.edges.get(e), palette))
-            .collect(),
+        vertices,
+        edges,
         faces: faces::corner_styles(scene, |f| face_style(styles.faces.get(f), palette)),
+        full_spheres,
+        full_arrows,
     }
 }
 
