@@ -93,12 +93,8 @@ fn the_format_documentation_quotes_real_output() {
         if line.ends_with("; read as unset") {
             let bytes = std::fs::read(root().join(format!("tests/bad-inputs/{file}")))
                 .expect("the quoted bad input");
-            let loaded = edgewise_core::formats::load_for_diagnosis(
-                &bytes,
-                file,
-                edgewise_core::mesh::Structure::HalfEdge,
-            )
-            .expect("opens for diagnosis");
+            let loaded = formats::load_for_diagnosis(&bytes, file, Structure::HalfEdge)
+                .expect("opens for diagnosis");
             assert!(
                 loaded
                     .warnings
