@@ -240,11 +240,9 @@ impl EdgewiseApp {
         tab.view
             .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
         let label = format!("open {}", document.name);
-        let broken = document.mesh().validate();
         let before = tab.document.replace(document);
         tab.history.record(label, Kind::Load, before, merge);
-        tab.diagnosis = !broken.is_empty();
-        tab.broken = broken;
+        tab.rediagnose();
         tab.diagnosable = None;
         tab.renumbering = None;
         tab.run.mesh_changed();

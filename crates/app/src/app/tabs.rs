@@ -146,16 +146,23 @@ impl Tab {
     /// Outside an editing trace, lists the broken records in diagnosis
     /// mode (none otherwise), and ends diagnosis once there are none.
     fn diagnose(&mut self) {
-        self.broken.clear();
-        if !self.diagnosis {
-            return;
+        if self.diagnosis {
+            self.rediagnose();
+        } else {
+            self.broken.clear();
         }
-        match &self.document {
-            Some(document) => self.broken = document.mesh().validate(),
-            None => self.diagnosis = false,
-        }
-        if self.broken.is_empty() {
-            self.diagnosis = false;
+    }
+
+    /// Checks every rule of the mesh after it changed by hand: diagnosis
+    /// lasts while any record breaks one.
+    pub(crate) fn rediagnose(&mut self) {
+        self.broken = self
+            .document
+            .as_ref()
+            .map(|d| d.mesh().validate())
+            .unwrap_or_default();
+        let was = std::mem::replace(&mut self.diagnosis, !self.broken.is_empty());
+        if was && !self.diagnosis {
             log::info!("the tables validate: diagnosis is over");
         }
     }
@@ -302,16 +309,9 @@ impl Tab {
             .map_err(|error| format!("{call}: {error}"))?;
         let before = self.document.replace(edited);
         self.history.record(label, Kind::Edit, before, false);
-        self.diagnosis = self.diagnosis || !self.mesh_validates();
         self.mesh_changed_by_hand();
-        self.diagnose();
+        self.rediagnose();
         Ok(())
-    }
-
-    fn mesh_validates(&self) -> bool {
-        self.document
-            .as_ref()
-            .is_none_or(|d| d.mesh().validate().is_empty())
     }
 
     /// Drops the deleted rows and renumbers the rest, undoably; the mapping
@@ -349,9 +349,8 @@ impl Tab {
     fn restored(&mut self, what: &str, label: &str) {
         log::info!("{what} {label}");
         self.renumbering = None;
-        self.diagnosis = !self.mesh_validates();
         self.mesh_changed_by_hand();
-        self.diagnose();
+        self.rediagnose();
     }
 
     /// The mesh an editing trace started from (the shown mesh otherwise):
