@@ -40,8 +40,9 @@ pub struct AppState {
     pub diagnosis: bool,
     /// What undo and redo would take back and make again, oldest first.
     pub history: HistoryState,
-    /// The old-to-new ids of the last compacting, until dismissed.
-    pub renumbering: Option<RenumberingState>,
+    /// The old-to-new ids of the last compacting, until dismissed: per
+    /// table, each old id's new id (`null`: deleted), indexed by old id.
+    pub renumbering: Option<Renumbering>,
     /// Whether the 3D view's last frame was drawn at the coarse level of
     /// detail: edges as lines and no vertex spheres, highlighted elements
     /// in full (a dense mesh seen from afar).
@@ -111,24 +112,6 @@ pub struct EditMenuEntry {
     pub ids: Vec<u32>,
     pub label: String,
     pub refused: Option<String>,
-}
-
-/// Per table, each old id's new id (`null`: deleted), indexed by old id.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct RenumberingState {
-    pub vertices: Vec<Option<u32>>,
-    pub edges: Vec<Option<u32>>,
-    pub faces: Vec<Option<u32>>,
-}
-
-impl RenumberingState {
-    pub fn new(renumbering: &Renumbering) -> Self {
-        Self {
-            vertices: renumbering.vertices.clone(),
-            edges: renumbering.edges.clone(),
-            faces: renumbering.faces.clone(),
-        }
-    }
 }
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]

@@ -171,6 +171,7 @@ impl fmt::Display for Change {
 
 /// Old ids to new ones after [`Edit::compact`]: `None` for a deleted row.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Renumbering {
     pub vertices: Vec<Option<u32>>,
     pub edges: Vec<Option<u32>>,
