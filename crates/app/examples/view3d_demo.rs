@@ -74,24 +74,17 @@ impl Demo {
         let generation = self.styles.generation + 1;
         let mut styles = SceneStyles {
             generation,
-            vertices: vec![ElementStyle::default(); self.geometry.positions.len()],
-            edges: vec![ElementStyle::default(); self.geometry.edges.len()],
-            faces: vec![ElementStyle::default(); self.geometry.faces.len()],
-            pointers: Vec::new(),
+            ..SceneStyles::default()
         };
         if let Some(pick) = self.selected {
-            let highlight = |style: &mut ElementStyle, name: String| {
-                style.colour = Some(Color32::from_rgb(232, 196, 40));
-                style.label = Some(name);
-            };
-            let list = match pick.kind {
-                ElementKind::Vertex => &mut styles.vertices,
-                ElementKind::Edge => &mut styles.edges,
-                ElementKind::Face => &mut styles.faces,
-            };
-            if let Some(s) = list.get_mut(pick.id as usize) {
-                highlight(s, format!("{}: picked", pick.id));
-            }
+            styles.elements.insert(
+                pick,
+                ElementStyle {
+                    colour: Some(Color32::from_rgb(232, 196, 40)),
+                    faded: false,
+                    label: Some(format!("{}: picked", pick.id)),
+                },
+            );
             styles.pointers.push(Pointer {
                 target: pick,
                 colour: Color32::from_rgb(80, 180, 230),

@@ -11,7 +11,7 @@
 
 use std::time::{Duration, Instant};
 
-use edgewise_app::view3d::{DrawIds, ElementStyle, MeshGeometry, SceneStyles, View3d, ViewOptions};
+use edgewise_app::view3d::{DrawIds, MeshGeometry, SceneStyles, View3d, ViewOptions};
 use edgewise_core::mesh::{Mesh, Structure, generate};
 use eframe::egui_wgpu::RenderState;
 
@@ -72,10 +72,7 @@ fn measure(nu: u32, nv: u32, gpu: Option<&RenderState>) -> Result<Vec<Row>, Stri
     let (geometry, from_mesh) = time(|| MeshGeometry::from_mesh(&mesh));
     let styles = SceneStyles {
         generation: 1,
-        vertices: vec![ElementStyle::default(); geometry.positions.len()],
-        edges: vec![ElementStyle::default(); geometry.edges.len()],
-        faces: vec![ElementStyle::default(); geometry.faces.len()],
-        pointers: Vec::new(),
+        ..SceneStyles::default()
     };
     let always = ViewOptions {
         draw_ids: DrawIds::Always,

@@ -28,7 +28,7 @@ use crate::{
     },
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, ViewOptions},
+    view3d::{DrawIds, MeshGeometry, Pointer, SceneStyles, ViewOptions},
 };
 
 pub mod algorithm_ui;
@@ -892,17 +892,13 @@ impl eframe::App for EdgewiseApp {
     }
 }
 
-/// Per-element styles for `mesh` from a paint.
+/// Per-element styles for `mesh` from a paint: an entry for each painted or
+/// labelled element the mesh has, in time proportional to the paint.
 fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
-    let base = ElementStyle {
-        faded: paint.fade_others && !paint.is_empty(),
-        ..ElementStyle::default()
-    };
     let mut styles = SceneStyles {
         generation,
-        vertices: vec![base.clone(); mesh.vertex_count()],
-        edges: vec![base.clone(); mesh.edge_row_count()],
-        faces: vec![base; mesh.face_count()],
+        fade_others: paint.fade_others && !paint.is_empty(),
+        elements: std::collections::BTreeMap::new(),
         pointers: paint
             .pointers
             .iter()
@@ -912,18 +908,22 @@ fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
             })
             .collect(),
     };
+    let exists = |element: ElementRef| {
+        let count = match element.kind {
+            ElementKind::Vertex => mesh.vertex_count(),
+            ElementKind::Edge => mesh.edge_row_count(),
+            ElementKind::Face => mesh.face_count(),
+        };
+        (element.id as usize) < count
+    };
     // An element's first entry gives its colour: paint in reverse.
-    for p in paint.painted.iter().rev() {
-        if let Some(style) = style_of(&mut styles, p.element) {
-            style.colour = Some(p.colour);
-            style.faded = false;
-        }
+    for p in paint.painted.iter().rev().filter(|p| exists(p.element)) {
+        let style = styles.elements.entry(p.element).or_default();
+        style.colour = Some(p.colour);
     }
-    for (&element, label) in &paint.labels {
-        if let Some(style) = style_of(&mut styles, element) {
-            style.label = Some(format!("{}: {label}", element.id));
-            style.faded = false;
-        }
+    for (&element, label) in paint.labels.iter().filter(|(e, _)| exists(**e)) {
+        let style = styles.elements.entry(element).or_default();
+        style.label = Some(format!("{}: {label}", element.id));
     }
     styles
 }
@@ -964,16 +964,6 @@ fn help_menu_ui(ui: &mut egui::Ui) {
             "Drag to orbit; wheel, pinch or right-drag to zoom; middle- or shift-drag to pan.",
         );
     });
-}
-
-/// The style slot of `element`, if the mesh has it.
-fn style_of(styles: &mut SceneStyles, element: ElementRef) -> Option<&mut ElementStyle> {
-    let list = match element.kind {
-        ElementKind::Vertex => &mut styles.vertices,
-        ElementKind::Edge => &mut styles.edges,
-        ElementKind::Face => &mut styles.faces,
-    };
-    list.get_mut(element.id as usize)
 }
 
 fn counts(mesh: &Mesh) -> Counts {

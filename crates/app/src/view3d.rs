@@ -18,10 +18,10 @@ mod arrows;
 mod axes;
 mod bvh;
 mod camera;
+mod coarse;
 mod faces;
 mod gpu;
 mod labels;
-mod lines;
 mod orientation;
 mod picking;
 mod renderer;
@@ -30,6 +30,8 @@ mod spheres;
 mod style;
 
 use edgewise_core::schema::{ElementKind, ElementRef};
+use std::borrow::Cow;
+use std::collections::BTreeMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -120,16 +122,49 @@ pub struct EdgeGeometry {
     pub pair: Option<u32>,
 }
 
-/// Per-element look, indexed like the geometry; rebuilt by the app when
-/// selection or trace changes. `generation` increases on every change so the
-/// view re-uploads colours only then.
+/// Per-element look: the few elements that have a look of their own, and
+/// whether every other element is faded. Sparse, so that a selection or a
+/// trace step costs what it changes rather than what the mesh holds: the
+/// view patches the styles of the elements whose entries changed.
+/// `generation` increases on every change so the view looks only then.
 #[derive(Clone, Debug, Default)]
 pub struct SceneStyles {
     pub generation: u64,
-    pub vertices: Vec<ElementStyle>,
-    pub edges: Vec<ElementStyle>,
-    pub faces: Vec<ElementStyle>,
+    /// Every element without an entry is drawn faded (a selection or a
+    /// trace with "fade the rest" on).
+    pub fade_others: bool,
+    pub elements: BTreeMap<ElementRef, ElementStyle>,
     pub pointers: Vec<Pointer>,
+}
+
+impl SceneStyles {
+    /// The look of `element`: its own entry, or the base look.
+    pub fn get(&self, element: ElementRef) -> Cow<'_, ElementStyle> {
+        match self.elements.get(&element) {
+            Some(style) => Cow::Borrowed(style),
+            None => Cow::Owned(self.base()),
+        }
+    }
+
+    /// The look of an element without an entry.
+    pub fn base(&self) -> ElementStyle {
+        ElementStyle {
+            faded: self.fade_others,
+            ..ElementStyle::default()
+        }
+    }
+
+    /// The element's label, if it has one.
+    pub fn label(&self, element: ElementRef) -> Option<&str> {
+        self.elements.get(&element)?.label.as_deref()
+    }
+
+    /// Whether the element is drawn with neither a colour nor a label.
+    pub fn is_plain(&self, element: ElementRef) -> bool {
+        self.elements
+            .get(&element)
+            .is_none_or(|style| !style::is_highlighted(style))
+    }
 }
 
 /// How one element looks.
@@ -227,6 +262,26 @@ struct GpuLink {
     styles: Option<Arc<StyleUpload>>,
 }
 
+impl GpuLink {
+    /// Drops the CPU copies the GPU side has taken.
+    fn drop_taken(&mut self) {
+        if self
+            .geometry
+            .as_ref()
+            .is_some_and(|g| self.uploaded.geometry.load(Ordering::Acquire) == g.id)
+        {
+            self.geometry = None;
+        }
+        if self
+            .styles
+            .as_ref()
+            .is_some_and(|s| self.uploaded.styles.load(Ordering::Acquire) == s.id)
+        {
+            self.styles = None;
+        }
+    }
+}
+
 /// Inputs that decide the hovered element; picking reruns only when they
 /// change.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -252,6 +307,12 @@ pub struct View3d {
     styles_key: Option<(u64, bool, u64)>,
     /// Elements with a colour or label, for the labels pass.
     highlighted: Vec<ElementRef>,
+    /// The entries and fading the current GPU styles were built from, for
+    /// patching only what the next styles change.
+    shown: BTreeMap<ElementRef, ElementStyle>,
+    fade_others: bool,
+    /// Whether the last styles went to the GPU as patches.
+    patched: bool,
     last_aspect: f32,
     /// Whether the last frame drew the coarse level of detail.
     coarse: bool,
@@ -284,6 +345,9 @@ impl View3d {
             styles_id: 0,
             styles_key: None,
             highlighted: Vec::new(),
+            shown: BTreeMap::new(),
+            fade_others: false,
+            patched: false,
             last_aspect: 1.5,
             coarse: false,
             last_viewport: None,
@@ -311,6 +375,7 @@ impl View3d {
                 arrows: arrows::instances(&self.scene),
                 faces: faces::corners(&self.scene),
                 marks: orientation::instances(&self.scene),
+                coarse: coarse::geometry(&self.scene),
             }));
             gpu.styles = None;
         }
@@ -387,6 +452,12 @@ impl View3d {
         }
         let distance = (self.scene.center - transforms.eye).length();
         self.scene.unit < COARSE_BELOW_POINTS * transforms.world_per_point(distance)
+    }
+
+    /// Whether the last change of styles went to the GPU as patches of the
+    /// elements it changed, rather than as every element's style.
+    pub fn styles_patched(&self) -> bool {
+        self.patched
     }
 
     /// Where an element's anchor (a vertex, an edge's middle, a face's
@@ -546,43 +617,46 @@ impl View3d {
         }
     }
 
-    /// Rebuilds the per-element GPU styles and the highlighted list when the
-    /// styles' generation, the theme or the mesh changed.
+    /// Brings the per-element GPU styles and the highlighted list up to
+    /// date when the styles' generation, the theme or the mesh changed:
+    /// patches for the elements whose look changed, or everything after a
+    /// new mesh, theme or fading (or while the last upload is still on its
+    /// way to the GPU).
     fn update_styles(&mut self, styles: &SceneStyles, dark: bool, palette: &Palette) {
         let key = (styles.generation, dark, self.geometry_id);
         if self.styles_key == Some(key) {
             return;
         }
+        let same_base = self.styles_key.is_some_and(|(_, was_dark, geometry)| {
+            was_dark == dark && geometry == self.geometry_id
+        }) && self.fade_others == styles.fade_others;
         self.styles_key = Some(key);
+        let base_id = self.styles_id;
         self.styles_id = next_id();
-        self.highlighted.clear();
-        type Kind<'a> = (&'a [ElementStyle], ElementKind, usize);
-        let kinds: [Kind<'_>; 3] = [
-            (
-                &styles.vertices,
-                ElementKind::Vertex,
-                self.scene.vertex_count(),
-            ),
-            (&styles.edges, ElementKind::Edge, self.scene.edge_count()),
-            (&styles.faces, ElementKind::Face, self.scene.face_count()),
-        ];
-        for (list, kind, count) in kinds {
-            for (i, s) in list.iter().enumerate().take(count) {
-                if style::is_highlighted(s)
-                    && let Ok(id) = u32::try_from(i)
-                {
-                    self.highlighted.push(ElementRef::new(kind, id));
-                }
-            }
-        }
+        self.highlighted = styles
+            .elements
+            .iter()
+            .filter(|(element, style)| {
+                style::is_highlighted(style) && self.scene.anchor(**element).is_some()
+            })
+            .map(|(element, _)| *element)
+            .collect();
         if let Some(gpu) = &mut self.gpu {
-            gpu.styles = Some(Arc::new(style::build(
-                &self.scene,
-                styles,
+            let context = style::StyleContext {
+                scene: &self.scene,
                 palette,
-                self.styles_id,
-            )));
+            };
+            gpu.drop_taken();
+            self.patched = same_base && gpu.styles.is_none();
+            let upload = if self.patched {
+                context.build_patches(&self.shown, styles, base_id, self.styles_id)
+            } else {
+                context.build_all(styles, self.styles_id)
+            };
+            gpu.styles = Some(Arc::new(upload));
         }
+        self.shown.clone_from(&styles.elements);
+        self.fade_others = styles.fade_others;
     }
 
     fn add_callback(
@@ -597,22 +671,21 @@ impl View3d {
             return;
         };
         let pixels_per_point = painter.pixels_per_point();
-        // Drop CPU copies the GPU side has taken.
-        if gpu
-            .geometry
-            .as_ref()
-            .is_some_and(|g| gpu.uploaded.geometry.load(Ordering::Acquire) == g.id)
-        {
-            gpu.geometry = None;
-        }
-        if gpu
-            .styles
-            .as_ref()
-            .is_some_and(|s| gpu.uploaded.styles.load(Ordering::Acquire) == s.id)
-        {
-            gpu.styles = None;
-        }
+        gpu.drop_taken();
         let sizes = self.scene.sizes(options.mesh_scale);
+        let base = ElementStyle {
+            faded: self.fade_others,
+            ..ElementStyle::default()
+        };
+        // Coarse lines fade as the arrows they stand for would, by the mean
+        // edge's length in pixels.
+        let edge_pixels = self.scene.unit * pixels_per_point
+            / transforms
+                .world_per_point((self.scene.center - transforms.eye).length())
+                .max(1e-30);
+        let [r, g, b, _] = style::line_style(&base, palette).colour;
+        let coarse_line =
+            style::fade_small(egui::Color32::from_rgb(r, g, b), edge_pixels, 24.0, palette);
         let (right, up) = transforms.screen_axes();
         let light = (self.camera.backward() + up * 0.7 - right * 0.45).normalize_or_zero();
         let [r, g, b, _] = palette.orientation.to_normalized_gamma_f32();
@@ -635,6 +708,8 @@ impl View3d {
             ],
             orientation_colour: [r, g, b, 1.0],
             background: palette.background.to_normalized_gamma_f32(),
+            coarse_line: coarse_line.to_normalized_gamma_f32(),
+            coarse_face: style::uniform_colour(style::face_style(&base, palette)),
         };
         let (axes, axes_styles) = axes::instances(&self.scene, &sizes, palette);
         let callback = ViewCallback {
@@ -852,13 +927,22 @@ mod tests {
             view.set_geometry(geometry, true);
             let styles = SceneStyles {
                 generation: 3,
-                vertices: vec![ElementStyle {
-                    colour: Some(egui::Color32::RED),
-                    faded: false,
-                    label: Some("x".to_owned()),
-                }],
-                edges: Vec::new(),
-                faces: Vec::new(),
+                fade_others: false,
+                elements: [
+                    (ElementKind::Vertex, 0),
+                    (ElementKind::Edge, 7),
+                    (ElementKind::Face, 2),
+                ]
+                .into_iter()
+                .map(|(kind, id)| {
+                    let style = ElementStyle {
+                        colour: Some(egui::Color32::RED),
+                        faded: false,
+                        label: Some("x".to_owned()),
+                    };
+                    (ElementRef::new(kind, id), style)
+                })
+                .collect(),
                 pointers: vec![Pointer {
                     target: ElementRef::new(ElementKind::Face, 99),
                     colour: egui::Color32::RED,

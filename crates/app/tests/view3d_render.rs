@@ -173,14 +173,19 @@ fn geometry(polygons: &Polygons, structure: Structure) -> MeshGeometry {
     MeshGeometry::from_mesh(&mesh)
 }
 
-fn styles_for(geometry: &MeshGeometry) -> SceneStyles {
+fn styles_for(_geometry: &MeshGeometry) -> SceneStyles {
     SceneStyles {
         generation: 1,
-        vertices: vec![ElementStyle::default(); geometry.positions.len()],
-        edges: vec![ElementStyle::default(); geometry.edges.len()],
-        faces: vec![ElementStyle::default(); geometry.faces.len()],
-        pointers: Vec::new(),
+        ..SceneStyles::default()
     }
+}
+
+/// The entry of one element, made if missing.
+fn entry(styles: &mut SceneStyles, kind: ElementKind, id: u32) -> &mut ElementStyle {
+    styles
+        .elements
+        .entry(ElementRef::new(kind, id))
+        .or_default()
 }
 
 const YELLOW: Color32 = Color32::from_rgb(232, 196, 40);
@@ -206,19 +211,14 @@ fn winged_edge_cube_with_highlights_labels_and_pointers() {
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let mut styles = styles_for(&geometry);
-    for s in &mut styles.vertices {
-        s.faded = true;
-    }
-    for s in &mut styles.edges {
-        s.faded = true;
-    }
-    styles.faces[1].colour = Some(YELLOW);
-    styles.edges[3] = ElementStyle {
+    styles.fade_others = true;
+    entry(&mut styles, ElementKind::Face, 1).colour = Some(YELLOW);
+    *entry(&mut styles, ElementKind::Edge, 3) = ElementStyle {
         colour: Some(GREEN),
         faded: false,
         label: Some("3: Left Predecessor".to_owned()),
     };
-    styles.vertices[6] = ElementStyle {
+    *entry(&mut styles, ElementKind::Vertex, 6) = ElementStyle {
         colour: Some(PURPLE),
         faded: false,
         label: Some("6: v".to_owned()),
@@ -272,8 +272,8 @@ fn half_edge_grid_with_all_ids_dark() {
         ..view.camera()
     });
     let mut styles = styles_for(&geometry);
-    styles.edges[0].colour = Some(GREEN);
-    styles.faces[4].colour = Some(YELLOW);
+    entry(&mut styles, ElementKind::Edge, 0).colour = Some(GREEN);
+    entry(&mut styles, ElementKind::Face, 4).colour = Some(YELLOW);
     let options = ViewOptions {
         draw_ids: DrawIds::Always,
         show_orientation: true,
@@ -332,17 +332,17 @@ fn torus_20k_faces() {
     view.set_geometry(geometry.clone(), true);
     // A selection on a dense mesh: the three labels would overlap.
     let mut styles = styles_for(&geometry);
-    styles.faces[0] = ElementStyle {
+    *entry(&mut styles, ElementKind::Face, 0) = ElementStyle {
         colour: Some(YELLOW),
         faded: false,
         label: Some("0: Left Face".to_owned()),
     };
-    styles.edges[0] = ElementStyle {
+    *entry(&mut styles, ElementKind::Edge, 0) = ElementStyle {
         colour: Some(GREEN),
         faded: false,
         label: Some("0: Incident Edge".to_owned()),
     };
-    styles.vertices[0] = ElementStyle {
+    *entry(&mut styles, ElementKind::Vertex, 0) = ElementStyle {
         colour: Some(PURPLE),
         faded: false,
         label: Some("0: Selected Vertex".to_owned()),
@@ -394,12 +394,12 @@ fn a_dense_mesh_far_away_is_drawn_coarse_with_its_highlights_in_full() {
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
     let mut styles = styles_for(&geometry);
-    styles.vertices[0] = ElementStyle {
+    *entry(&mut styles, ElementKind::Vertex, 0) = ElementStyle {
         colour: Some(PURPLE),
         faded: false,
         label: Some("0: Selected Vertex".to_owned()),
     };
-    styles.edges[0] = ElementStyle {
+    *entry(&mut styles, ElementKind::Edge, 0) = ElementStyle {
         colour: Some(GREEN),
         faded: false,
         label: None,
@@ -436,4 +436,70 @@ fn a_dense_mesh_far_away_is_drawn_coarse_with_its_highlights_in_full() {
     let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
     close.save("torus_80k_close.png");
     assert!(!view.coarse(), "close up, arrows and spheres return");
+}
+
+/// A selection changing on a big mesh patches the styles of the elements it
+/// touches; the picture must be exactly what styles sent whole draw, in full
+/// and at the coarse level of detail, faces included.
+#[test]
+fn patched_styles_draw_what_whole_styles_draw() {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [480, 360]);
+    for (polygons, coarse) in [
+        (generate::grid(4, 3), false),
+        (generate::torus(120, 120), true),
+    ] {
+        let geometry = geometry(&polygons, Structure::HalfEdge);
+        let mut first = styles_for(&geometry);
+        first.fade_others = true;
+        entry(&mut first, ElementKind::Face, 1).colour = Some(YELLOW);
+        entry(&mut first, ElementKind::Edge, 2).colour = Some(GREEN);
+        entry(&mut first, ElementKind::Vertex, 3).colour = Some(PURPLE);
+        let mut second = first.clone();
+        second.generation += 1;
+        second
+            .elements
+            .remove(&ElementRef::new(ElementKind::Face, 1));
+        second
+            .elements
+            .remove(&ElementRef::new(ElementKind::Edge, 2));
+        entry(&mut second, ElementKind::Face, 5).colour = Some(GREEN);
+        entry(&mut second, ElementKind::Edge, 7).colour = Some(YELLOW);
+        entry(&mut second, ElementKind::Vertex, 3).colour = Some(YELLOW);
+        let options = ViewOptions::default();
+
+        let mut patched = View3d::new(Some(&rs));
+        patched.set_geometry(geometry.clone(), true);
+        harness.show(&mut patched, &first, &options, Vec::new());
+        assert!(!patched.styles_patched(), "a new mesh's styles go whole");
+        let (after_patch, _) = harness.show(&mut patched, &second, &options, Vec::new());
+        assert!(patched.styles_patched());
+        assert_eq!(patched.coarse(), coarse);
+
+        let mut whole = View3d::new(Some(&rs));
+        whole.set_geometry(geometry, true);
+        let (drawn_whole, _) = harness.show(&mut whole, &second, &options, Vec::new());
+        let differing = after_patch
+            .pixels
+            .chunks(4)
+            .zip(drawn_whole.pixels.chunks(4))
+            .filter(|(a, b)| a != b)
+            .count();
+        if differing > 0 {
+            after_patch.save(&format!("patched_{coarse}.png"));
+            drawn_whole.save(&format!("whole_{coarse}.png"));
+        }
+        assert_eq!(differing, 0, "coarse: {coarse}");
+        // The first styles' highlights are gone: no yellow face 1 left.
+        assert_ne!(
+            after_patch.pixels,
+            harness
+                .show(&mut whole, &first, &options, Vec::new())
+                .0
+                .pixels
+        );
+    }
 }

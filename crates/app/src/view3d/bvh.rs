@@ -25,9 +25,9 @@ pub struct Bvh {
 
 impl Bvh {
     /// Builds the hierarchy over `boxes` (min, max): items are sorted along a
-    /// Morton (Z-order) curve through their box centers, then the sorted list
-    /// is halved recursively. O(n log n) for the sort and O(n) after it, so a
-    /// 600k-item mesh builds in tens of milliseconds.
+    /// Morton (Z-order) curve through their box centers (a radix sort), then
+    /// the sorted list is halved recursively: O(n) for the sort and
+    /// O(n log n) for the boxes, so a 600k-item mesh builds in milliseconds.
     pub fn build(boxes: &[(Vec3, Vec3)]) -> Self {
         let mut bounds_min = Vec3::splat(f32::INFINITY);
         let mut bounds_max = Vec3::splat(f32::NEG_INFINITY);
@@ -37,7 +37,7 @@ impl Bvh {
             bounds_max = bounds_max.max(c);
         }
         let extent = (bounds_max - bounds_min).max(Vec3::splat(1e-30));
-        let mut keyed: Vec<(u32, u32)> = boxes
+        let keyed: Vec<(u32, u32)> = boxes
             .iter()
             .zip(0_u32..)
             .map(|((lo, hi), i)| {
@@ -45,8 +45,7 @@ impl Bvh {
                 (morton(unit), i)
             })
             .collect();
-        keyed.sort_unstable();
-        let items: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
+        let items: Vec<u32> = radix_sort(keyed).into_iter().map(|(_, i)| i).collect();
         let mut nodes = Vec::with_capacity(2 * boxes.len() / LEAF_SIZE + 1);
         if !items.is_empty() {
             build_node(boxes, &items, 0, items.len(), &mut nodes);
@@ -177,6 +176,34 @@ fn build_node(
 }
 
 /// The 30-bit Morton code of a point in the unit cube.
+/// Sorts 30-bit Morton keys (with their items) in three stable passes of ten
+/// bits, so equal keys keep their order: the same order as sorting the pairs.
+fn radix_sort(mut keyed: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+    const BITS: u32 = 10;
+    let mut spare = vec![(0, 0); keyed.len()];
+    for pass in 0..3 {
+        let shift = pass * BITS;
+        let digit = |key: u32| ((key >> shift) & ((1 << BITS) - 1)) as usize;
+        let mut starts = vec![0_usize; 1 << BITS];
+        for &(key, _) in &keyed {
+            starts[digit(key)] += 1;
+        }
+        let mut total = 0;
+        for start in &mut starts {
+            let count = *start;
+            *start = total;
+            total += count;
+        }
+        for &pair in &keyed {
+            let slot = &mut starts[digit(pair.0)];
+            spare[*slot] = pair;
+            *slot += 1;
+        }
+        std::mem::swap(&mut keyed, &mut spare);
+    }
+    keyed
+}
+
 fn morton(unit: Vec3) -> u32 {
     // Spreads the low 10 bits of `v` so there are two zero bits between each.
     fn spread(v: u32) -> u32 {
@@ -207,6 +234,23 @@ pub fn ray_box(origin: Vec3, inv_dir: Vec3, min: Vec3, max: Vec3) -> Option<(f32
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_radix_sort_orders_like_sorting_the_pairs() {
+        let mut seed = 12345_u32;
+        let keyed: Vec<(u32, u32)> = (0..5000)
+            .map(|i| {
+                seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+                (
+                    (seed >> 2) & 0x3fff_ffff & if i % 3 == 0 { 0xff } else { u32::MAX },
+                    i,
+                )
+            })
+            .collect();
+        let mut expected = keyed.clone();
+        expected.sort_unstable();
+        assert_eq!(radix_sort(keyed), expected);
+    }
 
     #[test]
     fn visits_exactly_the_boxes_the_ray_crosses() {

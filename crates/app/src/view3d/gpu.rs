@@ -30,6 +30,8 @@ pub struct FrameUniform {
     pub params: [f32; 4],
     pub orientation_colour: [f32; 4],
     pub background: [f32; 4],
+    pub coarse_line: [f32; 4],
+    pub coarse_face: [f32; 4],
 }
 
 /// The layout of bind group 0, the frame uniform, which every pipeline uses.
@@ -314,6 +316,26 @@ impl VertexData {
     }
 }
 
+/// An index buffer of `count` u32 indices (never empty on the GPU).
+pub struct IndexData {
+    pub buffer: wgpu::Buffer,
+    pub count: u32,
+}
+
+impl IndexData {
+    pub fn new(device: &wgpu::Device, label: &str, indices: &[u32]) -> Self {
+        let contents: &[u32] = if indices.is_empty() { &[0] } else { indices };
+        Self {
+            buffer: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(contents),
+                usage: wgpu::BufferUsages::INDEX,
+            }),
+            count: u32::try_from(indices.len()).unwrap_or(0),
+        }
+    }
+}
+
 /// One view's per-element data for a drawable (sphere or arrow instances,
 /// face corners) and each element's style. Both are rewritten in place
 /// while the element count stays and reallocated when it changes.
@@ -340,6 +362,18 @@ impl<T: Pod + Default> StyledBuffers<T> {
         self.elements = Some(VertexData::new(device, self.labels[0], elements));
     }
 
+    /// Replaces the elements and their styles (the few drawn in full over
+    /// the coarse level of detail).
+    pub fn replace(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        (elements, styles): &(Vec<T>, Vec<StyleVertex>),
+    ) {
+        self.replace_elements(device, elements);
+        self.write_styles(device, queue, styles);
+    }
+
     /// Rewrites the elements, in place while their count stays (the axes,
     /// every frame).
     pub fn write_elements(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, elements: &[T]) {
@@ -354,6 +388,22 @@ impl<T: Pod + Default> StyledBuffers<T> {
         styles: &[StyleVertex],
     ) {
         VertexData::update(&mut self.styles, device, queue, self.labels[1], styles);
+    }
+
+    /// Rewrites runs of styles in place, each from its first element; runs
+    /// past the buffer's end are cut off there.
+    pub fn patch_styles(&self, queue: &wgpu::Queue, runs: &[(u32, Vec<StyleVertex>)]) {
+        let Some(styles) = &self.styles else {
+            return;
+        };
+        for (first, run) in runs {
+            let room = (styles.count as usize).saturating_sub(*first as usize);
+            let run = &run[..run.len().min(room)];
+            if !run.is_empty() {
+                let offset = u64::from(*first) * size_of::<StyleVertex>() as u64;
+                queue.write_buffer(&styles.buffer, offset, bytemuck::cast_slice(run));
+            }
+        }
     }
 
     /// The elements and their styles, once both have been uploaded.

@@ -11,7 +11,7 @@ use super::camera::ViewTransforms;
 use super::picking::PickAccel;
 use super::scene::{Scene, Sizes};
 use super::style::Palette;
-use super::{DrawIds, SceneStyles, ViewOptions, axes, style};
+use super::{DrawIds, SceneStyles, ViewOptions, axes};
 use edgewise_core::schema::{ElementKind, ElementRef};
 use egui::{Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, Vec2, vec2};
 
@@ -85,11 +85,7 @@ impl Overlay<'_> {
         }
         let (anchor, above) = match pick.kind {
             ElementKind::Vertex => {
-                let highlighted = self
-                    .styles
-                    .vertices
-                    .get(pick.id as usize)
-                    .is_some_and(|s| s.colour.is_some());
+                let highlighted = self.styles.get(pick).colour.is_some();
                 let emphasis = if highlighted {
                     Sizes::EMPHASIS_VERTEX
                 } else {
@@ -109,17 +105,9 @@ impl Overlay<'_> {
         })
     }
 
-    fn element_style(&self, pick: ElementRef) -> Option<&super::ElementStyle> {
-        match pick.kind {
-            ElementKind::Vertex => self.styles.vertices.get(pick.id as usize),
-            ElementKind::Edge => self.styles.edges.get(pick.id as usize),
-            ElementKind::Face => self.styles.faces.get(pick.id as usize),
-        }
-    }
-
     fn text(&self, pick: ElementRef) -> String {
-        match self.element_style(pick).and_then(|s| s.label.clone()) {
-            Some(label) => label,
+        match self.styles.label(pick) {
+            Some(label) => label.to_owned(),
             None => pick.id.to_string(),
         }
     }
@@ -221,7 +209,7 @@ impl Overlay<'_> {
         }
         let mut laid_out = Vec::with_capacity(important.len());
         for placed in important {
-            let border = self.element_style(placed.pick).and_then(|s| s.colour);
+            let border = self.styles.get(placed.pick).colour;
             let mut label = self.lay_out(placed, border);
             Self::nudge(&mut label, &occupied);
             occupied.claim(label.rect);
@@ -276,8 +264,6 @@ impl Overlay<'_> {
     /// nearest [`CANDIDATES`] of each kind, found front to back through the
     /// picking BVHs so a 200k-face mesh costs no more than a small one.
     fn visible_unhighlighted(&self) -> Vec<Placed> {
-        let is_plain =
-            |style: Option<&super::ElementStyle>| !style.is_some_and(style::is_highlighted);
         let viewport = self.viewport();
         let eye = self.transforms.eye;
         let keep = |min, max| self.transforms.may_see_box(min, max);
@@ -296,19 +282,19 @@ impl Overlay<'_> {
             });
         };
         collect(&self.accel.vertices, &|v| {
-            is_plain(self.styles.vertices.get(v as usize))
-                .then_some(ElementRef::new(ElementKind::Vertex, v))
+            let pick = ElementRef::new(ElementKind::Vertex, v);
+            self.styles.is_plain(pick).then_some(pick)
         });
         collect(&self.accel.edges, &|e| {
-            is_plain(self.styles.edges.get(e as usize))
-                .then_some(ElementRef::new(ElementKind::Edge, e))
+            let pick = ElementRef::new(ElementKind::Edge, e);
+            self.styles.is_plain(pick).then_some(pick)
         });
         collect(&self.accel.faces, &|t| {
             // A face is found through its first triangle only.
             let face = *self.scene.triangle_faces.get(t as usize)?;
             let first = *self.scene.face_triangle_start.get(face as usize)?;
-            (first == t && is_plain(self.styles.faces.get(face as usize)))
-                .then_some(ElementRef::new(ElementKind::Face, face))
+            let pick = ElementRef::new(ElementKind::Face, face);
+            (first == t && self.styles.is_plain(pick)).then_some(pick)
         });
         out
     }

@@ -9,11 +9,11 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use eframe::egui_wgpu::{CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
 
 use super::arrows::{ArrowBuffers, ArrowInstance, ArrowRenderer};
+use super::coarse::{CoarseBuffers, CoarseGeometry, CoarseRenderer};
 use super::faces::{FaceBuffers, FaceRenderer};
 use super::gpu::{
     FrameBindGroup, FrameUniform, PipelineFactory, StyleVertex, frame_bind_group_layout,
 };
-use super::lines::LineRenderer;
 use super::orientation::{MarkInstance, OrientationBuffers, OrientationRenderer};
 use super::spheres::{SphereBuffers, SphereInstance, SphereRenderer};
 
@@ -27,20 +27,56 @@ pub struct GeometryUpload {
     /// Three corners per triangle.
     pub faces: Vec<[f32; 3]>,
     pub marks: Vec<MarkInstance>,
+    pub coarse: CoarseGeometry,
 }
 
-/// Style buffers' contents, rebuilt when the styles' generation changes.
+/// New styles for some or all elements of one drawable.
+#[derive(Debug)]
+pub enum StyleWrites {
+    /// Every element's style.
+    All(Vec<StyleVertex>),
+    /// Runs of styles, each from its first element; the rest stay.
+    Runs(Vec<(u32, Vec<StyleVertex>)>),
+}
+
+impl Default for StyleWrites {
+    fn default() -> Self {
+        Self::All(Vec::new())
+    }
+}
+
+impl StyleWrites {
+    fn write<T: bytemuck::Pod + Default>(
+        &self,
+        buffers: &mut super::gpu::StyledBuffers<T>,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+    ) {
+        match self {
+            Self::All(styles) => buffers.write_styles(device, queue, styles),
+            Self::Runs(runs) => buffers.patch_styles(queue, runs),
+        }
+    }
+}
+
+/// Style buffers' contents when the styles' generation changes: all of
+/// them after a new mesh or theme, else patches of the elements whose look
+/// changed, so that a selection or a trace step costs what it changes.
 #[derive(Default)]
 pub struct StyleUpload {
     pub id: u64,
-    pub vertices: Vec<StyleVertex>,
-    pub edges: Vec<StyleVertex>,
+    /// The upload these patches apply over; None when everything is
+    /// written.
+    pub patches: Option<u64>,
+    pub vertices: StyleWrites,
+    pub edges: StyleWrites,
     /// Three per triangle, like [`GeometryUpload::faces`].
-    pub faces: Vec<StyleVertex>,
-    /// The highlighted vertices and edges again, drawn in full over the
-    /// coarse level of detail: instances, then styles.
+    pub faces: StyleWrites,
+    /// The highlighted vertices, edges and faces again, drawn in full over
+    /// the coarse level of detail: instances (or corners), then styles.
     pub full_spheres: (Vec<SphereInstance>, Vec<StyleVertex>),
     pub full_arrows: (Vec<ArrowInstance>, Vec<StyleVertex>),
+    pub full_faces: (Vec<[f32; 3]>, Vec<StyleVertex>),
 }
 
 /// Tells the view which uploads the GPU side has taken, so it can drop its
@@ -68,7 +104,7 @@ pub struct Renderers {
     frame_layout: wgpu::BindGroupLayout,
     spheres: SphereRenderer,
     arrows: ArrowRenderer,
-    lines: LineRenderer,
+    coarse: CoarseRenderer,
     faces: FaceRenderer,
     orientation: OrientationRenderer,
     srgb_target: bool,
@@ -83,7 +119,7 @@ impl Renderers {
         Self {
             spheres: SphereRenderer::new(&factory),
             arrows: ArrowRenderer::new(&factory),
-            lines: LineRenderer::new(&factory),
+            coarse: CoarseRenderer::new(&factory),
             faces: FaceRenderer::new(&factory),
             orientation: OrientationRenderer::new(&factory),
             frame_layout,
@@ -121,6 +157,8 @@ struct ViewBuffers {
     axes: ArrowBuffers,
     full_spheres: SphereBuffers,
     full_arrows: ArrowBuffers,
+    full_faces: FaceBuffers,
+    coarse: CoarseBuffers,
 }
 
 impl ViewBuffers {
@@ -136,6 +174,8 @@ impl ViewBuffers {
             axes: ArrowBuffers::new("view3d axes", "view3d axes styles"),
             full_spheres: SphereBuffers::new("view3d full spheres", "view3d full sphere styles"),
             full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
+            full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
+            coarse: CoarseBuffers::default(),
         }
     }
 }
@@ -182,23 +222,23 @@ impl CallbackTrait for ViewCallback {
             view.arrows.replace_elements(device, &geometry.arrows);
             view.faces.replace_elements(device, &geometry.faces);
             view.marks.replace_marks(device, &geometry.marks);
+            view.coarse.replace(device, &geometry.coarse);
             view.geometry_id = geometry.id;
             self.uploaded.geometry.store(geometry.id, Ordering::Release);
         }
+        // Patches apply only over the styles they were made against (the
+        // view sends everything when it cannot know which those are).
         if let Some(styles) = &self.styles
             && styles.id != view.styles_id
+            && styles.patches.is_none_or(|base| base == view.styles_id)
         {
-            view.spheres.write_styles(device, queue, &styles.vertices);
-            view.arrows.write_styles(device, queue, &styles.edges);
-            view.faces.write_styles(device, queue, &styles.faces);
+            styles.vertices.write(&mut view.spheres, device, queue);
+            styles.edges.write(&mut view.arrows, device, queue);
+            styles.faces.write(&mut view.faces, device, queue);
             view.full_spheres
-                .replace_elements(device, &styles.full_spheres.0);
-            view.full_spheres
-                .write_styles(device, queue, &styles.full_spheres.1);
-            view.full_arrows
-                .replace_elements(device, &styles.full_arrows.0);
-            view.full_arrows
-                .write_styles(device, queue, &styles.full_arrows.1);
+                .replace(device, queue, &styles.full_spheres);
+            view.full_arrows.replace(device, queue, &styles.full_arrows);
+            view.full_faces.replace(device, queue, &styles.full_faces);
             view.styles_id = styles.id;
             self.uploaded.styles.store(styles.id, Ordering::Release);
         }
@@ -232,9 +272,9 @@ impl CallbackTrait for ViewCallback {
         }
         view.frame.bind(pass);
 
-        // Opaque first: spheres, arrows, axes, orientation marks.
+        // Opaque first: spheres, arrows (or lines), axes, orientation marks.
         if self.flags.coarse {
-            renderers.lines.draw(pass, &view.arrows);
+            renderers.coarse.draw_lines(pass, &view.coarse);
             renderers.spheres.draw(pass, &view.full_spheres);
             renderers.arrows.draw(pass, &view.full_arrows);
         } else {
@@ -249,8 +289,12 @@ impl CallbackTrait for ViewCallback {
         }
         // Faces last: see-through ones test depth against everything opaque
         // without hiding what is behind them.
-        renderers
-            .faces
-            .draw(pass, &view.faces, self.flags.solid_faces);
+        let solid = self.flags.solid_faces;
+        if self.flags.coarse {
+            renderers.coarse.draw_faces(pass, &view.coarse, solid);
+            renderers.faces.draw(pass, &view.full_faces, solid);
+        } else {
+            renderers.faces.draw(pass, &view.faces, solid);
+        }
     }
 }

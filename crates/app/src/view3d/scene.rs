@@ -99,8 +99,10 @@ impl Scene {
         let mut triangle_faces = Vec::new();
         let mut face_triangle_start = Vec::with_capacity(face_count + 1);
         face_triangle_start.push(0_u32);
+        let mut corners: Vec<Vec3> = Vec::new();
         for (f, face) in geometry.faces.iter().enumerate() {
-            let corners: Vec<Vec3> = face.iter().map(|&v| position(v)).collect();
+            corners.clear();
+            corners.extend(face.iter().map(|&v| position(v)));
             let centroid = if corners.is_empty() {
                 Vec3::ZERO
             } else {

@@ -1,12 +1,15 @@
 //! Colours: the base palette for light and dark themes (the journal's
 //! scheme: gray base, highlights in the app's colours) and the per-element
-//! GPU styles built from [`SceneStyles`].
+//! GPU styles built from [`SceneStyles`], in full or as patches.
 
+use std::collections::BTreeMap;
+
+use edgewise_core::schema::{ElementKind, ElementRef};
 use egui::Color32;
 
 use super::arrows::ArrowInstance;
 use super::gpu::StyleVertex;
-use super::renderer::StyleUpload;
+use super::renderer::{StyleUpload, StyleWrites};
 use super::scene::Scene;
 use super::spheres::SphereInstance;
 use super::{ElementStyle, SceneStyles, faces};
@@ -95,86 +98,189 @@ fn rgb(colour: Color32) -> [u8; 3] {
 }
 
 /// The GPU style of a vertex or edge.
-pub fn line_style(style: Option<&ElementStyle>, palette: &Palette) -> StyleVertex {
-    let highlighted = style.and_then(|s| s.colour);
-    let mut colour = highlighted.unwrap_or(palette.line);
-    if style.is_some_and(|s| s.faded) {
+pub fn line_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
+    let mut colour = style.colour.unwrap_or(palette.line);
+    if style.faded {
         colour = palette.faded(colour);
     }
     let [r, g, b] = rgb(colour);
     StyleVertex {
         colour: [r, g, b, 255],
-        extra: [if highlighted.is_some() { 255 } else { 0 }, 0, 0, 0],
+        extra: [if style.colour.is_some() { 255 } else { 0 }, 0, 0, 0],
     }
 }
 
 /// The GPU style of a face (alpha for see-through drawing).
-pub fn face_style(style: Option<&ElementStyle>, palette: &Palette) -> StyleVertex {
-    let highlighted = style.and_then(|s| s.colour);
-    let (colour, mut alpha) = match highlighted {
+pub fn face_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
+    let (colour, mut alpha) = match style.colour {
         Some(colour) => (colour, palette.face_highlight_alpha),
         None => (palette.face, palette.face_alpha),
     };
-    let faded = style.is_some_and(|s| s.faded);
-    if faded {
+    if style.faded {
         alpha *= 0.45;
     }
-    let [r, g, b] = rgb(if faded {
+    let [r, g, b] = rgb(if style.faded {
         mix(colour, palette.background, 0.4)
     } else {
         colour
     });
     StyleVertex {
         colour: [r, g, b, (alpha * 255.0).round() as u8],
-        extra: [if highlighted.is_some() { 255 } else { 0 }, 0, 0, 0],
+        extra: [if style.colour.is_some() { 255 } else { 0 }, 0, 0, 0],
     }
 }
 
-/// Every element's GPU style.
-pub fn build(scene: &Scene, styles: &SceneStyles, palette: &Palette, id: u64) -> StyleUpload {
-    let vertices: Vec<StyleVertex> = (0..scene.vertex_count())
-        .map(|v| line_style(styles.vertices.get(v), palette))
-        .collect();
-    let edges: Vec<StyleVertex> = (0..scene.edge_count())
-        .map(|e| line_style(styles.edges.get(e), palette))
-        .collect();
-    let highlighted = |list: &[ElementStyle], count: usize| -> Vec<usize> {
-        list.iter()
-            .take(count)
-            .enumerate()
-            .filter(|(_, s)| is_highlighted(s))
-            .map(|(i, _)| i)
-            .collect()
-    };
-    let full_spheres = highlighted(&styles.vertices, scene.vertex_count())
-        .into_iter()
-        .map(|v| {
-            let center = scene.position(u32::try_from(v).unwrap_or(u32::MAX));
-            (
-                SphereInstance {
-                    center: center.to_array(),
-                },
-                vertices[v],
-            )
-        })
-        .unzip();
-    let full_arrows = highlighted(&styles.edges, scene.edge_count())
-        .into_iter()
-        .map(|e| {
-            let instance = ArrowInstance {
-                start: scene.arrow_starts[e].to_array(),
-                end: scene.arrow_ends[e].to_array(),
-            };
-            (instance, edges[e])
-        })
-        .unzip();
-    StyleUpload {
-        id,
-        vertices,
-        edges,
-        faces: faces::corner_styles(scene, |f| face_style(styles.faces.get(f), palette)),
-        full_spheres,
-        full_arrows,
+/// `colour` faded towards the background as an element `size` pixels big
+/// is, like `fade_small` in shaders/common.wgsl: a dense mesh seen whole
+/// reads as a surface with a light wireframe.
+pub fn fade_small(colour: Color32, size: f32, full: f32, palette: &Palette) -> Color32 {
+    let keep = (size / full).clamp(0.0, 1.0);
+    mix(colour, palette.background, (1.0 - keep) * 0.8)
+}
+
+/// A GPU style as the frame uniform's gamma-space colour.
+pub fn uniform_colour(style: StyleVertex) -> [f32; 4] {
+    style.colour.map(|c| f32::from(c) / 255.0)
+}
+
+/// What a style upload is made against: the view's scene and palette.
+pub struct StyleContext<'a> {
+    pub scene: &'a Scene,
+    pub palette: &'a Palette,
+}
+
+impl StyleContext<'_> {
+    fn count(&self, kind: ElementKind) -> usize {
+        match kind {
+            ElementKind::Vertex => self.scene.vertex_count(),
+            ElementKind::Edge => self.scene.edge_count(),
+            ElementKind::Face => self.scene.face_count(),
+        }
+    }
+
+    fn gpu_style(&self, kind: ElementKind, style: &ElementStyle) -> StyleVertex {
+        match kind {
+            ElementKind::Face => face_style(style, self.palette),
+            ElementKind::Vertex | ElementKind::Edge => line_style(style, self.palette),
+        }
+    }
+
+    /// The corners of face `f`'s triangles in the face buffers.
+    fn corner_range(&self, f: usize) -> Option<(u32, u32)> {
+        let start = *self.scene.face_triangle_start.get(f)?;
+        let end = *self.scene.face_triangle_start.get(f + 1)?;
+        Some((start * 3, end.saturating_sub(start) * 3))
+    }
+
+    /// Every element's GPU style.
+    pub fn build_all(&self, styles: &SceneStyles, id: u64) -> StyleUpload {
+        let all = |kind: ElementKind| {
+            let mut out = vec![self.gpu_style(kind, &styles.base()); self.count(kind)];
+            let first = ElementRef::new(kind, 0);
+            let last = ElementRef::new(kind, u32::MAX);
+            for (element, style) in styles.elements.range(first..=last) {
+                if let Some(slot) = out.get_mut(element.id as usize) {
+                    *slot = self.gpu_style(kind, style);
+                }
+            }
+            out
+        };
+        let faces = all(ElementKind::Face);
+        StyleUpload {
+            id,
+            patches: None,
+            vertices: StyleWrites::All(all(ElementKind::Vertex)),
+            edges: StyleWrites::All(all(ElementKind::Edge)),
+            faces: StyleWrites::All(faces::corner_styles(self.scene, |f| {
+                faces.get(f).copied().unwrap_or_default()
+            })),
+            ..self.full(styles)
+        }
+    }
+
+    /// Patches for the elements whose look differs between `before` and
+    /// `styles`, which must fade alike: their base looks are equal.
+    pub fn build_patches(
+        &self,
+        before: &BTreeMap<ElementRef, ElementStyle>,
+        styles: &SceneStyles,
+        base: u64,
+        id: u64,
+    ) -> StyleUpload {
+        let mut runs: [Vec<(u32, Vec<StyleVertex>)>; 3] = Default::default();
+        let changed = before
+            .keys()
+            .chain(styles.elements.keys())
+            .filter(|element| before.get(element) != styles.elements.get(element));
+        for &element in changed {
+            let (index, kind) = (element.id as usize, element.kind);
+            if index >= self.count(kind) {
+                continue;
+            }
+            let style = self.gpu_style(kind, &styles.get(element));
+            match kind {
+                ElementKind::Vertex => runs[0].push((element.id, vec![style])),
+                ElementKind::Edge => runs[1].push((element.id, vec![style])),
+                ElementKind::Face => {
+                    if let Some((first, corners)) = self.corner_range(index) {
+                        runs[2].push((first, vec![style; corners as usize]));
+                    }
+                }
+            }
+        }
+        let [vertices, edges, faces] = runs.map(StyleWrites::Runs);
+        StyleUpload {
+            id,
+            patches: Some(base),
+            vertices,
+            edges,
+            faces,
+            ..self.full(styles)
+        }
+    }
+
+    /// The highlighted elements' instances and styles for drawing in full
+    /// over the coarse level of detail.
+    fn full(&self, styles: &SceneStyles) -> StyleUpload {
+        let mut upload = StyleUpload::default();
+        for (&element, style) in &styles.elements {
+            let index = element.id as usize;
+            if !is_highlighted(style) || index >= self.count(element.kind) {
+                continue;
+            }
+            let gpu = self.gpu_style(element.kind, style);
+            match element.kind {
+                ElementKind::Vertex => {
+                    upload.full_spheres.0.push(SphereInstance {
+                        center: self.scene.position(element.id).to_array(),
+                    });
+                    upload.full_spheres.1.push(gpu);
+                }
+                ElementKind::Edge => {
+                    upload.full_arrows.0.push(ArrowInstance {
+                        start: self.scene.arrow_starts[index].to_array(),
+                        end: self.scene.arrow_ends[index].to_array(),
+                    });
+                    upload.full_arrows.1.push(gpu);
+                }
+                ElementKind::Face => {
+                    if let Some((first, corners)) = self.corner_range(index) {
+                        let triangles = (first / 3) as usize..((first + corners) / 3) as usize;
+                        for t in self.scene.triangles.get(triangles).unwrap_or_default() {
+                            upload
+                                .full_faces
+                                .0
+                                .extend(t.map(|v| self.scene.position(v).to_array()));
+                        }
+                        upload
+                            .full_faces
+                            .1
+                            .extend(std::iter::repeat_n(gpu, corners as usize));
+                    }
+                }
+            }
+        }
+        upload
     }
 }
 

@@ -17,6 +17,10 @@ struct Frame {
     orientation_colour: vec4<f32>,
     // The view's background (gamma space), which tiny elements fade into.
     background: vec4<f32>,
+    // The coarse level of detail's edge and face colours (gamma space; the
+    // face's alpha is its opacity).
+    coarse_line: vec4<f32>,
+    coarse_face: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
