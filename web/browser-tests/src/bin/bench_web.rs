@@ -18,23 +18,20 @@ use serde_json::{Value, json};
 const ORBIT_SECONDS: f64 = 4.0;
 
 /// Installed before any page script: when `window.edgewise` appears, and
-/// every long task (over 50 ms) on the main thread.
+/// the time of every animation frame, so the longest gap between two (the
+/// page frozen) can be found for any interval.
 const PROBE: &str = "
-  window.__bench = { readyAt: null, longTasks: [] };
+  window.__bench = { readyAt: null, frameTimes: [] };
   const poll = setInterval(() => {
     if (window.edgewise) { window.__bench.readyAt = performance.now(); clearInterval(poll); }
   }, 5);
-  try {
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) {
-        window.__bench.longTasks.push([entry.startTime, entry.duration]);
-      }
-    }).observe({ type: 'longtask', buffered: true });
-  } catch (e) {}
+  const tick = (t) => { window.__bench.frameTimes.push(t); requestAnimationFrame(tick); };
+  requestAnimationFrame(tick);
 ";
 
 /// Times an awaited API call in the page, up to the next painted frame,
-/// in milliseconds; also the longest main-thread task meanwhile.
+/// in milliseconds; also the longest time meanwhile that the page painted
+/// no frame (the longest freeze).
 fn timed(call: &str) -> String {
     format!(
         "(async () => {{
@@ -42,9 +39,10 @@ fn timed(call: &str) -> String {
            await {call};
            await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
            const end = performance.now();
-           const longest = window.__bench.longTasks
-             .filter(([at, d]) => at + d >= start && at <= end)
-             .reduce((m, [, d]) => Math.max(m, d), 0);
+           const times = [start, ...window.__bench.frameTimes.filter((t) => t > start && t <= end), end];
+           let longest = 0;
+           for (let i = 1; i < times.length; i++) longest = Math.max(longest, times[i] - times[i - 1]);
+           window.__bench.frameTimes = [];
            return [end - start, longest];
          }})()"
     )
@@ -199,7 +197,7 @@ async fn main() -> anyhow::Result<()> {
                 "torus-200k: load (half-edge)",
                 ms(&loaded[0]),
                 "",
-                format!("longest task {}", ms(&loaded[1])),
+                format!("longest freeze {}", ms(&loaded[1])),
             ));
         }
         let rate = app.eval_async(&orbit(ORBIT_SECONDS)).await?;
@@ -248,7 +246,7 @@ async fn main() -> anyhow::Result<()> {
             what,
             ms(&taken[0]),
             "",
-            format!("longest task {}", ms(&taken[1])),
+            format!("longest freeze {}", ms(&taken[1])),
         ));
     }
     app.close().await?;
