@@ -34,13 +34,32 @@ fn bind(port: u16) -> anyhow::Result<tiny_http::Server> {
 
 fn handle_requests(server: &tiny_http::Server, dist: &Path) {
     for request in server.incoming_requests() {
+        let accepts_gzip = request
+            .headers()
+            .iter()
+            .any(|h| h.field.equiv("Accept-Encoding") && h.value.as_str().contains("gzip"));
         let response = match resolve(dist, request.url()) {
-            Some(path) => match std::fs::read(&path) {
-                Ok(bytes) => tiny_http::Response::from_data(bytes)
-                    .with_header(header("Content-Type", content_type(&path)))
-                    .with_header(header("Cache-Control", "no-cache")),
-                Err(_) => not_found(),
-            },
+            Some(path) => {
+                // The build's precompressed copy, where there is one.
+                let gzipped = accepts_gzip
+                    .then(|| std::fs::read(gzipped_name(&path)).ok())
+                    .flatten();
+                let encoded = gzipped.is_some();
+                match gzipped.map_or_else(|| std::fs::read(&path), Ok) {
+                    Ok(bytes) => {
+                        let response = tiny_http::Response::from_data(bytes)
+                            .with_header(header("Content-Type", content_type(&path)))
+                            .with_header(header("Cache-Control", "no-cache"))
+                            .with_header(header("Vary", "Accept-Encoding"));
+                        if encoded {
+                            response.with_header(header("Content-Encoding", "gzip"))
+                        } else {
+                            response
+                        }
+                    }
+                    Err(_) => not_found(),
+                }
+            }
             None => not_found(),
         };
         // A client that hung up is not our problem.
@@ -74,6 +93,13 @@ fn resolve(dist: &Path, url: &str) -> Option<PathBuf> {
         file = file.join("index.html");
     }
     file.is_file().then_some(file)
+}
+
+/// `NAME.gz` beside `NAME`.
+fn gzipped_name(path: &Path) -> PathBuf {
+    let mut name = path.as_os_str().to_owned();
+    name.push(".gz");
+    PathBuf::from(name)
 }
 
 fn content_type(path: &Path) -> &'static str {
@@ -118,5 +144,44 @@ mod tests {
             content_type(Path::new("a.js")),
             "text/javascript; charset=utf-8"
         );
+    }
+
+    /// A raw HTTP/1.0 request; the whole response.
+    fn get(addr: SocketAddr, path: &str, accept: &str) -> String {
+        use std::io::{Read as _, Write as _};
+        let mut stream = std::net::TcpStream::connect(addr).unwrap();
+        write!(
+            stream,
+            "GET {path} HTTP/1.0\r\nAccept-Encoding: {accept}\r\n\r\n"
+        )
+        .unwrap();
+        let mut response = Vec::new();
+        stream.read_to_end(&mut response).unwrap();
+        String::from_utf8_lossy(&response).into_owned()
+    }
+
+    #[test]
+    fn the_precompressed_copy_goes_to_clients_that_take_gzip() {
+        let dist = std::env::temp_dir().join(format!("edgewise-serve-gz-{}", std::process::id()));
+        std::fs::create_dir_all(&dist).unwrap();
+        std::fs::write(dist.join("app.js"), "plain").unwrap();
+        std::fs::write(dist.join("app.js.gz"), "GZIPPED").unwrap();
+        let addr = serve_in_background(&dist).unwrap();
+        let gzipped = get(addr, "/app.js", "gzip, deflate, br");
+        assert!(
+            gzipped
+                .to_ascii_lowercase()
+                .contains("content-encoding: gzip"),
+            "{gzipped}"
+        );
+        assert!(gzipped.contains("text/javascript"), "{gzipped}");
+        assert!(gzipped.ends_with("GZIPPED"), "{gzipped}");
+        let plain = get(addr, "/app.js", "identity");
+        assert!(
+            !plain.to_ascii_lowercase().contains("content-encoding"),
+            "{plain}"
+        );
+        assert!(plain.ends_with("plain"), "{plain}");
+        std::fs::remove_dir_all(&dist).ok();
     }
 }

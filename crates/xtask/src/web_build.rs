@@ -18,7 +18,7 @@ impl Profile {
     fn dir_name(self) -> &'static str {
         match self {
             Self::Dev => "debug",
-            Self::Release => "release",
+            Self::Release => "web",
         }
     }
 }
@@ -37,7 +37,8 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
     let mut cmd = toolchain.cargo("build", &target_dir);
     cmd.args(["--locked", "--package", APP_PACKAGE, "--bin", APP_PACKAGE]);
     if profile == Profile::Release {
-        cmd.arg("--release");
+        // Cargo.toml's `web` profile: release, with LTO, optimised for size.
+        cmd.args(["--profile", "web"]);
     }
     process::run("the wasm build", &mut cmd)?;
 
@@ -63,6 +64,11 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
         .generate(&dist)
         .with_context(|| format!("wasm-bindgen could not process {}", wasm.display()))?;
 
+    let wasm_out = dist.join(format!("{OUT_NAME}_bg.wasm"));
+    if profile == Profile::Release {
+        shrink_wasm(root, &wasm_out)?;
+    }
+
     copy_file(&root.join("index.html"), &dist.join("index.html"))?;
     copy_dir(&root.join("web/static"), &dist)?;
     let examples = dist.join("examples");
@@ -71,13 +77,116 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
     let build = stamp_service_worker(&dist)?;
     eprintln!("==> build {build} stamped into sw.js");
 
-    let wasm_out = dist.join(format!("{OUT_NAME}_bg.wasm"));
     let size = std::fs::metadata(&wasm_out).map(|m| m.len()).unwrap_or(0);
+    let gzipped = precompress(&dist)?;
     eprintln!(
-        "==> dist/ is ready ({:.1} MB of wasm)",
-        size as f64 / 1_000_000.0
+        "==> dist/ is ready ({:.1} MB of wasm; {:.1} MB to download, gzipped)",
+        size as f64 / 1_000_000.0,
+        gzipped as f64 / 1_000_000.0
     );
     Ok(dist)
+}
+
+/// binaryen, whose wasm-opt shrinks the wasm. From the npm registry, since
+/// Debian's (108) turns wasm-bindgen's externref table into a function table
+/// and the page then fails to start.
+const BINARYEN: &str = "binaryen@132.0.0";
+
+/// The wasm features rustc's wasm32 target emits (and SIMD, which
+/// .cargo/config.toml turns on), which wasm-opt must be told it may keep.
+const WASM_FEATURES: [&str; 7] = [
+    "--enable-simd",
+    "--enable-bulk-memory",
+    "--enable-sign-ext",
+    "--enable-mutable-globals",
+    "--enable-nontrapping-float-to-int",
+    "--enable-reference-types",
+    "--enable-multivalue",
+];
+
+/// wasm-opt, installed with npm under target/tools on first use.
+fn wasm_opt(root: &Path) -> anyhow::Result<PathBuf> {
+    let prefix = target_dir(root).join("tools/binaryen");
+    let program = prefix.join("node_modules/binaryen/bin/wasm-opt");
+    if !program.exists() {
+        eprintln!("==> installing {BINARYEN} with npm");
+        std::fs::create_dir_all(&prefix)?;
+        let mut cmd = std::process::Command::new("npm");
+        cmd.args([
+            "install",
+            "--no-audit",
+            "--no-fund",
+            "--no-save",
+            "--prefix",
+        ])
+        .arg(&prefix)
+        .arg(BINARYEN);
+        process::run("npm install binaryen", &mut cmd)?;
+    }
+    Ok(program)
+}
+
+/// Optimises the bindgen'd wasm for size with wasm-opt; without node and
+/// npm the build goes on, larger.
+fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
+    let program = match wasm_opt(root) {
+        Ok(program) => program,
+        Err(error) => {
+            eprintln!("==> wasm-opt skipped (the download is larger): {error:#}");
+            return Ok(());
+        }
+    };
+    let before = std::fs::metadata(wasm).map(|m| m.len()).unwrap_or(0);
+    eprintln!("==> wasm-opt -Oz");
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(&program)
+        .arg("-Oz")
+        .args(WASM_FEATURES)
+        .arg(wasm)
+        .arg("-o")
+        .arg(wasm);
+    process::run("wasm-opt", &mut cmd)?;
+    let after = std::fs::metadata(wasm).map(|m| m.len()).unwrap_or(0);
+    eprintln!(
+        "==> wasm-opt: {:.1} MB -> {:.1} MB",
+        before as f64 / 1e6,
+        after as f64 / 1e6
+    );
+    Ok(())
+}
+
+/// Files worth compressing for the wire.
+fn compressible(path: &Path) -> bool {
+    matches!(
+        path.extension().and_then(|e| e.to_str()),
+        Some("wasm" | "js" | "html" | "css" | "svg" | "json" | "webmanifest")
+    )
+}
+
+/// Writes `NAME.gz` beside every compressible file of `dist` (level 9), for
+/// servers to send with `Content-Encoding: gzip`; returns the bytes a
+/// browser downloads, with every file that has one counted gzipped.
+fn precompress(dist: &Path) -> anyhow::Result<u64> {
+    use std::io::Write as _;
+    let mut files = Vec::new();
+    list_files(dist, &mut files)?;
+    let mut total = 0;
+    for file in files {
+        let bytes = std::fs::read(&file)?;
+        if !compressible(&file) {
+            total += bytes.len() as u64;
+            continue;
+        }
+        let mut encoder = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+        encoder.write_all(&bytes)?;
+        let gzipped = encoder.finish()?;
+        total += gzipped.len() as u64;
+        let mut name = file.clone().into_os_string();
+        name.push(".gz");
+        std::fs::write(&name, gzipped)
+            .with_context(|| format!("cannot write {}", PathBuf::from(&name).display()))?;
+    }
+    Ok(total)
 }
 
 /// Cargo's target dir: `CARGO_TARGET_DIR` when set (as for plain cargo
