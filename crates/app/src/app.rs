@@ -2,7 +2,6 @@
 //! tables, and the commands the JavaScript API and the UI share.
 
 use crate::command::{Command, CommandError};
-use crate::history::Kind;
 use edgewise_core::schema::{Column, ElementKind, ElementRef};
 use edit_menu::EditMenu;
 use egui_extras::{Size, StripBuilder};
@@ -28,7 +27,7 @@ use crate::{
     },
     tables::{self, TablesResponse},
     theme::Theme,
-    view3d::{DrawIds, MeshGeometry, Pointer, SceneStyles, ViewOptions},
+    view3d::{DrawIds, Pointer, SceneStyles, ViewOptions},
 };
 
 pub mod algorithm_ui;
@@ -39,6 +38,7 @@ pub mod embed;
 pub mod execute;
 pub mod files;
 mod open_dialog;
+mod pending;
 pub mod settings_ui;
 pub(crate) mod tabs;
 mod twin;
@@ -89,6 +89,8 @@ pub struct EdgewiseApp {
     ctx: Option<egui::Context>,
     /// Opening and saving files (see `files.rs`).
     pub(crate) files: FileState,
+    /// How meshes prepared a slice per frame ended (see `pending.rs`).
+    jobs: pending::JobLog,
 }
 
 impl EdgewiseApp {
@@ -138,6 +140,7 @@ impl EdgewiseApp {
             show_obj_editor: false,
             ctx: None,
             files: FileState::default(),
+            jobs: pending::JobLog::default(),
         }
     }
 
@@ -235,19 +238,8 @@ impl EdgewiseApp {
         merge: bool,
     ) -> Result<(), CommandError> {
         let document = loaded?;
-        let tab = self.tab_mut();
-        tab.structure = document.structure();
-        tab.view
-            .set_geometry(MeshGeometry::from_mesh(document.mesh()), frame);
-        let label = format!("open {}", document.name);
-        let before = tab.document.replace(document);
-        tab.history.record(label, Kind::Load, before, merge);
-        tab.rediagnose();
-        tab.diagnosable = None;
-        tab.renumbering = None;
-        tab.run.mesh_changed();
-        tab.paint_key = None;
-        tab.error = None;
+        let label = format!("Opening {}", document.name);
+        self.show_document(document, pending::Commit::Open { frame, merge }, label);
         Ok(())
     }
 
@@ -269,30 +261,22 @@ impl EdgewiseApp {
     /// selection.
     fn convert_to(&mut self, structure: Structure) -> Result<(), CommandError> {
         let tab = &mut self.tabs[self.active_tab];
-        tab.structure = structure;
-        let Some(document) = &mut tab.document else {
+        let Some(document) = &tab.document else {
+            tab.structure = structure;
             return Ok(());
         };
         if document.structure() == structure {
+            tab.structure = structure;
             return Ok(());
         }
-        let before = document.clone();
-        match document.switch_structure(structure) {
-            Ok(()) => {
-                tab.history.record(
-                    format!("convert to {}", structure.prose()),
-                    Kind::Load,
-                    Some(before),
-                    false,
-                );
-                tab.view
-                    .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
-                tab.run.mesh_changed();
-                tab.paint_key = None;
-                Ok(())
-            }
-            Err(message) => Err(message.into()),
-        }
+        let mut converted = document.clone();
+        converted.switch_structure(structure)?;
+        let label = format!("Converting {} to {}", converted.name, structure.prose());
+        let commit = pending::Commit::Convert {
+            mesh_id: document.mesh_id(),
+        };
+        self.show_document(converted, commit, label);
+        Ok(())
     }
 
     /// Asks for a new frame after a command changed what is shown.
@@ -421,6 +405,16 @@ impl EdgewiseApp {
             renumbering: self.tab().renumbering.clone(),
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
             coarse_view: self.tab().view.coarse(),
+            styles_patched: self.tab().view.styles_patched(),
+            job: self
+                .tab()
+                .pending
+                .as_ref()
+                .map(|pending| crate::state::JobState {
+                    id: pending.id,
+                    label: pending.label.clone(),
+                    progress: pending.progress(),
+                }),
             stats: self.tab().stats().as_ref().map(StatsState::new),
             trace: self.trace_state(),
             pending: self.pending_state(),
@@ -827,6 +821,7 @@ impl eframe::App for EdgewiseApp {
             self.applied_theme = Some(self.theme.key());
         }
         self.receive_files(ui.ctx());
+        self.advance_pending(ui.ctx());
         self.play_tick(ui.ctx());
         // Before any panel: the tables and the view draw the same moment.
         self.refresh_styles();
@@ -884,6 +879,7 @@ impl eframe::App for EdgewiseApp {
             }
         });
         self.files_overlay_ui(ui.ctx());
+        self.pending_ui(ui.ctx());
     }
 
     #[cfg(target_arch = "wasm32")]

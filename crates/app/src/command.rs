@@ -71,6 +71,8 @@ pub enum Command {
     Start,
     /// Steps the trace forward.
     Step(usize),
+    /// Drops the mesh being opened or converted a slice per frame.
+    Cancel,
     /// Steps the trace back.
     Back(usize),
     /// Runs the call on the next step as one step.

@@ -48,6 +48,12 @@ pub struct AppState {
     /// in full (a dense mesh seen from afar).
     #[serde(rename = "coarseView")]
     pub coarse_view: bool,
+    /// Whether the view's last change of colours went to the GPU as patches
+    /// of the elements it changed (a selection, a step), not every element.
+    #[serde(rename = "stylesPatched")]
+    pub styles_patched: bool,
+    /// A large mesh being opened or converted a slice per frame, or null.
+    pub job: Option<JobState>,
     /// The edit menu, while it is open: what it offers, and why each
     /// greyed-out entry is refused.
     #[serde(rename = "editMenu")]
@@ -258,4 +264,14 @@ pub struct AlgorithmInfo {
     pub description: Option<String>,
     /// 'library', or the file the user loaded it from.
     pub origin: String,
+}
+
+/// A large mesh being prepared a slice per frame (`cancel()` drops it).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct JobState {
+    pub id: u64,
+    /// "Opening torus-200k", "Converting torus-200k to winged-edge".
+    pub label: String,
+    /// From 0 to 1.
+    pub progress: f32,
 }

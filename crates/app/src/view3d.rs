@@ -282,6 +282,70 @@ impl GpuLink {
     }
 }
 
+/// A mesh's view geometry made a slice at a time: the scene, each picking
+/// hierarchy, then the GPU arrays. Run one slice per frame, a large mesh
+/// never freezes the page; [`View3d::show_prepared`] then shows it.
+pub struct Preparation {
+    geometry: Option<MeshGeometry>,
+    scene: Option<Scene>,
+    accel: PickAccel,
+    upload: Option<GeometryUpload>,
+    with_gpu: bool,
+    done: usize,
+}
+
+impl Preparation {
+    /// How many slices there are.
+    pub const SLICES: usize = 5;
+
+    /// Geometry to prepare; `with_gpu` says whether GPU arrays are wanted
+    /// ([`View3d::has_gpu`]).
+    pub fn new(geometry: MeshGeometry, with_gpu: bool) -> Self {
+        Self {
+            geometry: Some(geometry),
+            scene: None,
+            accel: PickAccel::default(),
+            upload: None,
+            with_gpu,
+            done: 0,
+        }
+    }
+
+    /// Makes the next slice; true once every slice is made.
+    pub fn step(&mut self) -> bool {
+        match (self.done, &self.scene) {
+            (0, _) => {
+                let geometry = self.geometry.take().unwrap_or_default();
+                self.scene = Some(Scene::new(geometry));
+            }
+            (1, Some(scene)) => self.accel.build(scene, ElementKind::Vertex),
+            (2, Some(scene)) => self.accel.build(scene, ElementKind::Edge),
+            (3, Some(scene)) => self.accel.build(scene, ElementKind::Face),
+            (4, Some(scene)) if self.with_gpu => self.upload = Some(Self::upload(scene)),
+            _ => {}
+        }
+        self.done = (self.done + 1).min(Self::SLICES);
+        self.done == Self::SLICES
+    }
+
+    /// The share of the slices made, from 0 to 1.
+    pub fn progress(&self) -> f32 {
+        self.done as f32 / Self::SLICES as f32
+    }
+
+    /// The GPU arrays of a scene (their id is set when shown).
+    fn upload(scene: &Scene) -> GeometryUpload {
+        GeometryUpload {
+            id: 0,
+            spheres: spheres::instances(scene),
+            arrows: arrows::instances(scene),
+            faces: faces::corners(scene),
+            marks: orientation::instances(scene),
+            coarse: coarse::geometry(scene),
+        }
+    }
+}
+
 /// Inputs that decide the hovered element; picking reruns only when they
 /// change.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -359,24 +423,38 @@ impl View3d {
         view
     }
 
+    /// Whether the view draws with a GPU (not in headless UI tests).
+    pub fn has_gpu(&self) -> bool {
+        self.gpu.is_some()
+    }
+
     /// Replaces the geometry (a new mesh or a structure switch) and frames it
     /// if `frame` is true.
     pub fn set_geometry(&mut self, geometry: MeshGeometry, frame: bool) {
-        self.scene = Scene::new(geometry);
-        self.accel = PickAccel::new(&self.scene);
+        let prepared = Preparation::new(geometry, self.has_gpu());
+        self.show_prepared(prepared, frame);
+    }
+
+    /// Shows geometry prepared by [`Preparation`] (doing whatever slices it
+    /// has left), framing it if `frame` is true.
+    pub fn show_prepared(&mut self, mut prepared: Preparation, frame: bool) {
+        while !prepared.step() {}
+        self.scene = prepared
+            .scene
+            .take()
+            .unwrap_or_else(|| Scene::new(MeshGeometry::default()));
+        self.accel = std::mem::take(&mut prepared.accel);
         self.geometry_id = next_id();
         self.styles_key = None;
         self.highlighted.clear();
         self.hover = None;
         if let Some(gpu) = &mut self.gpu {
-            gpu.geometry = Some(Arc::new(GeometryUpload {
-                id: self.geometry_id,
-                spheres: spheres::instances(&self.scene),
-                arrows: arrows::instances(&self.scene),
-                faces: faces::corners(&self.scene),
-                marks: orientation::instances(&self.scene),
-                coarse: coarse::geometry(&self.scene),
-            }));
+            let mut upload = prepared
+                .upload
+                .take()
+                .unwrap_or_else(|| Preparation::upload(&self.scene));
+            upload.id = self.geometry_id;
+            gpu.geometry = Some(Arc::new(upload));
             gpu.styles = None;
         }
         if frame {

@@ -185,9 +185,14 @@ async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
 /// Resolves after the browser has had time to paint a frame (eframe paints
 /// on the next animation frame after a repaint request).
 async fn after_a_paint() {
+    after_ms(100).await;
+}
+
+/// Resolves after `ms` milliseconds (at once where there is no timer).
+async fn after_ms(ms: i32) {
     let promise = js_sys::Promise::new(&mut |resolve, _reject| {
         let timer = web_sys::window().map(|window| {
-            window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 100)
+            window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, ms)
         });
         // Without a timer the promise would never settle: go on at once.
         if !matches!(timer, Some(Ok(_))) {

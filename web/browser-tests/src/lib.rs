@@ -371,6 +371,45 @@ impl Browser {
 
     /// Takes a screenshot, saves it as screenshots/`name`.png for people to
     /// look at, and returns its pixels.
+    /// Runs the statements `start`, then reads the canvas as drawn by the
+    /// first animation frame after which `condition` (a JavaScript
+    /// expression) holds, inside that frame: a `WebDriver` call waits for
+    /// frames of its own, and can miss a state that lasts a few frames.
+    /// Saved like [`Self::screenshot`].
+    pub async fn canvas_when(
+        &self,
+        start: &str,
+        condition: &str,
+        name: &str,
+    ) -> anyhow::Result<Screenshot> {
+        use base64::Engine as _;
+        let url = self
+            .eval_async(&format!(
+                "(async () => {{
+                   const canvas = document.querySelector('canvas');
+                   {start}
+                   for (let i = 0; i < 2000; i++) {{
+                     await new Promise((r) => requestAnimationFrame(r));
+                     if ({condition}) return canvas.toDataURL('image/png');
+                   }}
+                   return null;
+                 }})()"
+            ))
+            .await?;
+        let url = url
+            .as_str()
+            .with_context(|| format!("`{condition}` never held"))?;
+        let data = url
+            .strip_prefix("data:image/png;base64,")
+            .context("the canvas gave no PNG")?;
+        let bytes = base64::engine::general_purpose::STANDARD.decode(data)?;
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("screenshots");
+        std::fs::create_dir_all(&dir)?;
+        let path = dir.join(format!("{name}.png"));
+        std::fs::write(&path, &bytes)?;
+        Screenshot::decode(&bytes, path)
+    }
+
     pub async fn screenshot(&self, name: &str) -> anyhow::Result<Screenshot> {
         let bytes = self
             .client

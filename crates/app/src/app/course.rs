@@ -68,6 +68,8 @@ impl EdgewiseApp {
         {
             messages.push(message.into());
         }
+        // What follows (an algorithm, a step, a selection) needs the mesh.
+        self.finish_pending();
 
         if let Some(source) = &link.algorithm_source
             && let Err(message) = self.load_algorithms(source, "link.alg")

@@ -87,6 +87,7 @@ impl EdgewiseApp {
             Command::StepOut => done(self.tab_mut().run.step_out()),
             Command::Goto(k) => done(self.tab_mut().run.goto(k)),
             Command::Abort => done(self.tab_mut().run.abort()),
+            Command::Cancel => done(self.cancel_pending()),
             Command::ToggleBreakpoint(line) => {
                 let run = &mut self.tabs[self.active_tab].run;
                 self.algorithms.toggle_breakpoint(run, line);

@@ -70,6 +70,9 @@ pub(crate) struct Tab {
     /// The statistics of the mesh with this mesh id.
     /// Kept in a cell so that `state()`, which only reads, shares it.
     stats: RefCell<Option<(u64, MeshStats)>>,
+    /// A large mesh being opened or converted, a slice per frame; the tab
+    /// shows its old mesh meanwhile.
+    pub(crate) pending: Option<super::pending::PendingMesh>,
 }
 
 impl Tab {
@@ -100,6 +103,7 @@ impl Tab {
             edit_menu: None,
             last_changes: Vec::new(),
             stats: RefCell::new(None),
+            pending: None,
         }
     }
 

@@ -53,7 +53,11 @@ pub fn geometry(scene: &Scene) -> CoarseGeometry {
         lines.extend([edge.start, edge.end]);
     }
     CoarseGeometry {
-        positions: geometry.positions.iter().map(glam::Vec3::to_array).collect(),
+        positions: geometry
+            .positions
+            .iter()
+            .map(glam::Vec3::to_array)
+            .collect(),
         lines,
         triangles: scene.triangles.iter().flatten().copied().collect(),
     }

@@ -30,31 +30,49 @@ pub struct PickAccel {
 }
 
 impl PickAccel {
+    /// Every hierarchy at once.
+    #[cfg(test)]
     pub fn new(scene: &Scene) -> Self {
-        let vertex_boxes: Vec<(Vec3, Vec3)> = (0..scene.vertex_count())
-            .map(|v| {
-                let p = scene.position(u32::try_from(v).unwrap_or(u32::MAX));
-                (p, p)
-            })
-            .collect();
-        let edge_boxes: Vec<(Vec3, Vec3)> = scene
-            .arrow_starts
-            .iter()
-            .zip(&scene.arrow_ends)
-            .map(|(a, b)| (a.min(*b), a.max(*b)))
-            .collect();
-        let face_boxes: Vec<(Vec3, Vec3)> = scene
-            .triangles
-            .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|v| scene.position(v));
-                (a.min(b).min(c), a.max(b).max(c))
-            })
-            .collect();
-        Self {
-            vertices: Bvh::build(&vertex_boxes),
-            edges: Bvh::build(&edge_boxes),
-            faces: Bvh::build(&face_boxes),
+        let mut accel = Self::default();
+        for kind in [ElementKind::Vertex, ElementKind::Edge, ElementKind::Face] {
+            accel.build(scene, kind);
+        }
+        accel
+    }
+
+    /// Builds the hierarchy of one kind of element (a slice of
+    /// [`super::Preparation`]).
+    pub fn build(&mut self, scene: &Scene, kind: ElementKind) {
+        match kind {
+            ElementKind::Vertex => {
+                let boxes: Vec<(Vec3, Vec3)> = (0..scene.vertex_count())
+                    .map(|v| {
+                        let p = scene.position(u32::try_from(v).unwrap_or(u32::MAX));
+                        (p, p)
+                    })
+                    .collect();
+                self.vertices = Bvh::build(&boxes);
+            }
+            ElementKind::Edge => {
+                let boxes: Vec<(Vec3, Vec3)> = scene
+                    .arrow_starts
+                    .iter()
+                    .zip(&scene.arrow_ends)
+                    .map(|(a, b)| (a.min(*b), a.max(*b)))
+                    .collect();
+                self.edges = Bvh::build(&boxes);
+            }
+            ElementKind::Face => {
+                let boxes: Vec<(Vec3, Vec3)> = scene
+                    .triangles
+                    .iter()
+                    .map(|t| {
+                        let [a, b, c] = t.map(|v| scene.position(v));
+                        (a.min(b).min(c), a.max(b).max(c))
+                    })
+                    .collect();
+                self.faces = Bvh::build(&boxes);
+            }
         }
     }
 }

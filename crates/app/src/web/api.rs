@@ -21,7 +21,7 @@ use super::arguments::{
     MAX_NAME_CHARS, arguments, check_options, expected, option_bool, option_string, shown,
     structure_option, text_argument, whole_number,
 };
-use super::{after_a_paint, with_app};
+use super::{after_a_paint, after_ms, with_app};
 use crate::{
     EdgewiseApp,
     command::Command,
@@ -137,6 +137,11 @@ const COMMANDS: &[CommandEntry] = &[
         name: "abort",
         call: "abort()",
         read: |_, _, _| Ok(Command::Abort),
+    },
+    CommandEntry {
+        name: "cancel",
+        call: "cancel()",
+        read: |_, _, _| Ok(Command::Cancel),
     },
     CommandEntry {
         name: "edit",
@@ -402,7 +407,13 @@ pub(super) fn install(runner: &eframe::WebRunner) -> Result<(), JsValue> {
 fn perform(runner: &eframe::WebRunner, command: Command) -> js_sys::Promise {
     let large = matches!(&command, Command::LoadMesh { bytes, .. } if bytes.len() > ANNOUNCE_BYTES);
     if !large {
-        return settle(execute(runner, command));
+        let before = with_app(runner, |app| app.pending_job()).ok().flatten();
+        let result = execute(runner, command);
+        let started = with_app(runner, |app| app.pending_job()).ok().flatten();
+        return match (result, started) {
+            (Ok(()), Some(job)) if started != before => until_shown(runner.clone(), job),
+            (result, _) => settle(result),
+        };
     }
     let label = match &command {
         Command::LoadMesh { bytes, .. } => opening_label("the text", bytes.len()),
@@ -418,6 +429,21 @@ fn perform(runner: &eframe::WebRunner, command: Command) -> js_sys::Promise {
         execute(&runner, command)
             .map(|()| JsValue::NULL)
             .map_err(|message| js_sys::Error::new(&message).into())
+    })
+}
+
+/// Settles once the large mesh of job `job` is shown (a slice per frame),
+/// or fails if it was cancelled or replaced.
+fn until_shown(runner: eframe::WebRunner, job: u64) -> js_sys::Promise {
+    wasm_bindgen_futures::future_to_promise(async move {
+        loop {
+            after_ms(16).await;
+            match with_app(&runner, |app| app.job_outcome(job))? {
+                None => {}
+                Some(Ok(())) => return Ok(JsValue::NULL),
+                Some(Err(why)) => return Err(js_sys::Error::new(&why).into()),
+            }
+        }
     })
 }
 
