@@ -56,6 +56,9 @@ enum AlgorithmTab {
 pub struct EdgewiseApp {
     backend: GraphicsBackend,
     frames: u64,
+    /// Milliseconds the previous frame took on the main thread (its UI and
+    /// its rendering commands), from eframe.
+    frame_cpu_ms: Option<f32>,
     theme: Theme,
     /// Every open mesh; never empty. Commands and drawing act on
     /// `tabs[active_tab]`.
@@ -117,6 +120,7 @@ impl EdgewiseApp {
         Self {
             backend,
             frames: 0,
+            frame_cpu_ms: None,
             theme: Theme::light(),
             tabs: vec![tabs::Tab::new(render_state, Structure::WingedEdge)],
             active_tab: 0,
@@ -384,6 +388,7 @@ impl EdgewiseApp {
             version: edgewise_core::VERSION,
             backend: self.backend.as_str(),
             frames: self.frames,
+            frame_cpu_ms: self.frame_cpu_ms,
             mesh: doc.map(|d| d.name.clone()),
             structure: doc.map(|d| d.structure().link_name()),
             counts,
@@ -810,8 +815,9 @@ fn is_source_diagram_line(line: &str) -> bool {
 }
 
 impl eframe::App for EdgewiseApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.frames += 1;
+        self.frame_cpu_ms = frame.info().cpu_usage.map(|seconds| seconds * 1000.0);
         if !self.fonts_installed {
             crate::theme::install_fonts(ui.ctx());
             self.fonts_installed = true;

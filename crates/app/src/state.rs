@@ -22,6 +22,10 @@ pub struct AppState {
     pub backend: &'static str,
     /// Frames drawn so far; proves the render loop is alive.
     pub frames: u64,
+    /// Milliseconds the previous frame took on the page's main thread (the
+    /// UI and issuing its drawing), or null before the second frame.
+    #[serde(rename = "frameCpuMs")]
+    pub frame_cpu_ms: Option<f32>,
     /// The open mesh's name, or null before any mesh is open.
     pub mesh: Option<String>,
     /// "winged" or "half", or null before any mesh is open.

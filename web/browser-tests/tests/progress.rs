@@ -1,4 +1,4 @@
-//! A large mesh opens a slice per frame: the page keeps painting, shows a
+//! A large mesh opens in slices across frames: the page keeps painting, shows a
 //! progress bar with Cancel, and the old mesh stays until the new one is
 //! ready (or for good, after Cancel, from the API or the Esc key).
 
@@ -46,7 +46,10 @@ async fn a_large_mesh_shows_progress_and_cancel_keeps_the_old_one() -> anyhow::R
     assert_eq!(state["counts"]["faces"], 316 * 316 * 2);
     assert!(state["job"].is_null());
     let frames = state["frames"].as_u64().unwrap_or(0) - frames_before;
-    assert!(frames >= 4, "one frame per slice at least: {frames}");
+    assert!(
+        frames >= 2,
+        "the page painted while the torus loaded: {frames}"
+    );
 
     // Opening it again: the progress bar shows while it is prepared, and
     // Esc cancels it.
@@ -56,11 +59,19 @@ async fn a_large_mesh_shows_progress_and_cancel_keeps_the_old_one() -> anyhow::R
                 "(() => {{ {} }})();",
                 START_LOAD.replace("'half'", "'winged'")
             ),
-            "(window.edgewise.state().job || { progress: 0 }).progress > 0.3",
+            // The first frame after: what it showed is kept.
+            "(window.__jobSeen = window.edgewise.state().job, true)",
             "progress-opening-torus",
         )
         .await?;
     assert!(shot.distinct_colours(64) > 4, "the app is drawn");
+    let seen = browser.eval("return window.__jobSeen;").await?;
+    // A fast machine may prepare the whole mesh within the first frame's
+    // time budget; otherwise that frame shows the bar part way.
+    if !seen.is_null() {
+        let progress = seen["progress"].as_f64().unwrap_or(0.0);
+        assert!(progress > 0.0 && progress < 1.0, "{seen}");
+    }
     browser.press_key("Escape", 0).await?;
     let outcome = browser.eval_async("window.__load").await?;
     let state = browser.state().await?;

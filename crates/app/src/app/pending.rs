@@ -1,5 +1,5 @@
-//! Opening or converting a large mesh a slice at a time, one slice per
-//! frame, so the page keeps painting: a progress bar shows how far it is and
+//! Opening or converting a large mesh in slices across frames (as many as
+//! fit in a frame's time budget), so the page keeps painting: a progress bar shows how far it is and
 //! Cancel drops it. The tab keeps showing its old mesh until the new one is
 //! ready; small meshes are shown at once.
 
@@ -12,9 +12,14 @@ use crate::document::Document;
 use crate::history::Kind;
 use crate::view3d::{MeshGeometry, Preparation};
 
-/// Meshes with more faces than this are prepared a slice per frame; below
+/// Meshes with more faces than this are prepared in slices across frames; below
 /// it, all of the work takes a few frames' time.
 pub(crate) const LARGE_FACES: usize = 50_000;
+
+/// A frame makes slices until it has spent this long on them, so a fast
+/// machine shows a large mesh in a frame or two and a slow one keeps
+/// painting between slices.
+const SLICE_BUDGET: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// How many finished jobs are remembered for the JavaScript API to collect.
 const JOBS_REMEMBERED: usize = 16;
@@ -68,7 +73,7 @@ impl JobLog {
 
 impl EdgewiseApp {
     /// Shows `document` in the active tab as `commit` says: at once if it is
-    /// small, else a slice per frame from now on.
+    /// small, else in slices across the next frames.
     pub(crate) fn show_document(&mut self, document: Document, commit: Commit, label: String) {
         let geometry = MeshGeometry::from_mesh(document.mesh());
         let large = document.mesh().face_count() > LARGE_FACES;
@@ -109,16 +114,20 @@ impl EdgewiseApp {
             .map(|(_, outcome)| outcome.clone().map_or(Ok(()), Err))
     }
 
-    /// Makes one slice of every tab's pending mesh, and shows those that are
-    /// ready. Called once per frame.
+    /// Makes slices of every tab's pending mesh, at least one and then as
+    /// many as fit in [`SLICE_BUDGET`], and shows those that are ready.
+    /// Called once per frame.
     pub(crate) fn advance_pending(&mut self, ctx: &egui::Context) {
+        let start = web_time::Instant::now();
         for index in 0..self.tabs.len() {
             let Some(pending) = &mut self.tabs[index].pending else {
                 continue;
             };
-            if pending.preparation.step()
-                && let Some(pending) = self.tabs[index].pending.take()
-            {
+            let mut ready = pending.preparation.step();
+            while !ready && start.elapsed() < SLICE_BUDGET {
+                ready = pending.preparation.step();
+            }
+            if ready && let Some(pending) = self.tabs[index].pending.take() {
                 self.commit_pending(index, pending);
             }
             ctx.request_repaint();

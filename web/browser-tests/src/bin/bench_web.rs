@@ -49,7 +49,8 @@ fn timed(call: &str) -> String {
 }
 
 /// Drags across the middle of the canvas for `seconds`, one pointer move
-/// per animation frame, and counts the app's frames meanwhile.
+/// per animation frame, and counts the app's frames meanwhile; also the
+/// mean time a frame took on the main thread (`state().frameCpuMs`).
 fn orbit(seconds: f64) -> String {
     format!(
         "(async () => {{
@@ -68,9 +69,13 @@ fn orbit(seconds: f64) -> String {
            fire('down', x, 1);
            const before = window.edgewise.state().frames;
            const start = performance.now();
-           let step = 3;
+           let step = 3, cpu = 0, samples = 0, seen = before;
            while (performance.now() - start < {seconds} * 1000) {{
              await new Promise((r) => requestAnimationFrame(r));
+             const state = window.edgewise.state();
+             if (state.frames !== seen && state.frameCpuMs !== null) {{
+               cpu += state.frameCpuMs; samples += 1; seen = state.frames;
+             }}
              x += step;
              if (x > r.left + r.width * 0.7 || x < r.left + r.width * 0.3) step = -step;
              fire('move', x, 1);
@@ -78,7 +83,7 @@ fn orbit(seconds: f64) -> String {
            const frames = window.edgewise.state().frames - before;
            const secs = (performance.now() - start) / 1000;
            fire('up', x, 0);
-           return frames / secs;
+           return [frames / secs, samples ? cpu / samples : null];
          }})()"
     )
 }
@@ -207,7 +212,8 @@ async fn main() -> anyhow::Result<()> {
                 format!("longest freeze {}", ms(&loaded[1])),
             ));
         }
-        let rate = app.eval_async(&orbit(ORBIT_SECONDS)).await?;
+        let orbited = app.eval_async(&orbit(ORBIT_SECONDS)).await?;
+        let rate = orbited[0].clone();
         let baseline_cell = if sample == "torus-200k" {
             torus_fps = rate.clone();
             fps(&baseline_fps)
@@ -218,7 +224,7 @@ async fn main() -> anyhow::Result<()> {
             &format!("orbit {sample}"),
             fps(&rate),
             &baseline_cell,
-            String::new(),
+            format!("main thread {} a frame", ms(&orbited[1])),
         ));
     }
     if let (Some(app_fps), Some(base)) = (torus_fps.as_f64(), baseline_fps.as_f64())
