@@ -116,7 +116,12 @@ async fn forward(
             .next()
             .unwrap_or_default()
             .to_ascii_lowercase();
-        if line.is_empty() || (i > 0 && matches!(name.as_str(), "connection" | "keep-alive")) {
+        // Bodies are asked for uncompressed, so that sw.js can be changed.
+        let dropped = matches!(
+            name.as_str(),
+            "connection" | "keep-alive" | "accept-encoding"
+        );
+        if line.is_empty() || (i > 0 && dropped) {
             continue;
         }
         request.push_str(line);
