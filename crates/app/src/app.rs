@@ -204,7 +204,7 @@ impl EdgewiseApp {
             .into());
         };
         let structure = match &sample.data {
-            SampleData::File { file_name, .. } => {
+            SampleData::File { file_name, .. } | SampleData::Icosphere { file_name, .. } => {
                 structure.unwrap_or_else(|| self.default_structure_for(file_name))
             }
             SampleData::Torus { .. } => structure.unwrap_or(self.tab().structure),
@@ -213,6 +213,9 @@ impl EdgewiseApp {
             SampleData::File { file_name, bytes } => Document::load(bytes, file_name, structure),
             SampleData::Torus { nu, nv } => {
                 Document::from_polygons(sample.name, &generate::torus(*nu, *nv), structure)
+            }
+            SampleData::Icosphere { file_name, levels } => {
+                Document::from_polygons(file_name, &generate::icosphere(*levels), structure)
             }
         };
         let loaded = loaded.map(|mut document| {

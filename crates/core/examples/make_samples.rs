@@ -100,7 +100,7 @@ fn samples() -> Vec<Sample> {
             ..sample(
                 "icosahedron.ply",
                 "A regular icosahedron: 20 triangles, valence 5.",
-                &icosahedron(),
+                &generate::icosphere(0),
             )
         },
         sample(
@@ -159,7 +159,7 @@ fn samples() -> Vec<Sample> {
             ..sample(
                 "icosphere-20k.ply",
                 "A subdivided icosahedron of 20,480 triangles.",
-                &icosphere(5),
+                &generate::icosphere(5),
             )
         },
         sample(
@@ -346,22 +346,6 @@ fn octahedron() -> Polygons {
 }
 
 const PHI: f64 = 1.618_033_988_749_895;
-
-fn icosahedron_points() -> Vec<DVec3> {
-    let mut points = Vec::new();
-    for a in [-1.0, 1.0] {
-        for b in [-PHI, PHI] {
-            points.push(DVec3::new(0.0, a, b));
-            points.push(DVec3::new(a, b, 0.0));
-            points.push(DVec3::new(b, 0.0, a));
-        }
-    }
-    points.iter().map(|p| p.normalize()).collect()
-}
-
-fn icosahedron() -> Polygons {
-    hull_polygons(&icosahedron_points())
-}
 
 fn dodecahedron() -> Polygons {
     let mut points = Vec::new();
@@ -594,37 +578,6 @@ fn uv_sphere(slices: u32, stacks: u32) -> Polygons {
             orient(&points, face, outward)
         })
         .collect();
-    to_polygons(&points, &faces)
-}
-
-fn icosphere(levels: u32) -> Polygons {
-    let mut points = icosahedron_points();
-    let mut faces = convex_hull(&points);
-    for _ in 0..levels {
-        let mut middle: HashMap<(u32, u32), u32> = HashMap::new();
-        let mut split = |a: u32, b: u32, points: &mut Vec<DVec3>| {
-            *middle.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                points.push(((points[a as usize] + points[b as usize]) / 2.0).normalize());
-                points.len() as u32 - 1
-            })
-        };
-        let mut finer = Vec::with_capacity(faces.len() * 4);
-        for face in &faces {
-            let [a, b, c] = [face[0], face[1], face[2]];
-            let (ab, bc, ca) = (
-                split(a, b, &mut points),
-                split(b, c, &mut points),
-                split(c, a, &mut points),
-            );
-            finer.extend([
-                vec![a, ab, ca],
-                vec![ab, b, bc],
-                vec![ca, bc, c],
-                vec![ab, bc, ca],
-            ]);
-        }
-        faces = finer;
-    }
     to_polygons(&points, &faces)
 }
 

@@ -269,3 +269,19 @@ fn the_200k_face_torus_round_trips_through_every_format() {
         );
     }
 }
+
+#[test]
+fn the_generated_icospheres_are_their_sample_files_exactly() {
+    // The app generates icosphere-20k rather than ship it: every id and
+    // every position bit must be the file's.
+    for (name, levels) in [("icosahedron.ply", 0), ("icosphere-20k.ply", 5)] {
+        let bytes = std::fs::read(meshes_dir().join(name)).expect("sample");
+        for structure in STRUCTURES {
+            let file = formats::load(&bytes, name, structure).expect("loads").mesh;
+            let (generated, warnings) =
+                Mesh::build(&generate::icosphere(levels), structure).expect("builds");
+            assert!(warnings.is_empty(), "{name}: {warnings:?}");
+            assert!(generated == file, "{name} as {structure:?}");
+        }
+    }
+}

@@ -73,6 +73,13 @@ async fn a_large_mesh_shows_progress_and_cancel_keeps_the_old_one() -> anyhow::R
         assert!(progress > 0.0 && progress < 1.0, "{seen}");
     }
     browser.press_key("Escape", 0).await?;
+    // The key is handled in the app's next animation frame: wait two, so
+    // that a late Esc cannot cancel the switch below instead.
+    browser
+        .eval_async(
+            "new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true))))",
+        )
+        .await?;
     let outcome = browser.eval_async("window.__load").await?;
     let state = browser.state().await?;
     if outcome == "shown" {

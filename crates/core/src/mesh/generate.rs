@@ -2,9 +2,10 @@
 //! small meshes that tests, examples and the sample library share, so each
 //! one's numbering (which tests and golden files pin) is written down once.
 
+use std::collections::HashMap;
 use std::f32::consts::TAU;
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
@@ -70,6 +71,80 @@ pub fn torus(nu: u32, nv: u32) -> Polygons {
         }
     }
     polygons
+}
+
+/// The golden ratio, for the icosahedron's corners.
+const PHI: f64 = 1.618_033_988_749_895;
+
+/// The regular icosahedron's 20 faces, counter-clockwise from outside, each
+/// from its lowest vertex, in the order the sample files list them.
+const ICOSAHEDRON_FACES: [[u32; 3]; 20] = [
+    [0, 1, 2],
+    [0, 7, 1],
+    [0, 2, 6],
+    [0, 6, 5],
+    [0, 5, 7],
+    [1, 8, 2],
+    [1, 7, 3],
+    [1, 3, 8],
+    [2, 4, 6],
+    [2, 8, 4],
+    [3, 7, 11],
+    [3, 9, 8],
+    [3, 11, 9],
+    [4, 10, 6],
+    [4, 8, 9],
+    [4, 9, 10],
+    [5, 6, 10],
+    [5, 11, 7],
+    [5, 10, 11],
+    [9, 11, 10],
+];
+
+/// A regular icosahedron on the unit sphere with each triangle split in four
+/// `levels` times, the new vertices pushed out onto the sphere: `20·4^levels`
+/// triangles. Level 0 is meshes/icosahedron.ply and level 5 is
+/// meshes/icosphere-20k.ply, exactly: the app generates that sample rather
+/// than ship it. Computed in f64 and rounded once, as the files were.
+/// Levels above 9 (over 5M triangles) give an empty list.
+///
+/// ```
+/// let sphere = edgewise_core::mesh::generate::icosphere(1);
+/// assert_eq!((sphere.vertex_count(), sphere.face_count()), (42, 80));
+/// ```
+pub fn icosphere(levels: u32) -> Polygons {
+    if levels > 9 {
+        return Polygons::new();
+    }
+    let mut points = Vec::with_capacity(10 * (1 << (2 * levels)) + 2);
+    for a in [-1.0, 1.0] {
+        for b in [-PHI, PHI] {
+            points.push(DVec3::new(0.0, a, b).normalize());
+            points.push(DVec3::new(a, b, 0.0).normalize());
+            points.push(DVec3::new(b, 0.0, a).normalize());
+        }
+    }
+    let mut faces = ICOSAHEDRON_FACES.to_vec();
+    for _ in 0..levels {
+        // Each edge is split once, by whichever of its faces comes first.
+        let mut middle: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 3 / 2);
+        let mut split = |a: u32, b: u32, points: &mut Vec<DVec3>| {
+            *middle.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                points.push(((points[a as usize] + points[b as usize]) / 2.0).normalize());
+                points.len() as u32 - 1
+            })
+        };
+        let mut finer = Vec::with_capacity(faces.len() * 4);
+        for &[a, b, c] in &faces {
+            let ab = split(a, b, &mut points);
+            let bc = split(b, c, &mut points);
+            let ca = split(c, a, &mut points);
+            finer.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+        }
+        faces = finer;
+    }
+    let positions = points.iter().map(|p| p.as_vec3()).collect();
+    Polygons::from_triangles(positions, &faces)
 }
 
 /// The journal paper's tetrahedron (Fig. 2): vertices A, B, C, D are 0–3 and
