@@ -124,7 +124,11 @@ impl EdgewiseApp {
             theme: Theme::light(),
             tabs: vec![tabs::Tab::new(render_state, Structure::WingedEdge)],
             active_tab: 0,
-            view_options: ViewOptions::default(),
+            // The frame is cleared to the view's background (`clear_color`).
+            view_options: ViewOptions {
+                backdrop_cleared: true,
+                ..ViewOptions::default()
+            },
             algorithms: Algorithms::default(),
             show_algorithm_panel: false,
             algorithm_tab: AlgorithmTab::Run,
@@ -818,6 +822,10 @@ fn is_source_diagram_line(line: &str) -> bool {
 }
 
 impl eframe::App for EdgewiseApp {
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        crate::theme::backdrop(visuals.dark_mode)
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.frames += 1;
         self.frame_cpu_ms = frame.info().cpu_usage.map(|seconds| seconds * 1000.0);
@@ -874,19 +882,21 @@ impl eframe::App for EdgewiseApp {
                 .min_size(120.0)
                 .show(ui, |ui| self.tables_ui(ui));
         }
-        egui::CentralPanel::default().show(ui, |ui| {
-            self.error_ui(ui);
-            if self.side_by_side && self.tab().document.is_some() {
-                StripBuilder::new(ui)
-                    .sizes(Size::remainder(), 2)
-                    .horizontal(|mut strip| {
-                        strip.cell(|ui| self.view_ui(ui));
-                        strip.cell(|ui| self.twin_view_ui(ui));
-                    });
-            } else {
-                self.view_ui(ui);
-            }
-        });
+        egui::CentralPanel::default()
+            .frame(crate::theme::central_frame(ui.style()))
+            .show(ui, |ui| {
+                self.error_ui(ui);
+                if self.side_by_side && self.tab().document.is_some() {
+                    StripBuilder::new(ui)
+                        .sizes(Size::remainder(), 2)
+                        .horizontal(|mut strip| {
+                            strip.cell(|ui| self.view_ui(ui));
+                            strip.cell(|ui| self.twin_view_ui(ui));
+                        });
+                } else {
+                    self.view_ui(ui);
+                }
+            });
         self.files_overlay_ui(ui.ctx());
         self.pending_ui(ui.ctx());
     }

@@ -3,10 +3,24 @@
 
 use egui::Color32;
 
+use crate::view3d::Palette;
 use crate::{selection::Role, trace_role::TraceRole};
 
 /// The bold code face for keywords (egui ships only a regular monospace).
 const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
+
+/// What the frame is cleared to: the 3D view's background. Panels around
+/// the view fill themselves; the central panel and the view do not fill
+/// again over the clear, so the view's pixels are not painted twice (a
+/// software renderer pays tens of milliseconds for each full-view fill).
+pub fn backdrop(dark: bool) -> [f32; 4] {
+    Palette::new(dark).background.to_normalized_gamma_f32()
+}
+
+/// The central panel's frame: its margins without a fill (see [`backdrop`]).
+pub fn central_frame(style: &egui::Style) -> egui::Frame {
+    egui::Frame::central_panel(style).fill(Color32::TRANSPARENT)
+}
 
 /// The app's visual theme.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]

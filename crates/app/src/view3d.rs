@@ -217,6 +217,10 @@ pub struct ViewOptions {
     pub solid_faces: bool,
     pub pickable: PickFilter,
     pub dark: bool,
+    /// The frame was cleared to the background colour
+    /// ([`Palette::background`]), so the view does not fill it again: each
+    /// full-view fill costs a software renderer tens of milliseconds.
+    pub backdrop_cleared: bool,
 }
 
 impl Default for ViewOptions {
@@ -230,6 +234,7 @@ impl Default for ViewOptions {
             solid_faces: false,
             pickable: PickFilter::All,
             dark: false,
+            backdrop_cleared: false,
         }
     }
 }
@@ -630,7 +635,9 @@ impl View3d {
 
         // Paint: background, the 3D callback, then overlays.
         let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 0.0, palette.background);
+        if !options.backdrop_cleared {
+            painter.rect_filled(rect, 0.0, palette.background);
+        }
         self.add_callback(&painter, rect, &transforms, options, &palette);
         let overlay = labels::Overlay {
             painter: &painter,

@@ -64,7 +64,10 @@ impl TestRenderer for DepthRenderer {
             pixels_per_point: ppp,
         };
         let jobs = ctx.tessellate(output.shapes.clone(), ppp);
-        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, wgpu::Color::TRANSPARENT)?;
+        // Cleared as eframe clears the app's frame.
+        let [r, g, b, a] = edgewise_app::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
+        let clear = wgpu::Color { r, g, b, a };
+        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, clear)?;
         image::RgbaImage::from_raw(width, height, pixels)
             .ok_or_else(|| "the readback has the wrong size".to_owned())
     }
