@@ -882,21 +882,19 @@ impl eframe::App for EdgewiseApp {
                 .min_size(120.0)
                 .show(ui, |ui| self.tables_ui(ui));
         }
-        egui::CentralPanel::default()
-            .frame(crate::theme::central_frame(ui.style()))
-            .show(ui, |ui| {
-                self.error_ui(ui);
-                if self.side_by_side && self.tab().document.is_some() {
-                    StripBuilder::new(ui)
-                        .sizes(Size::remainder(), 2)
-                        .horizontal(|mut strip| {
-                            strip.cell(|ui| self.view_ui(ui));
-                            strip.cell(|ui| self.twin_view_ui(ui));
-                        });
-                } else {
-                    self.view_ui(ui);
-                }
-            });
+        egui::CentralPanel::default().show(ui, |ui| {
+            self.error_ui(ui);
+            if self.side_by_side && self.tab().document.is_some() {
+                StripBuilder::new(ui)
+                    .sizes(Size::remainder(), 2)
+                    .horizontal(|mut strip| {
+                        strip.cell(|ui| self.view_ui(ui));
+                        strip.cell(|ui| self.twin_view_ui(ui));
+                    });
+            } else {
+                self.view_ui(ui);
+            }
+        });
         self.files_overlay_ui(ui.ctx());
         self.pending_ui(ui.ctx());
     }

@@ -9,17 +9,13 @@ use crate::{selection::Role, trace_role::TraceRole};
 /// The bold code face for keywords (egui ships only a regular monospace).
 const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
 
-/// What the frame is cleared to: the 3D view's background. Panels around
-/// the view fill themselves; the central panel and the view do not fill
-/// again over the clear, so the view's pixels are not painted twice (a
-/// software renderer pays tens of milliseconds for each full-view fill).
+/// What the frame is cleared to: the 3D view's background, which is also
+/// the panels' colour. Panels draw no fill of their own and the app's views
+/// none over the clear ([`crate::view3d::ViewOptions::backdrop_cleared`]):
+/// a software renderer pays tens of milliseconds for each full-window fill,
+/// and each pixel is now filled once.
 pub fn backdrop(dark: bool) -> [f32; 4] {
     Palette::new(dark).background.to_normalized_gamma_f32()
-}
-
-/// The central panel's frame: its margins without a fill (see [`backdrop`]).
-pub fn central_frame(style: &egui::Style) -> egui::Frame {
-    egui::Frame::central_panel(style).fill(Color32::TRANSPARENT)
 }
 
 /// The app's visual theme.
@@ -60,8 +56,9 @@ impl Theme {
         } else {
             egui::Visuals::light()
         };
+        // Panels show the cleared frame ([`backdrop`]).
+        visuals.panel_fill = Color32::TRANSPARENT;
         if !self.dark {
-            visuals.panel_fill = Color32::from_rgb(0xf4, 0xf3, 0xef);
             visuals.window_fill = Color32::from_rgb(0xfa, 0xf9, 0xf6);
             visuals.extreme_bg_color = Color32::from_rgb(0xfd, 0xfd, 0xfb);
         }

@@ -65,7 +65,8 @@ impl TestRenderer for DepthRenderer {
         };
         let jobs = ctx.tessellate(output.shapes.clone(), ppp);
         // Cleared as eframe clears the app's frame.
-        let [r, g, b, a] = edgewise_app::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
+        let [r, g, b, a] =
+            edgewise_app::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
         let clear = wgpu::Color { r, g, b, a };
         let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, clear)?;
         image::RgbaImage::from_raw(width, height, pixels)

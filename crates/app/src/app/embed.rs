@@ -45,11 +45,9 @@ impl EdgewiseApp {
                 .min_size(100.0)
                 .show(ui, |ui| self.tables_ui(ui));
         }
-        egui::CentralPanel::default()
-            .frame(crate::theme::central_frame(ui.style()))
-            .show(ui, |ui| {
-                self.error_ui(ui);
-                self.view_ui(ui);
-            });
+        egui::CentralPanel::default().show(ui, |ui| {
+            self.error_ui(ui);
+            self.view_ui(ui);
+        });
     }
 }
