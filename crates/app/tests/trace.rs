@@ -86,6 +86,52 @@ fn vertex_adjacent_edge_marks_every_edge_at_the_vertex() {
 }
 
 #[test]
+fn a_mark_step_shows_its_element_blue_though_a_variable_names_it() {
+    let mut harness = support::harness_with("tetrahedron", None);
+    run(&mut harness, "vertexAdjacentEdge", 1.0);
+    let trace = loop {
+        harness.state_mut().trace_step(1).expect("steps");
+        harness.run();
+        let trace = harness.state().state().trace.expect("a trace");
+        assert!(!trace.done, "the run marks something");
+        if trace.operation == "mark" {
+            break trace;
+        }
+    };
+    let state = harness.state().state();
+    let named = trace.variables["e"].clone();
+    let first_role = |kind, id| {
+        state
+            .highlights
+            .iter()
+            .find(|h| (h.kind, h.id) == (kind, id))
+            .map(|h| h.role.clone())
+    };
+    let &marked = trace.marked.last().expect("one mark so far");
+    assert_eq!(
+        named,
+        format!("Edge {}", marked.id),
+        "e names the marked edge"
+    );
+    assert_eq!(
+        first_role(marked.kind, marked.id).as_deref(),
+        Some("marked"),
+        "{:?}",
+        state.highlights
+    );
+    // The next step, it shows as the variable's again.
+    harness.state_mut().trace_step(1).expect("steps");
+    harness.run();
+    let state = harness.state().state();
+    let role = state
+        .highlights
+        .iter()
+        .find(|h| (h.kind, h.id) == (marked.kind, marked.id))
+        .map(|h| h.role.clone());
+    assert_ne!(role.as_deref(), Some("marked"), "{:?}", state.highlights);
+}
+
+#[test]
 fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
     let mut harness = support::harness_with("tetrahedron", None);
     let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);

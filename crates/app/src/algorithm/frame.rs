@@ -197,6 +197,13 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
                     push(&mut paint, element, TraceRole::Created);
                 }
             }
+            // Blue at the step that marks it, though a variable still refers
+            // to it (the journal's Fig. 9e).
+            StepKind::Mark { element } => {
+                if let Some(element) = element.element() {
+                    push(&mut paint, element, TraceRole::Output);
+                }
+            }
             StepKind::Delete { element } => {
                 if let Some(element) = element.element() {
                     push(&mut paint, element, TraceRole::Deleted);
