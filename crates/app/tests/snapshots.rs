@@ -5,7 +5,7 @@
 //!
 //! kittest's own wgpu renderer draws without a depth buffer, which the 3D
 //! view's paint callback needs, so these tests render through
-//! [`DepthRenderer`]: the same `egui_wgpu` renderer with the `Depth24Plus`
+//! [`AppRenderer`]: the same `egui_wgpu` renderer with the `Depth24Plus`
 //! attachment the app gets from eframe. Without a wgpu adapter (no GPU and
 //! no lavapipe) a plain `cargo test` says so and skips them; `cargo xtask
 //! test` sets `EDGEWISE_REQUIRE_GPU`, which makes that a failure.
@@ -17,61 +17,13 @@ mod support;
 use edgewise_app::{Argument, EdgewiseApp, settings::Settings};
 use edgewise_core::mesh::Structure;
 use edgewise_core::schema::{ElementKind, ElementRef};
-use eframe::egui_wgpu::{RenderState, ScreenDescriptor};
-use egui_kittest::{Harness, SnapshotOptions, TestRenderer, kittest::Queryable as _};
+use egui_kittest::{Harness, SnapshotOptions, kittest::Queryable as _};
+use support::gpu::AppRenderer;
 
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
 /// threshold absorbs small differences between Mesa versions.
 fn options() -> SnapshotOptions {
     SnapshotOptions::new().threshold(1.5).max_failed_pixels(400)
-}
-
-/// Renders egui output, paint callbacks included, into an image.
-struct DepthRenderer {
-    state: RenderState,
-}
-
-impl TestRenderer for DepthRenderer {
-    fn setup_eframe(&self, cc: &mut eframe::CreationContext<'_>, frame: &mut eframe::Frame) {
-        cc.wgpu_render_state = Some(self.state.clone());
-        frame.wgpu_render_state = Some(self.state.clone());
-    }
-
-    fn handle_delta(&mut self, delta: &mut egui::TexturesDelta) {
-        let rs = &self.state;
-        let mut renderer = rs.renderer.write();
-        for (id, images) in std::mem::take(&mut delta.set) {
-            for image in images {
-                renderer.update_texture(&rs.device, &rs.queue, id, &image);
-            }
-        }
-        for id in std::mem::take(&mut delta.free) {
-            renderer.free_texture(&id);
-        }
-    }
-
-    fn render(
-        &mut self,
-        ctx: &egui::Context,
-        output: &egui::FullOutput,
-    ) -> Result<image::RgbaImage, String> {
-        let rs = &self.state;
-        let ppp = ctx.pixels_per_point();
-        let size = ctx.content_rect().size() * ppp;
-        let (width, height) = (size.x.round() as u32, size.y.round() as u32);
-        let screen = ScreenDescriptor {
-            size_in_pixels: [width, height],
-            pixels_per_point: ppp,
-        };
-        let jobs = ctx.tessellate(output.shapes.clone(), ppp);
-        // Cleared as eframe clears the app's frame.
-        let [r, g, b, a] =
-            edgewise_app::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
-        let clear = wgpu::Color { r, g, b, a };
-        let pixels = support::gpu::render_to_pixels(rs, &jobs, &screen, clear)?;
-        image::RgbaImage::from_raw(width, height, pixels)
-            .ok_or_else(|| "the readback has the wrong size".to_owned())
-    }
 }
 
 /// The app in a window of `size` points at `pixels_per_point`, drawing its
@@ -86,7 +38,7 @@ fn harness(size: egui::Vec2, pixels_per_point: f32) -> Option<Harness<'static, E
             .with_size(size)
             .with_max_steps(32)
             .with_pixels_per_point(pixels_per_point)
-            .renderer(DepthRenderer { state })
+            .renderer(AppRenderer::drawing_3d(state))
             .build_eframe(|cc| EdgewiseApp::new(cc)),
     )
 }

@@ -27,6 +27,7 @@ pub fn harness_sized(width: f32, height: f32) -> Harness<'static, EdgewiseApp> {
         .with_size(egui::vec2(width, height))
         // A table scrolling to a new selection animates over a few frames.
         .with_max_steps(32)
+        .renderer(gpu::AppRenderer::lazy())
         .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
 }
 
