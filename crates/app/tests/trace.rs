@@ -132,6 +132,43 @@ fn a_mark_step_shows_its_element_blue_though_a_variable_names_it() {
 }
 
 #[test]
+fn a_finished_run_keeps_only_its_marks_until_an_element_is_picked() {
+    let mut harness = support::harness_with("tetrahedron", None);
+    run(&mut harness, "vertexAdjacentFace", 1.0);
+    // Before the end, the algorithm's `highlight v` shows.
+    harness.state_mut().trace_step(2).expect("steps");
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(roles_of(&state, "highlighted"), [(ElementKind::Vertex, 1)]);
+
+    harness.state_mut().trace_goto(usize::MAX).expect("goes");
+    harness.run();
+    let state = harness.state().state();
+    let trace = state.trace.clone().expect("a trace");
+    assert!(trace.done);
+    assert!(
+        trace.message.contains("Pick an element to end the run"),
+        "{}",
+        trace.message
+    );
+    let roles: BTreeSet<&str> = state.highlights.iter().map(|h| h.role.as_str()).collect();
+    assert_eq!(roles, BTreeSet::from(["marked"]), "only the marks stay");
+
+    // Picking an element (here in the tables) ends the run and selects it.
+    harness
+        .get_by_label("incident edge of face 0: edge 0")
+        .click();
+    harness.run();
+    let state = harness.state().state();
+    assert!(state.trace.is_none(), "the run ended");
+    assert_eq!(
+        state.selection.map(|s| (s.kind, s.id)),
+        Some((ElementKind::Edge, 0))
+    );
+    assert!(roles_of(&state, "marked").is_empty());
+}
+
+#[test]
 fn a_lookup_step_colours_its_base_and_result_and_shows_the_expression() {
     let mut harness = support::harness_with("tetrahedron", None);
     let mesh = support::sample_mesh("tetrahedron.wtb", Structure::WingedEdge);

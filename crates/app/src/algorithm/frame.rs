@@ -223,8 +223,11 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         }
     }
     paint.focus = paint.painted.first().map(|p| p.element);
-    for &element in &highlighted {
-        push(&mut paint, element, TraceRole::Highlighted);
+    // At the end only the marks stay (Neperud, section 5.4).
+    if !done {
+        for &element in &highlighted {
+            push(&mut paint, element, TraceRole::Highlighted);
+        }
     }
     let mut names: HashMap<ElementRef, Vec<&str>> = HashMap::new();
     if !done {
@@ -399,7 +402,11 @@ fn describe(
             if output.is_empty() {
                 format!("{} is done; it marked nothing", algorithm.name)
             } else {
-                format!("{} is done. Output: {}", algorithm.name, output.join(", "))
+                format!(
+                    "{} is done. Output: {}. Pick an element to end the run",
+                    algorithm.name,
+                    output.join(", ")
+                )
             }
         }
     }

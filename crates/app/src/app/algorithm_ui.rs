@@ -111,12 +111,26 @@ impl EdgewiseApp {
 
     /// A click on an element in the view or the tables: an input for a
     /// waiting algorithm, nothing while a trace is shown, else a selection.
+    /// A click picks an input, selects, or (section 5.4 of the Neperud
+    /// paper) ends a finished run, whose marks stay until then.
     pub(super) fn element_clicked(&mut self, element: Option<ElementRef>) {
         match (&self.tab().run.run, element) {
             (Run::Picking(_), Some(element)) => self.issue(Command::Pick(element)),
+            (Run::Tracing(_), element) if self.run_finished() => {
+                self.issue(Command::Abort);
+                self.issue(Command::Select(element));
+            }
             (Run::Picking(_) | Run::Tracing(_), _) => {}
             (Run::Idle, element) => self.issue(Command::Select(element)),
         }
+    }
+
+    /// The trace stands at its end and the algorithm finished.
+    fn run_finished(&self) -> bool {
+        self.tab()
+            .run
+            .current_frame(&self.theme)
+            .is_some_and(|frame| frame.done)
     }
 
     /// Only the kind of element a waiting algorithm needs can be picked.
