@@ -1,5 +1,6 @@
-//! Face orientation marks: a small curved arrow in each face turning
-//! counter-clockwise about its normal, the order its vertices are listed in.
+//! Face orientation marks: a small curved arrow in each face turning the way
+//! the structure traverses it: counter-clockwise about the outward normal on
+//! a half-edge mesh, clockwise on a winged-edge mesh (the journal's Table 1).
 
 use std::f32::consts::{PI, TAU};
 
@@ -84,8 +85,13 @@ pub fn instances(scene: &Scene) -> Vec<MarkInstance> {
         if u == glam::Vec3::ZERO {
             continue;
         }
-        // v = n × u, so increasing angle turns counter-clockwise about n.
-        let v = normal.cross(u);
+        // The template's arc turns from u towards v: v = n × u turns it
+        // counter-clockwise about n, u × n clockwise.
+        let v = if scene.geometry.half_edges {
+            normal.cross(u)
+        } else {
+            u.cross(normal)
+        };
         out.push(MarkInstance {
             center: center.to_array(),
             u: (u * radius).to_array(),
@@ -163,4 +169,35 @@ fn pipeline(factory: &PipelineFactory<'_>) -> wgpu::RenderPipeline {
         depth_bias: false,
         lines: false,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use edgewise_core::mesh::{Mesh, Structure, generate};
+    use glam::Vec3;
+
+    use super::*;
+    use crate::view3d::MeshGeometry;
+
+    /// The sense each mark of the open square (in the plane z = 0, its faces
+    /// counter-clockwise seen from +z) turns about +z: 1 counter-clockwise.
+    fn turns(structure: Structure) -> Vec<f32> {
+        let (mesh, _) = Mesh::build(&generate::open_square(), structure).expect("builds");
+        let scene = Scene::new(MeshGeometry::from_mesh(&mesh));
+        instances(&scene)
+            .iter()
+            .map(|mark| {
+                Vec3::from(mark.u)
+                    .cross(Vec3::from(mark.v))
+                    .dot(Vec3::Z)
+                    .signum()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn marks_turn_the_way_each_structure_traverses_its_faces() {
+        assert_eq!(turns(Structure::HalfEdge), [1.0, 1.0], "counter-clockwise");
+        assert_eq!(turns(Structure::WingedEdge), [-1.0, -1.0], "clockwise");
+    }
 }

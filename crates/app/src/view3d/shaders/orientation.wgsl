@@ -1,5 +1,5 @@
-// Face orientation marks: a curved arrow in each face's plane turning
-// counter-clockwise about its normal (the order of its vertices).
+// Face orientation marks: a curved arrow in each face's plane turning from
+// `u` towards `v`, the way the structure traverses the face.
 
 struct MarkOut {
     @builtin(position) clip: vec4<f32>,
