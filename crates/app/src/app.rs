@@ -40,6 +40,7 @@ pub mod files;
 mod open_dialog;
 mod pending;
 pub mod settings_ui;
+mod statistics;
 pub(crate) mod tabs;
 mod twin;
 
@@ -72,6 +73,7 @@ pub struct EdgewiseApp {
     fonts_installed: bool,
     settings: Settings,
     show_settings: bool,
+    show_statistics: bool,
     /// The theme key last applied to egui's visuals.
     applied_theme: Option<u64>,
     presentation: Option<settings_ui::Presentation>,
@@ -135,6 +137,7 @@ impl EdgewiseApp {
             fonts_installed: false,
             settings: Settings::default(),
             show_settings: false,
+            show_statistics: false,
             applied_theme: None,
             presentation: None,
             presentation_choice: settings_ui::Presentation::default(),
@@ -575,7 +578,17 @@ impl EdgewiseApp {
                     mesh.edge_count(),
                     mesh.face_count()
                 );
-                ui.add(egui::Label::new(egui::RichText::new(summary).weak()).truncate());
+                if ui
+                    .add(
+                        egui::Label::new(egui::RichText::new(summary).weak())
+                            .truncate()
+                            .sense(egui::Sense::click()),
+                    )
+                    .on_hover_text("Click for the mesh's statistics")
+                    .clicked()
+                {
+                    self.show_statistics = true;
+                }
             }
         });
     }
@@ -594,6 +607,13 @@ impl EdgewiseApp {
             ui.checkbox(&mut options.show_axes, "Axes");
             ui.checkbox(&mut options.show_orientation, "Face orientation");
             ui.checkbox(&mut options.solid_faces, "Solid faces");
+            if ui
+                .button("Statistics")
+                .on_hover_text("V, E, F, V − E + F, genus, boundary loops, components and warnings")
+                .clicked()
+            {
+                self.show_statistics = true;
+            }
             if ui.button("Frame the mesh").clicked() {
                 self.tab_mut().view.frame_all();
             }
@@ -858,6 +878,7 @@ impl eframe::App for EdgewiseApp {
         self.keyboard_walk(ui.ctx());
         self.trace_keys(ui.ctx());
         self.settings_window_ui(ui.ctx());
+        self.statistics_window_ui(ui.ctx());
         self.share_window_ui(ui.ctx());
         self.presentation_hint_ui(ui.ctx());
         if (self.show_algorithm_panel || self.tab().run.is_active() || self.tab().diagnosis)

@@ -203,3 +203,42 @@ fn the_tables_scroll_to_what_is_selected() {
         "the vertex table brought row 9000 into view"
     );
 }
+
+#[test]
+fn the_statistics_window_shows_euler_s_formula_and_the_build_s_warnings() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("torus", None)
+        .expect("the sample opens");
+    harness.run();
+    // The summary in the top bar opens it.
+    harness
+        .get_by_label_contains("torus.obj: 288 vertices")
+        .click();
+    harness.run();
+    for text in [
+        "Vertices (V)",
+        "V − E + F",
+        "Boundary loops",
+        "The build gave no warnings.",
+    ] {
+        harness.get_by_label(text);
+    }
+    // V − E + F = 288 − 576 + 288 = 0: one closed component of genus 1.
+    harness.get_by_label("V 288 E 576 F 288, χ 0, genus 1");
+
+    // A vertex no face uses: the build's warning is listed, and the open
+    // triangle is one component with a boundary plus the isolated vertex.
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n";
+    harness
+        .state_mut()
+        .load_mesh(obj, "stray.obj", Some(Structure::HalfEdge))
+        .expect("loads");
+    harness.run();
+    harness.get_by_label("1 warning from the build:");
+    // Listed in the window, as in the load's own warning line.
+    assert_eq!(harness.get_all_by_label_contains("vertex 3").count(), 2);
+    harness.get_by_label("V 3 E 3 F 1, χ 1, open (has a boundary)");
+    harness.get_by_label("V 1 E 0 F 0, χ 1, open (has a boundary)");
+}
