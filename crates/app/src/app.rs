@@ -35,6 +35,7 @@ pub mod course;
 pub(crate) mod edit_menu;
 mod edit_ui;
 pub mod embed;
+pub mod embed_events;
 pub mod execute;
 pub mod files;
 mod open_dialog;
@@ -74,6 +75,11 @@ pub struct EdgewiseApp {
     settings: Settings,
     show_settings: bool,
     show_statistics: bool,
+    embed_observed: embed_events::Observed,
+    /// Height of the panels above and below the view this frame, for the
+    /// height an embedding page is asked for.
+    chrome_height: f32,
+    embed_events: Vec<embed_events::EmbedEvent>,
     /// The theme key last applied to egui's visuals.
     applied_theme: Option<u64>,
     presentation: Option<settings_ui::Presentation>,
@@ -138,6 +144,9 @@ impl EdgewiseApp {
             settings: Settings::default(),
             show_settings: false,
             show_statistics: false,
+            embed_observed: embed_events::Observed::default(),
+            chrome_height: 0.0,
+            embed_events: Vec::new(),
             applied_theme: None,
             presentation: None,
             presentation_choice: settings_ui::Presentation::default(),
@@ -866,13 +875,36 @@ impl eframe::App for EdgewiseApp {
         if let Some(embed) = self.embed {
             self.trace_keys(ui.ctx());
             self.embed_ui(ui, embed);
-            return;
+        } else {
+            self.whole_ui(ui);
         }
+        self.observe_for_embedding(ui.ctx());
+        crate::platform::deliver_events(&mut self.embed_events);
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(&mut *self)
+    }
+}
+
+impl EdgewiseApp {
+    /// The full layout: menus, panels, tables and the view.
+    fn whole_ui(&mut self, ui: &mut egui::Ui) {
         let presenting = self.presentation;
+        let mut chrome = 0.0;
         if presenting.is_none_or(|p| p.menu) {
-            egui::Panel::top("top_bar").show(ui, |ui| self.top_bar_ui(ui));
+            chrome += egui::Panel::top("top_bar")
+                .show(ui, |ui| self.top_bar_ui(ui))
+                .response
+                .rect
+                .height();
             if self.tabs.len() > 1 {
-                egui::Panel::top("tab_bar").show(ui, |ui| self.tab_bar_ui(ui));
+                chrome += egui::Panel::top("tab_bar")
+                    .show(ui, |ui| self.tab_bar_ui(ui))
+                    .response
+                    .rect
+                    .height();
             }
         }
         self.keyboard_walk(ui.ctx());
@@ -897,12 +929,16 @@ impl eframe::App for EdgewiseApp {
                 .show(ui, |ui| self.obj_editor_ui(ui));
         }
         if presenting.is_none_or(|p| p.tables) {
-            egui::Panel::bottom("tables")
+            chrome += egui::Panel::bottom("tables")
                 .resizable(true)
                 .default_size(260.0)
                 .min_size(120.0)
-                .show(ui, |ui| self.tables_ui(ui));
+                .show(ui, |ui| self.tables_ui(ui))
+                .response
+                .rect
+                .height();
         }
+        self.chrome_height = chrome;
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
             if self.side_by_side && self.tab().document.is_some() {
@@ -918,11 +954,6 @@ impl eframe::App for EdgewiseApp {
         });
         self.files_overlay_ui(ui.ctx());
         self.pending_ui(ui.ctx());
-    }
-
-    #[cfg(target_arch = "wasm32")]
-    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
-        Some(&mut *self)
     }
 }
 

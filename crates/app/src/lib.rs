@@ -23,6 +23,7 @@ pub mod settings;
 pub mod state;
 mod tables;
 mod theme;
+pub use app::embed_events::{EmbedEvent, preferred_height};
 pub use theme::backdrop;
 pub mod trace_role;
 pub mod view3d;

@@ -1,6 +1,6 @@
 //! What differs between the browser and the desktop, behind one interface:
-//! reading and writing files, keeping settings, fullscreen, and the page's
-//! address. The rest of the app is the same on both; `cfg(target_arch)`
+//! reading and writing files, keeping settings, fullscreen, the page's
+//! address, and telling an embedding page what changed. The rest of the app is the same on both; `cfg(target_arch)`
 //! chooses the implementation here and nowhere else in the UI code.
 //!
 //! - `browser.rs`: a file picker and dropped files read asynchronously into
@@ -17,12 +17,13 @@ mod desktop;
 
 #[cfg(target_arch = "wasm32")]
 pub use browser::{
-    FileIo, js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen,
-    store_settings,
+    FileIo, deliver_events, js_error_text, left_fullscreen, load_settings, page_base,
+    set_fullscreen, store_settings,
 };
 #[cfg(not(target_arch = "wasm32"))]
 pub use desktop::{
-    FileIo, left_fullscreen, load_settings, page_base, set_fullscreen, store_settings,
+    FileIo, deliver_events, left_fullscreen, load_settings, page_base, set_fullscreen,
+    store_settings,
 };
 
 /// A file read from disk, waiting to be opened.

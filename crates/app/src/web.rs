@@ -80,6 +80,11 @@ async fn start_app() -> Result<(), String> {
         )
     })?;
     follow_page_link(&runner).await;
+    let backend = with_app(&runner, |app| app.state().backend).unwrap_or("webgl2");
+    crate::platform::deliver_events(&mut vec![crate::EmbedEvent::Ready {
+        version: edgewise_core::VERSION,
+        backend,
+    }]);
     Ok(())
 }
 

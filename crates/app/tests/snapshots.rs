@@ -18,7 +18,7 @@ use edgewise_app::{Argument, EdgewiseApp, settings::Settings};
 use edgewise_core::mesh::Structure;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use egui_kittest::{Harness, SnapshotOptions, kittest::Queryable as _};
-use support::gpu::AppRenderer;
+use support::app_renderer::AppRenderer;
 
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
 /// threshold absorbs small differences between Mesa versions.

@@ -23,28 +23,37 @@ impl EdgewiseApp {
     /// The embedded layout: step controls under the view when a trace runs,
     /// the tables if asked for, and the view filling the rest.
     pub(super) fn embed_ui(&mut self, ui: &mut egui::Ui, embed: Embed) {
+        let mut chrome = 0.0;
         if self.tab().run.session().is_some() {
-            egui::Panel::bottom("embed_controls").show(ui, |ui| {
-                ui.horizontal(|ui| {
-                    if let Some(algorithm) = self.tab().run.algorithm() {
-                        ui.strong(egui::RichText::new(&algorithm.name).monospace());
+            chrome += egui::Panel::bottom("embed_controls")
+                .show(ui, |ui| {
+                    ui.horizontal(|ui| {
+                        if let Some(algorithm) = self.tab().run.algorithm() {
+                            ui.strong(egui::RichText::new(&algorithm.name).monospace());
+                        }
+                    });
+                    let asked = self
+                        .algorithms
+                        .trace_controls_ui(&mut self.tabs[self.active_tab].run, ui);
+                    if let Some(command) = asked {
+                        self.issue(command);
                     }
-                });
-                let asked = self
-                    .algorithms
-                    .trace_controls_ui(&mut self.tabs[self.active_tab].run, ui);
-                if let Some(command) = asked {
-                    self.issue(command);
-                }
-            });
+                })
+                .response
+                .rect
+                .height();
         }
         if embed.tables {
-            egui::Panel::bottom("tables")
+            chrome += egui::Panel::bottom("tables")
                 .resizable(true)
                 .default_size(200.0)
                 .min_size(100.0)
-                .show(ui, |ui| self.tables_ui(ui));
+                .show(ui, |ui| self.tables_ui(ui))
+                .response
+                .rect
+                .height();
         }
+        self.chrome_height = chrome;
         egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
             self.view_ui(ui);

@@ -253,3 +253,31 @@ pub fn page_base() -> String {
         })
         .unwrap_or_default()
 }
+
+/// Dispatches each queued event on `window` as an `edgewise:<name>`
+/// `CustomEvent` whose `detail` is the event's JSON; index.html forwards them
+/// to an embedding page.
+pub fn deliver_events(events: &mut Vec<crate::app::embed_events::EmbedEvent>) {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    for event in events.drain(..) {
+        let Ok(json) = serde_json::to_string(&event) else {
+            continue;
+        };
+        let Ok(detail) = js_sys::JSON::parse(&json) else {
+            continue;
+        };
+        let init = web_sys::CustomEventInit::new();
+        init.set_detail(&detail);
+        let name = format!("edgewise:{}", event.name());
+        match web_sys::CustomEvent::new_with_event_init_dict(&name, &init) {
+            Ok(dom_event) => {
+                if let Err(err) = window.dispatch_event(&dom_event) {
+                    log::warn!("{name} was not delivered: {}", js_error_text(&err));
+                }
+            }
+            Err(err) => log::warn!("{name} could not be made: {}", js_error_text(&err)),
+        }
+    }
+}

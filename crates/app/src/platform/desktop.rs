@@ -119,3 +119,7 @@ pub fn left_fullscreen() -> bool {
 pub fn page_base() -> String {
     "http://127.0.0.1:8080/".to_owned()
 }
+
+/// Natively there is no page to tell: the events stay queued for tests
+/// (`EdgewiseApp::take_embed_events`), the oldest dropped past a bound.
+pub fn deliver_events(_events: &mut Vec<crate::app::embed_events::EmbedEvent>) {}

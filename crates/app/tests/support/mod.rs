@@ -4,6 +4,7 @@
 
 #![allow(dead_code)]
 
+pub mod app_renderer;
 pub mod gpu;
 
 use std::{
@@ -27,7 +28,7 @@ pub fn harness_sized(width: f32, height: f32) -> Harness<'static, EdgewiseApp> {
         .with_size(egui::vec2(width, height))
         // A table scrolling to a new selection animates over a few frames.
         .with_max_steps(32)
-        .renderer(gpu::AppRenderer::lazy())
+        .renderer(app_renderer::AppRenderer::lazy())
         .build_eframe(|_cc| EdgewiseApp::with_backend(GraphicsBackend::None, None))
 }
 

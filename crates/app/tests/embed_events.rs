@@ -1,0 +1,100 @@
+//! The events an embedding page hears (docs/embedding.md, "The embed
+//! protocol"): one per change of mesh, selection or trace step, and the
+//! height the content wants, each once.
+
+mod support;
+
+use edgewise_app::{Argument, EmbedEvent, preferred_height};
+use edgewise_core::schema::{ElementKind, ElementRef};
+
+fn names(events: &[EmbedEvent]) -> Vec<&'static str> {
+    events.iter().map(EmbedEvent::name).collect()
+}
+
+#[test]
+fn each_change_is_told_once() {
+    let mut harness = support::harness_sized(800.0, 600.0);
+    harness.run();
+    let first = harness.state_mut().take_embed_events();
+    assert_eq!(names(&first), ["resize"], "{first:?}");
+    let EmbedEvent::Resize { height: wide } = first[0] else {
+        unreachable!()
+    };
+    // The view at 5:3 of the width, plus the top bar and the tables.
+    assert!(wide > preferred_height(800.0, 100.0), "{wide}");
+
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .expect("opens");
+    harness.run();
+    let events = harness.state_mut().take_embed_events();
+    assert_eq!(names(&events), ["meshchange"], "{events:?}");
+    let EmbedEvent::MeshChange { mesh, counts, .. } = &events[0] else {
+        unreachable!()
+    };
+    assert_eq!(mesh.as_deref(), Some("tetrahedron.wtb"));
+    assert_eq!((counts.vertices, counts.edges, counts.faces), (4, 6, 4));
+
+    let edge = ElementRef {
+        kind: ElementKind::Edge,
+        id: 2,
+    };
+    harness.state_mut().select(Some(edge)).expect("selects");
+    harness.run();
+    assert_eq!(
+        harness.state_mut().take_embed_events(),
+        [EmbedEvent::SelectionChange {
+            selection: Some(edge)
+        }]
+    );
+
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), Argument::Number(1.0))],
+        )
+        .expect("runs");
+    harness.run();
+    harness.state_mut().trace_step(2).expect("steps");
+    harness.run();
+    let events = harness.state_mut().take_embed_events();
+    let steps: Vec<usize> = events
+        .iter()
+        .filter_map(|event| match event {
+            EmbedEvent::StepChange { trace: Some(trace) } => Some(trace.step),
+            _ => None,
+        })
+        .collect();
+    // Starting the run cleared the selection and stood at step 0.
+    assert_eq!(steps, [0, 2], "{events:?}");
+    let EmbedEvent::StepChange { trace: Some(trace) } = &events[events.len() - 1] else {
+        unreachable!()
+    };
+    assert_eq!(trace.algorithm, "vertexAdjacentEdge");
+
+    // Nothing changed: nothing is told.
+    harness.run();
+    assert_eq!(harness.state_mut().take_embed_events(), []);
+
+    harness.state_mut().abort_algorithm().expect("aborts");
+    harness.run();
+    let events = harness.state_mut().take_embed_events();
+    assert!(
+        events.contains(&EmbedEvent::StepChange { trace: None }),
+        "{events:?}"
+    );
+
+    // A narrower window asks for less height, by the view's 5:3.
+    harness.set_size(egui::vec2(500.0, 600.0));
+    harness.run();
+    let events = harness.state_mut().take_embed_events();
+    let [EmbedEvent::Resize { height: narrow }] = events[..] else {
+        panic!("{events:?}")
+    };
+    assert_eq!(
+        wide - narrow,
+        preferred_height(800.0, 0.0) - preferred_height(500.0, 0.0)
+    );
+}

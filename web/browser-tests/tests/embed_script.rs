@@ -1,0 +1,141 @@
+//! The embed protocol through web/examples/embed-script.html: two views
+//! placed by edgewise-embed.js size themselves from `edgewise:resize`, tell
+//! the page each step and selection, and answer calls, refusing bad ones
+//! with a reason.
+
+use std::time::Duration;
+
+use edgewise_browser_tests::Browser;
+
+/// Two apps start side by side on the CPU renderer: allow for both.
+const START_TIMEOUT: Duration = Duration::from_secs(180);
+
+#[tokio::test]
+async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(START_TIMEOUT).await?;
+    browser.goto("examples/embed-script.html").await?;
+
+    // Each div became a titled iframe; the page hears `ready` from both.
+    let titles = browser
+        .eval("return [...document.querySelectorAll('iframe')].map((f) => f.title);")
+        .await?;
+    assert_eq!(
+        titles,
+        serde_json::json!([
+            "Edgewise: vertexAdjacentEdge on the winged-edge tetrahedron, from vertex 1",
+            "Edgewise: tetrahedron: vertexAdjacentEdge (interactive mesh view)"
+        ])
+    );
+    browser
+        .eval(
+            "window.__heard = []; \
+             for (const id of ['winged', 'half']) { \
+               const element = document.getElementById(id); \
+               for (const name of ['stepchange', 'selectionchange', 'meshchange']) \
+                 element.addEventListener('edgewise:' + name, (e) => \
+                   window.__heard.push([id, e.detail.type, e.detail.trace ? e.detail.trace.step : null])); \
+             } return null;",
+        )
+        .await?;
+    let ready = browser
+        .eval_async(
+            "Promise.all(['winged', 'half'].map((id) => document.getElementById(id).edgewise.ready)) \
+             .then((messages) => messages.map((m) => m.type))",
+        )
+        .await?;
+    assert_eq!(
+        ready,
+        serde_json::json!(["edgewise:ready", "edgewise:ready"])
+    );
+
+    // They asked for their height: the half-edge view shows its tables too.
+    browser
+        .wait_for(
+            "['winged', 'half'].every((id) => \
+               document.querySelector('#' + id + ' iframe').style.height !== '300px')",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let heights = browser
+        .eval(
+            "return ['winged', 'half'].map((id) => \
+               parseInt(document.querySelector('#' + id + ' iframe').style.height, 10));",
+        )
+        .await?;
+    let (winged, half) = (
+        heights[0].as_i64().unwrap_or(0),
+        heights[1].as_i64().unwrap_or(0),
+    );
+    assert!(winged >= 240 + 48, "{heights}");
+    assert!(half - winged >= 100, "the tables' share: {heights}");
+
+    // The page's Step button calls into the view; the step comes back.
+    browser
+        .eval("document.getElementById('winged-step').click(); return null;")
+        .await?;
+    browser
+        .wait_for(
+            "document.getElementById('winged-status').textContent.startsWith('Step 1 of')",
+            Duration::from_secs(60),
+        )
+        .await?;
+    let heard = browser.eval("return window.__heard;").await?;
+    assert!(
+        heard
+            .as_array()
+            .is_some_and(|h| h.contains(&serde_json::json!(["winged", "edgewise:stepchange", 1]))),
+        "{heard}"
+    );
+
+    // Calls answer with the API's value or its refusal.
+    let call = |script: &str| {
+        format!(
+            "document.getElementById('half').edgewise.{script} \
+               .then((value) => ({{ ok: true, value }}), (error) => ({{ ok: false, error: error.message }}))"
+        )
+    };
+    let aborted = browser.eval_async(&call("call('abort')")).await?;
+    assert_eq!(aborted["ok"], true, "{aborted}");
+    let selected = browser
+        .eval_async(&call("call('select', 'edge', 4)"))
+        .await?;
+    assert_eq!(selected["ok"], true, "{selected}");
+    let state = browser.eval_async(&call("call('state')")).await?;
+    assert_eq!(
+        state["value"]["selection"],
+        serde_json::json!({"kind": "edge", "id": 4})
+    );
+    browser
+        .wait_for(
+            "window.__heard.some(([id, type]) => id === 'half' && type === 'edgewise:selectionchange')",
+            Duration::from_secs(30),
+        )
+        .await?;
+    for (script, refusal) in [
+        (
+            "call('constructor')",
+            "window.edgewise has no method \"constructor\"",
+        ),
+        (
+            "call('__proto__')",
+            "window.edgewise has no method \"__proto__\"",
+        ),
+        (
+            "call('loadSample', 'no-such-mesh')",
+            "there is no sample called 'no-such-mesh'",
+        ),
+    ] {
+        let answer = browser.eval_async(&call(script)).await?;
+        assert_eq!(answer["ok"], false, "{script}: {answer}");
+        let error = answer["error"].as_str().unwrap_or_default();
+        assert!(error.contains(refusal), "{script}: {error}");
+    }
+    browser.screenshot("embed-script-winged-view").await?;
+    browser
+        .eval("document.getElementById('half').scrollIntoView({block: 'start'}); return null;")
+        .await?;
+    browser.screenshot("embed-script-half-edge-view").await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
