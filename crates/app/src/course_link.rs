@@ -16,7 +16,8 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
 use base64::Engine as _;
-use edgewise_core::mesh::Structure;
+use edgewise_core::formats::compact;
+use edgewise_core::mesh::{Polygons, Structure};
 
 use crate::{
     Argument,
@@ -91,7 +92,7 @@ const QUERY_KEYS: &[&str] = &[
     "codeSize",
 ];
 /// The fragment parameters, in the order `to_url` writes them.
-const FRAGMENT_KEYS: &[&str] = &["mesh", "format", "alg"];
+const FRAGMENT_KEYS: &[&str] = &["mesh", "poly", "format", "alg"];
 
 /// Where the link's mesh comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -104,6 +105,11 @@ pub enum MeshSource {
     /// Mesh text carried in the fragment (`#mesh=<payload>&format=obj`);
     /// `format` is one of [`INLINE_FORMATS`].
     Inline { text: String, format: String },
+    /// Polygons in their compact binary form (`#poly=<payload>`,
+    /// [`edgewise_core::formats::compact`]): what Share writes when building
+    /// from them gives back the mesh's tables exactly, a fraction of the
+    /// tables' size.
+    Polygons(Polygons),
 }
 
 /// The colour theme a link asks for.
@@ -187,8 +193,15 @@ impl CourseLink {
     /// text is too large for [`Self::parse`] to accept.
     pub fn to_url_checked(&self, base: &str) -> Result<String, String> {
         let built = self.build(base);
-        if let Some(MeshSource::Inline { text, .. }) = &self.mesh {
-            check_payload_size("mesh", text.len(), built.mesh_payload_chars)?;
+        match &self.mesh {
+            Some(MeshSource::Inline { text, .. }) => {
+                check_payload_size("mesh", text.len(), built.mesh_payload_chars)?;
+            }
+            Some(MeshSource::Polygons(polygons)) => {
+                let bytes = compact::encode(polygons).len();
+                check_payload_size("poly", bytes, built.mesh_payload_chars)?;
+            }
+            _ => {}
         }
         if let Some(source) = &self.algorithm_source {
             check_payload_size("alg", source.len(), built.alg_payload_chars)?;
@@ -245,6 +258,11 @@ impl CourseLink {
                 built.mesh_payload_chars = payload.len();
                 fragment.push(format!("mesh={payload}"));
                 fragment.push(format!("format={}", encode(format)));
+            }
+            Some(MeshSource::Polygons(polygons)) => {
+                let payload = encode_bytes(&compact::encode(polygons));
+                built.mesh_payload_chars = payload.len();
+                fragment.push(format!("poly={payload}"));
             }
             None => {}
         }
@@ -379,12 +397,34 @@ pub fn embed_snippet(url: &str, width: u32, height: u32) -> String {
 /// DEFLATE then base64url: the form of `#mesh=` and `#alg=` payloads, and
 /// what `CompressionStream('deflate-raw')` plus base64url makes in a page.
 pub fn encode_payload(text: &str) -> String {
-    BASE64URL.encode(miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 9))
+    encode_bytes(text.as_bytes())
+}
+
+/// DEFLATE then base64url, for any bytes (`#poly=`).
+fn encode_bytes(bytes: &[u8]) -> String {
+    BASE64URL.encode(miniz_oxide::deflate::compress_to_vec(bytes, 9))
 }
 
 /// Reverses [`encode_payload`] within the size limits; `name` is the
 /// fragment parameter, for the message.
 pub fn decode_payload(name: &str, payload: &str) -> Result<String, String> {
+    let bytes = decode_bytes(name, payload)?;
+    String::from_utf8(bytes).map_err(|_| format!("#{name}: the uncompressed text is not UTF-8"))
+}
+
+/// `#poly=`'s polygons, refused with the place where they go wrong.
+fn decode_polygons(payload: &str) -> Result<Polygons, String> {
+    let bytes = decode_bytes("poly", payload)?;
+    compact::decode(&bytes).map_err(|err| {
+        format!(
+            "#poly: the polygons are damaged ({err}); the link may have been changed or cut \
+             short when it was copied"
+        )
+    })
+}
+
+/// Reverses [`encode_bytes`] within the size limits.
+fn decode_bytes(name: &str, payload: &str) -> Result<Vec<u8>, String> {
     if payload.is_empty() {
         return Err(format!(
             "#{name}= is empty; expected compressed text, as the Share dialog writes it"
@@ -417,7 +457,7 @@ pub fn decode_payload(name: &str, payload: &str) -> Result<String, String> {
                  short when it was copied"
             ),
         })?;
-    String::from_utf8(bytes).map_err(|_| format!("#{name}: the uncompressed text is not UTF-8"))
+    Ok(bytes)
 }
 
 #[derive(Default)]
@@ -448,7 +488,7 @@ fn check_payload_size(name: &str, text_bytes: usize, payload_chars: usize) -> Re
 }
 
 fn too_large_hint(name: &str) -> &'static str {
-    if name == "mesh" {
+    if name == "mesh" || name == "poly" {
         "put the file beside the page and link it with mesh=path instead"
     } else {
         "put the algorithms in a smaller file"
@@ -569,6 +609,10 @@ impl Parser {
                 ),
                 Err(message) => self.messages.push(message),
             },
+            "poly" => match decode_polygons(value) {
+                Ok(polygons) => self.set_mesh("#poly", MeshSource::Polygons(polygons)),
+                Err(message) => self.messages.push(message),
+            },
             "format" => {
                 if INLINE_FORMATS.contains(&value) {
                     self.format = Some(value.to_owned());
@@ -620,7 +664,7 @@ impl Parser {
     /// Keeps the strongest mesh source and says which one was dropped.
     fn set_mesh(&mut self, from: &'static str, source: MeshSource) {
         let rank = |from: &str| match from {
-            "#mesh" => 2,
+            "#mesh" | "#poly" => 2,
             "mesh" => 1,
             _ => 0,
         };

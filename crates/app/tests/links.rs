@@ -5,7 +5,7 @@
 mod support;
 
 use edgewise_app::{Argument, course_link};
-use edgewise_core::mesh::Structure;
+use edgewise_core::mesh::{Mesh, Structure, generate, operations::Operation};
 use edgewise_core::schema::{ElementKind, ElementRef};
 
 #[test]
@@ -85,7 +85,8 @@ fn an_unknown_sample_or_algorithm_is_explained() {
 fn the_share_link_reproduces_the_view() {
     let mut first = support::harness();
     let app = first.state_mut();
-    // A mesh that is not a sample travels as its own table text.
+    // A mesh that is not a sample travels as compact polygons, since
+    // building from them gives back its tables.
     app.load_mesh(
         b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n",
         "pyramid.obj",
@@ -104,7 +105,7 @@ fn the_share_link_reproduces_the_view() {
         .share_url("https://example.edu/edgewise/")
         .expect("a link");
     assert!(url.starts_with("https://example.edu/edgewise/?"), "{url}");
-    assert!(url.contains("#mesh="), "{url}");
+    assert!(url.contains("#poly="), "{url}");
 
     let (query, fragment) = url
         .split_once('?')
@@ -117,4 +118,90 @@ fn the_share_link_reproduces_the_view() {
     assert_eq!(a.highlights, b.highlights);
     assert_eq!(a.counts, b.counts);
     assert_eq!(a.structure, b.structure);
+}
+
+/// Opens the share link of `harness` in a fresh app.
+fn follow(harness: &support::AppHarness) -> (String, support::AppHarness) {
+    let url = harness
+        .state()
+        .share_url("https://example.edu/edgewise/")
+        .expect("a link");
+    let (query, fragment) = url
+        .split_once('?')
+        .map(|(_, rest)| rest.split_once('#').unwrap_or((rest, "")))
+        .expect("a query");
+    let (second, messages) = support::open_link(query, fragment);
+    assert!(messages.is_empty(), "{messages:?}");
+    (url, second)
+}
+
+fn mesh(harness: &support::AppHarness) -> Mesh {
+    harness.state().mesh().cloned().expect("a mesh is open")
+}
+
+/// A scanned-looking mesh the size of the Stanford bunny and more: an
+/// icosphere of 5,120 triangles with every vertex moved by a different
+/// irregular amount, so no position is a round number.
+fn scan_like_obj() -> String {
+    let sphere = generate::icosphere(4);
+    let mut obj = String::new();
+    for (i, p) in sphere.positions().iter().enumerate() {
+        let wobble = 1.0 + 0.08 * ((i as f32 * 12.9898).sin() * 43_758.547).fract();
+        let p = *p * wobble;
+        obj.push_str(&format!("v {} {} {}\n", p.x, p.y, p.z));
+    }
+    for face in sphere.faces() {
+        let corners: Vec<String> = face.iter().map(|v| (v + 1).to_string()).collect();
+        obj.push_str(&format!("f {}\n", corners.join(" ")));
+    }
+    obj
+}
+
+#[test]
+fn a_bunny_sized_mesh_travels_compactly_with_every_id() {
+    for structure in [Structure::HalfEdge, Structure::WingedEdge] {
+        let mut first = support::harness();
+        first
+            .state_mut()
+            .load_mesh(scan_like_obj().as_bytes(), "scan.obj", Some(structure))
+            .expect("opens");
+        first.run();
+        let (url, second) = follow(&first);
+        assert!(url.contains("#poly="), "{url}");
+        assert!(
+            url.len() <= 64 * 1024,
+            "{structure:?}: the link is {} bytes",
+            url.len()
+        );
+        assert!(
+            mesh(&first) == mesh(&second),
+            "{structure:?}: the same tables"
+        );
+    }
+}
+
+#[test]
+fn an_edited_mesh_whose_polygons_would_renumber_it_travels_as_tables() {
+    let mut first = support::harness();
+    first
+        .state_mut()
+        .load_mesh(
+            scan_like_obj().as_bytes(),
+            "scan.obj",
+            Some(Structure::HalfEdge),
+        )
+        .expect("opens");
+    // A flip rewires records in place: built again from its polygons, the
+    // mesh would number its half-edges otherwise.
+    first
+        .state_mut()
+        .edit(Operation::FlipEdge, &[7])
+        .expect("flips");
+    first.run();
+    let (url, second) = follow(&first);
+    assert!(
+        url.contains("#mesh=") && url.contains("format=htb"),
+        "{url}"
+    );
+    assert!(mesh(&first) == mesh(&second), "the same tables");
 }

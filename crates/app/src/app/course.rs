@@ -49,6 +49,12 @@ impl EdgewiseApp {
             Some(MeshSource::Inline { text, format }) => {
                 self.load_mesh(text.as_bytes(), &format!("link.{format}"), structure)
             }
+            Some(MeshSource::Polygons(polygons)) => {
+                let structure = structure.unwrap_or(self.tab().structure);
+                let loaded =
+                    crate::document::Document::from_polygons("link.obj", polygons, structure);
+                self.open(loaded, true, false)
+            }
             Some(MeshSource::Path(path)) => match fetched {
                 Some(FetchedMesh {
                     name,
@@ -172,18 +178,11 @@ impl EdgewiseApp {
             link.mesh = Some(match &document.sample {
                 Some(name) => MeshSource::Sample(name.clone()),
                 None => {
-                    let format = match document.structure() {
-                        Structure::WingedEdge => Format::Wtb,
-                        Structure::HalfEdge => Format::Htb,
-                    };
                     let mesh = self.tab().mesh_before_trace();
                     let mesh = mesh.as_deref().unwrap_or(document.mesh());
-                    let text = formats::save(mesh, format, &SaveOptions::default())
-                        .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
-                        .unwrap_or_default();
-                    MeshSource::Inline {
-                        text,
-                        format: format.extension().to_owned(),
+                    match self.tab().exact_polygons(mesh) {
+                        Some(polygons) => MeshSource::Polygons(polygons),
+                        None => tables_source(mesh),
                     }
                 }
             });
@@ -320,5 +319,21 @@ fn argument_of(value: Value) -> Option<Argument> {
         Value::Float(x) => Some(Argument::Number(f64::from(x))),
         Value::Boolean(b) => Some(Argument::Boolean(b)),
         Value::Null | Value::Vector(_) | Value::Array(_) => None,
+    }
+}
+
+/// The mesh as its own table text (`#mesh=`, `format=wtb` or `htb`): every
+/// id as it is, whatever edits made of them.
+fn tables_source(mesh: &edgewise_core::mesh::Mesh) -> MeshSource {
+    let format = match mesh.structure() {
+        Structure::WingedEdge => Format::Wtb,
+        Structure::HalfEdge => Format::Htb,
+    };
+    let text = formats::save(mesh, format, &SaveOptions::default())
+        .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
+        .unwrap_or_default();
+    MeshSource::Inline {
+        text,
+        format: format.extension().to_owned(),
     }
 }

@@ -6,7 +6,7 @@ use std::borrow::Cow;
 use std::cell::RefCell;
 
 use edgewise_core::mesh::{
-    Change, Edit as _, Issue, Mesh, MeshStats, Renumbering, Structure,
+    Change, Edit as _, Issue, Mesh, MeshStats, Polygons, Renumbering, Structure,
     operations::{self, Operation},
 };
 use edgewise_core::schema::{Column, ElementKind, ElementRef, NameError};
@@ -70,6 +70,8 @@ pub(crate) struct Tab {
     /// The statistics of the mesh with this mesh id.
     /// Kept in a cell so that `state()`, which only reads, shares it.
     stats: RefCell<Option<(u64, MeshStats)>>,
+    /// [`Self::exact_polygons`] for the mesh it was worked out for.
+    exact_polygons: RefCell<Option<(ExactKey, Option<Polygons>)>>,
     /// A large mesh being opened or converted, a slice per frame; the tab
     /// shows its old mesh meanwhile.
     pub(crate) pending: Option<super::pending::PendingMesh>,
@@ -103,6 +105,7 @@ impl Tab {
             edit_menu: None,
             last_changes: Vec::new(),
             stats: RefCell::new(None),
+            exact_polygons: RefCell::new(None),
             pending: None,
         }
     }
@@ -118,6 +121,25 @@ impl Tab {
             *cache = Some((id, document.mesh().live_stats()));
         }
         cache.as_ref().map(|(_, stats)| stats.clone())
+    }
+
+    /// `mesh` (the document's, or the one before a trace) as polygons, when
+    /// building from them gives back exactly its tables, so a link can
+    /// carry them instead of the tables; worked out once per mesh.
+    pub(crate) fn exact_polygons(&self, mesh: &Mesh) -> Option<Polygons> {
+        let document = self.document.as_ref()?;
+        let key = ExactKey {
+            mesh_id: document.mesh_id(),
+            own: std::ptr::eq(mesh, document.mesh()),
+        };
+        let mut cache = self.exact_polygons.borrow_mut();
+        if cache.as_ref().is_none_or(|(cached, _)| *cached != key) {
+            let polygons = mesh.to_polygons();
+            let exact =
+                Mesh::build(&polygons, mesh.structure()).is_ok_and(|(rebuilt, _)| rebuilt == *mesh);
+            *cache = Some((key, exact.then_some(polygons)));
+        }
+        cache.as_ref().and_then(|(_, polygons)| polygons.clone())
     }
 
     /// Keeps the document's mesh at the editing trace's current step: the
@@ -512,4 +534,12 @@ fn with_article(kind: ElementKind) -> &'static str {
         ElementKind::Edge => "an edge",
         ElementKind::Face => "a face",
     }
+}
+
+/// Which mesh [`Tab::exact_polygons`] was worked out for: the document's
+/// mesh id, and whether it was that mesh or the one before a trace.
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct ExactKey {
+    mesh_id: u64,
+    own: bool,
 }

@@ -340,7 +340,29 @@ fn arb_mesh() -> impl Strategy<Value = Option<MeshSource>> {
             text,
             format: INLINE_FORMATS[f].to_owned()
         })),
+        arb_polygons().prop_map(|polygons| Some(MeshSource::Polygons(polygons))),
     ]
+}
+
+/// Polygons of any (non-NaN) positions and faces of 3 to 6 corners.
+fn arb_polygons() -> impl Strategy<Value = Polygons> {
+    let position = proptest::array::uniform3(any::<f32>().prop_filter("not NaN", |x| !x.is_nan()));
+    (
+        proptest::collection::vec(position, 3..12),
+        proptest::collection::vec(proptest::collection::vec(any::<u32>(), 3..7), 0..6),
+    )
+        .prop_map(|(positions, faces)| {
+            let count = positions.len() as u32;
+            let mut polygons = Polygons::new();
+            for p in positions {
+                polygons.push_vertex(glam::Vec3::from_array(p));
+            }
+            for face in faces {
+                let face: Vec<u32> = face.iter().map(|v| v % count).collect();
+                polygons.push_face(&face);
+            }
+            polygons
+        })
 }
 
 fn arb_argument() -> impl Strategy<Value = Argument> {
