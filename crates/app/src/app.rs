@@ -38,6 +38,7 @@ pub mod embed;
 pub mod embed_events;
 pub mod execute;
 pub mod files;
+pub mod first_visit;
 mod open_dialog;
 mod pending;
 pub mod settings_ui;
@@ -75,6 +76,13 @@ pub struct EdgewiseApp {
     settings: Settings,
     show_settings: bool,
     show_statistics: bool,
+    /// The first-visit hint, while shown.
+    tour: Option<first_visit::Tour>,
+    /// "What am I looking at?" is shown (and has been for a frame).
+    explaining: bool,
+    explain_shown_once: bool,
+    /// This frame's panels, for "What am I looking at?".
+    screen_parts: Vec<first_visit::Part>,
     embed_observed: embed_events::Observed,
     /// Height of the panels above and below the view this frame, for the
     /// height an embedding page is asked for.
@@ -144,6 +152,10 @@ impl EdgewiseApp {
             settings: Settings::default(),
             show_settings: false,
             show_statistics: false,
+            tour: None,
+            explaining: false,
+            explain_shown_once: false,
+            screen_parts: Vec::new(),
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
             embed_events: Vec::new(),
@@ -430,6 +442,7 @@ impl EdgewiseApp {
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
             coarse_view: self.tab().view.coarse(),
             styles_patched: self.tab().view.styles_patched(),
+            welcome: self.tour.as_ref().map(|tour| tour.done),
             job: self
                 .tab()
                 .pending
@@ -569,7 +582,7 @@ impl EdgewiseApp {
             }
             self.algorithm_menu_ui(ui);
             self.view_options_menu_ui(ui);
-            help_menu_ui(ui);
+            self.help_menu_ui(ui);
             if ui
                 .add_enabled(self.tab().document.is_some(), egui::Button::new("Share…"))
                 .on_hover_text("A link to this view, or code to embed it in lecture notes")
@@ -778,6 +791,7 @@ impl EdgewiseApp {
             });
         if let Some(clicked) = response.clicked {
             self.element_clicked(Some(clicked));
+            self.tour_progress(response.followed);
         }
         if let Some((element, at)) = response.context {
             self.open_edit_menu(element, at);
@@ -893,12 +907,19 @@ impl EdgewiseApp {
     fn whole_ui(&mut self, ui: &mut egui::Ui) {
         let presenting = self.presentation;
         let mut chrome = 0.0;
+        let mut parts = Vec::new();
+        let mut part = |rect: egui::Rect, (title, text): (&'static str, &'static str)| {
+            parts.push(first_visit::Part { rect, title, text });
+            rect.height()
+        };
         if presenting.is_none_or(|p| p.menu) {
-            chrome += egui::Panel::top("top_bar")
-                .show(ui, |ui| self.top_bar_ui(ui))
-                .response
-                .rect
-                .height();
+            chrome += part(
+                egui::Panel::top("top_bar")
+                    .show(ui, |ui| self.top_bar_ui(ui))
+                    .response
+                    .rect,
+                first_visit::TOP_BAR,
+            );
             if self.tabs.len() > 1 {
                 chrome += egui::Panel::top("tab_bar")
                     .show(ui, |ui| self.tab_bar_ui(ui))
@@ -916,11 +937,14 @@ impl EdgewiseApp {
         if (self.show_algorithm_panel || self.tab().run.is_active() || self.tab().diagnosis)
             && presenting.is_none_or(|p| p.algorithm)
         {
-            egui::Panel::right("algorithm")
+            let rect = egui::Panel::right("algorithm")
                 .resizable(true)
                 .default_size(420.0)
                 .min_size(300.0)
-                .show(ui, |ui| self.algorithm_panel_ui(ui));
+                .show(ui, |ui| self.algorithm_panel_ui(ui))
+                .response
+                .rect;
+            part(rect, first_visit::ALGORITHM);
         }
         if self.show_obj_editor && presenting.is_none() {
             egui::Panel::right("obj_editor")
@@ -929,17 +953,19 @@ impl EdgewiseApp {
                 .show(ui, |ui| self.obj_editor_ui(ui));
         }
         if presenting.is_none_or(|p| p.tables) {
-            chrome += egui::Panel::bottom("tables")
-                .resizable(true)
-                .default_size(260.0)
-                .min_size(120.0)
-                .show(ui, |ui| self.tables_ui(ui))
-                .response
-                .rect
-                .height();
+            chrome += part(
+                egui::Panel::bottom("tables")
+                    .resizable(true)
+                    .default_size(260.0)
+                    .min_size(120.0)
+                    .show(ui, |ui| self.tables_ui(ui))
+                    .response
+                    .rect,
+                first_visit::TABLES,
+            );
         }
         self.chrome_height = chrome;
-        egui::CentralPanel::default().show(ui, |ui| {
+        let central = egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
             if self.side_by_side && self.tab().document.is_some() {
                 StripBuilder::new(ui)
@@ -952,6 +978,11 @@ impl EdgewiseApp {
                 self.view_ui(ui);
             }
         });
+        part(central.response.rect, first_visit::VIEW);
+        self.screen_parts = parts;
+        self.tour_progress(false);
+        self.tour_ui(ui.ctx());
+        self.explain_ui(ui.ctx());
         self.files_overlay_ui(ui.ctx());
         self.pending_ui(ui.ctx());
     }
@@ -994,8 +1025,23 @@ fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
 }
 
 /// A short guide: what to click, the keys, and what the colours mean.
-fn help_menu_ui(ui: &mut egui::Ui) {
-    ui.menu_button("Help", |ui| {
+impl EdgewiseApp {
+    fn help_menu_ui(&mut self, ui: &mut egui::Ui) {
+        ui.menu_button("Help", |ui| {
+            if ui.button("What am I looking at?").clicked() {
+                self.explaining = true;
+            }
+            if ui.button("Things to try").clicked() {
+                self.tour = Some(first_visit::Tour::default());
+            }
+            ui.separator();
+            help_text_ui(ui);
+        });
+    }
+}
+
+fn help_text_ui(ui: &mut egui::Ui) {
+    {
         ui.set_max_width(420.0);
         ui.strong("Edgewise");
         ui.label(
@@ -1028,7 +1074,7 @@ fn help_menu_ui(ui: &mut egui::Ui) {
         ui.label(
             "Drag to orbit; wheel, pinch or right-drag to zoom; middle- or shift-drag to pan.",
         );
-    });
+    }
 }
 
 fn counts(mesh: &Mesh) -> Counts {

@@ -13,7 +13,11 @@ fn main() -> eframe::Result {
     eframe::run_native(
         "Edgewise",
         options,
-        Box::new(|cc| Ok(Box::new(edgewise_app::EdgewiseApp::new(cc)))),
+        Box::new(|cc| {
+            let mut app = edgewise_app::EdgewiseApp::new(cc);
+            app.first_visit();
+            Ok(Box::new(app))
+        }),
     )
 }
 

@@ -27,6 +27,8 @@ pub struct Settings {
     /// ('selected', 'leftPredecessor', …) to `#rrggbb`, only for roles the
     /// user changed.
     pub colours: BTreeMap<String, String>,
+    /// The first-visit hint shows until it is dismissed.
+    pub welcome: bool,
 }
 
 impl Default for Settings {
@@ -35,6 +37,7 @@ impl Default for Settings {
             dark: false,
             code_size: DEFAULT_CODE_SIZE,
             colours: BTreeMap::new(),
+            welcome: true,
         }
     }
 }

@@ -58,6 +58,9 @@ pub struct AppState {
     pub styles_patched: bool,
     /// A large mesh being opened or converted a slice per frame, or null.
     pub job: Option<JobState>,
+    /// The first-visit hint's three things to try, each true once done, or
+    /// null when the hint is not shown (a link, an embed, or dismissed).
+    pub welcome: Option<[bool; 3]>,
     /// The edit menu, while it is open: what it offers, and why each
     /// greyed-out entry is refused.
     #[serde(rename = "editMenu")]

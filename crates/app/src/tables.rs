@@ -21,6 +21,8 @@ const NONE: &str = "∅";
 pub struct TablesResponse {
     /// A row or a reference cell was clicked.
     pub clicked: Option<ElementRef>,
+    /// The click was on a reference cell: a reference followed.
+    pub followed: bool,
     /// A row's id was right-clicked, where the pointer was: the edit menu.
     pub context: Option<(ElementRef, egui::Pos2)>,
     /// A stored reference cell was edited by hand (double-click, type an id
@@ -222,6 +224,7 @@ pub fn table_ui(
                                 });
                                 if link.clicked() {
                                     clicked_link = Some(target);
+                                    response.followed = true;
                                 }
                                 if !dim {
                                     let id = target.id.to_string();

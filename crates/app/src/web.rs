@@ -98,6 +98,9 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
     let search = location.search().unwrap_or_default();
     let hash = location.hash().unwrap_or_default();
     if search.is_empty() && hash.is_empty() {
+        if let Err(err) = with_app(runner, EdgewiseApp::first_visit) {
+            log::error!("the first view could not open: {}", js_error_text(&err));
+        }
         return;
     }
     let (link, messages) = CourseLink::parse(&search, &hash);

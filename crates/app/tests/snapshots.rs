@@ -226,3 +226,16 @@ fn hostile_link_error_light() {
     harness.run();
     harness.snapshot_options("hostile-link-error-light", &options());
 }
+
+#[test]
+fn the_first_visit_with_its_hint_and_the_parts_explained() {
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    harness.state_mut().first_visit();
+    harness.run();
+    harness.snapshot_options("first-visit", &options());
+    harness.get_by_label("What am I looking at?").click();
+    harness.run();
+    harness.snapshot_options("first-visit-explained", &options());
+}

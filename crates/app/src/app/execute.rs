@@ -41,6 +41,9 @@ impl EdgewiseApp {
             self.show_algorithm_panel = true;
         }
         self.tab_mut().sync_edit();
+        // The hint notes a selection or a step at once: the next command
+        // may undo it before a frame is drawn.
+        self.tour_progress(false);
         if let Err(error) = &result {
             self.report(error.to_string());
         }
