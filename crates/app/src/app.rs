@@ -41,6 +41,7 @@ pub mod files;
 pub mod first_visit;
 mod open_dialog;
 mod pending;
+mod readers;
 pub mod settings_ui;
 mod statistics;
 pub(crate) mod tabs;
@@ -83,6 +84,8 @@ pub struct EdgewiseApp {
     explain_shown_once: bool,
     /// This frame's panels, for "What am I looking at?".
     screen_parts: Vec<first_visit::Part>,
+    /// What the screen readers' copy was last built for.
+    reader_key: readers::ReaderKey,
     embed_observed: embed_events::Observed,
     /// Height of the panels above and below the view this frame, for the
     /// height an embedding page is asked for.
@@ -156,6 +159,7 @@ impl EdgewiseApp {
             explaining: false,
             explain_shown_once: false,
             screen_parts: Vec::new(),
+            reader_key: None,
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
             embed_events: Vec::new(),
@@ -672,9 +676,16 @@ impl EdgewiseApp {
     /// The message line along the bottom of the 3D view: what is under the
     /// pointer or selected, or what the loader noticed.
     fn message_line_ui(&self, ui: &mut egui::Ui, hovered: Option<ElementRef>) {
-        let Some(document) = &self.tab().document else {
-            return;
-        };
+        if let Some(text) = self.message_text(hovered) {
+            ui.add(egui::Label::new(egui::RichText::new(text).weak()).truncate());
+        }
+    }
+
+    /// The message line's sentence: the algorithm's step or prompt, the
+    /// element under the pointer, the selection and its references, or a
+    /// hint. Screen readers hear it too (`accessible.rs`).
+    fn message_text(&self, hovered: Option<ElementRef>) -> Option<String> {
+        let document = self.tab().document.as_ref()?;
         let text = if let Some(text) = self.algorithm_message() {
             text
         } else if let Some(pick) = hovered {
@@ -696,7 +707,7 @@ impl EdgewiseApp {
         } else {
             "Click a vertex, edge or face, here or in the tables.".to_owned()
         };
-        ui.add(egui::Label::new(egui::RichText::new(text).weak()).truncate());
+        Some(text)
     }
 
     fn error_ui(&mut self, ui: &mut egui::Ui) {
@@ -776,10 +787,7 @@ impl EdgewiseApp {
                     );
                 });
         };
-        let edge_title = match document.mesh() {
-            Mesh::Winged(_) => "Edges",
-            Mesh::Half(_) => "Half-edges",
-        };
+        let edge_title = tables::edge_table_title(document.mesh());
         StripBuilder::new(ui)
             .size(Size::relative(0.17).at_least(150.0))
             .size(Size::remainder().at_least(300.0))
@@ -894,6 +902,7 @@ impl eframe::App for EdgewiseApp {
         }
         self.observe_for_embedding(ui.ctx());
         crate::platform::deliver_events(&mut self.embed_events);
+        self.mirror_for_readers();
     }
 
     #[cfg(target_arch = "wasm32")]

@@ -3,6 +3,7 @@
 //! The same [`EdgewiseApp`] runs natively (a desktop window, used for
 //! development and UI tests) and in the browser (see `web`).
 
+pub mod accessible;
 pub mod algorithm;
 mod app;
 mod backend;

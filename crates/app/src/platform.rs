@@ -1,6 +1,7 @@
 //! What differs between the browser and the desktop, behind one interface:
 //! reading and writing files, keeping settings, fullscreen, the page's
-//! address, and telling an embedding page what changed. The rest of the app is the same on both; `cfg(target_arch)`
+//! address, telling an embedding page what changed, and the page's copy
+//! of the app for screen readers. The rest of the app is the same on both; `cfg(target_arch)`
 //! chooses the implementation here and nowhere else in the UI code.
 //!
 //! - `browser.rs`: a file picker and dropped files read asynchronously into
@@ -17,13 +18,13 @@ mod desktop;
 
 #[cfg(target_arch = "wasm32")]
 pub use browser::{
-    FileIo, deliver_events, js_error_text, left_fullscreen, load_settings, page_base,
-    set_fullscreen, store_settings,
+    FileIo, READER_COPY, deliver_events, js_error_text, left_fullscreen, load_settings, page_base,
+    set_fullscreen, show_to_readers, store_settings,
 };
 #[cfg(not(target_arch = "wasm32"))]
 pub use desktop::{
-    FileIo, deliver_events, left_fullscreen, load_settings, page_base, set_fullscreen,
-    store_settings,
+    FileIo, READER_COPY, deliver_events, left_fullscreen, load_settings, page_base, set_fullscreen,
+    show_to_readers, store_settings,
 };
 
 /// A file read from disk, waiting to be opened.

@@ -296,6 +296,22 @@ fn cell_edit_ui(ui: &mut egui::Ui) -> Option<Result<Option<u32>, String>> {
     result
 }
 
+/// The edge table's title: its rows are edges or half-edges.
+pub fn edge_table_title(mesh: &Mesh) -> &'static str {
+    match mesh {
+        Mesh::Winged(_) => "Edges",
+        Mesh::Half(_) => "Half-edges",
+    }
+}
+
+/// How a row is named to a reader: "half-edge 3" in a half-edge mesh.
+pub fn row_name(mesh: &Mesh, element: ElementRef) -> String {
+    match (mesh, element.kind) {
+        (Mesh::Half(_), ElementKind::Edge) => format!("half-edge {}", element.id),
+        _ => element.to_string(),
+    }
+}
+
 /// The cells of one row, in the order of [`Column::table`]: the id, the
 /// coordinates of a vertex, each reference with the column it is in, and the
 /// labels.

@@ -281,3 +281,21 @@ pub fn deliver_events(events: &mut Vec<crate::app::embed_events::EmbedEvent>) {
         }
     }
 }
+
+/// The page has a copy of the app for screen readers (index.html).
+pub const READER_COPY: bool = true;
+
+/// Fills the page's copy for screen readers: the tables' HTML (built from
+/// numbers and fixed names only) and the message, which an `aria-live`
+/// region announces.
+pub fn show_to_readers(tables: Option<&str>, message: Option<&str>) {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    if let Some(element) = document.get_element_by_id("edgewise_a11y_tables") {
+        element.set_inner_html(tables.unwrap_or("<p>No mesh is open.</p>"));
+    }
+    if let Some(element) = document.get_element_by_id("edgewise_a11y_live") {
+        element.set_text_content(message);
+    }
+}

@@ -123,3 +123,8 @@ pub fn page_base() -> String {
 /// Natively there is no page to tell: the events stay queued for tests
 /// (`EdgewiseApp::take_embed_events`), the oldest dropped past a bound.
 pub fn deliver_events(_events: &mut Vec<crate::app::embed_events::EmbedEvent>) {}
+
+/// Natively egui's AccessKit output is what screen readers read.
+pub const READER_COPY: bool = false;
+
+pub fn show_to_readers(_tables: Option<&str>, _message: Option<&str>) {}
