@@ -428,6 +428,7 @@ impl EdgewiseApp {
             structure: doc.map(|d| d.structure().link_name()),
             counts,
             selection: doc.and_then(Document::selection),
+            hovered: self.tab().hovered.or(self.tab().table_hovered),
             highlights: paint
                 .painted
                 .iter()
@@ -783,6 +784,7 @@ impl EdgewiseApp {
                         kind,
                         &tab.paint,
                         scroll_to,
+                        tab.hovered,
                         &mut response,
                     );
                 });
@@ -797,6 +799,7 @@ impl EdgewiseApp {
                 strip.cell(|ui| table(ui, ElementKind::Edge, edge_title));
                 strip.cell(|ui| table(ui, ElementKind::Vertex, "Vertices"));
             });
+        self.tab_mut().table_hovered = response.hovered;
         if let Some(clicked) = response.clicked {
             self.element_clicked(Some(clicked));
             self.tour_progress(response.followed);
@@ -836,13 +839,14 @@ impl EdgewiseApp {
         let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
         let (view_rect, line_rect) =
             rect.split_top_bottom_at_y((rect.bottom() - line_height).max(rect.top()));
-        let hovered = self.tab().hovered;
+        let hovered = self.tab().hovered.or(self.tab().table_hovered);
         ui.scope_builder(egui::UiBuilder::new().max_rect(line_rect), |ui| {
             self.message_line_ui(ui, hovered);
         });
         let response = ui
             .scope_builder(egui::UiBuilder::new().max_rect(view_rect), |ui| {
                 let tab = &mut self.tabs[self.active_tab];
+                tab.view.set_preview(tab.table_hovered);
                 tab.view.ui(ui, &tab.styles, &self.view_options)
             })
             .inner;

@@ -33,6 +33,9 @@ pub struct AppState {
     pub counts: Counts,
     /// The selected element, or null.
     pub selection: Option<ElementRef>,
+    /// The element under the pointer, in the 3D view or in a table, which
+    /// both views preview; or null.
+    pub hovered: Option<ElementRef>,
     /// The selected element and every element it references.
     pub highlights: Vec<HighlightState>,
     /// The message of the last failed load or command, or null.

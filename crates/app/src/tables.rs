@@ -23,6 +23,8 @@ pub struct TablesResponse {
     pub clicked: Option<ElementRef>,
     /// The click was on a reference cell: a reference followed.
     pub followed: bool,
+    /// The row id or reference under the pointer: the 3D view previews it.
+    pub hovered: Option<ElementRef>,
     /// A row's id was right-clicked, where the pointer was: the edit menu.
     pub context: Option<(ElementRef, egui::Pos2)>,
     /// A stored reference cell was edited by hand (double-click, type an id
@@ -65,15 +67,21 @@ enum Cell {
 }
 
 /// Draws one table of `kind` filling `ui`, coloured by `paint`, scrolling
-/// just enough to show row `scroll_to` if given.
+/// just enough to show row `scroll_to` if given, with the row of
+/// `previewed` (the element under the pointer in the 3D view) outlined.
 pub fn table_ui(
     ui: &mut egui::Ui,
     mesh: &Mesh,
     kind: ElementKind,
     paint: &Paint,
     scroll_to: Option<u32>,
+    previewed: Option<ElementRef>,
     response: &mut TablesResponse,
 ) {
+    let preview_stroke = egui::Stroke::new(
+        1.5,
+        crate::view3d::Palette::new(ui.visuals().dark_mode).hover,
+    );
     let entries = Column::table(mesh.structure(), kind);
     let mut headers = vec!["id"];
     // Whether each header's column is derived, shown dimmed.
@@ -140,6 +148,13 @@ pub fn table_ui(
                                 colour.gamma_multiply(0.28),
                             );
                         }
+                        if previewed == Some(element) {
+                            // Top and bottom lines across the row's cells.
+                            let r = ui.max_rect().expand2(egui::vec2(4.0, 1.0));
+                            let painter = ui.painter();
+                            painter.hline(r.x_range(), r.top(), preview_stroke);
+                            painter.hline(r.x_range(), r.bottom(), preview_stroke);
+                        }
                         let dim = derived.get(i).copied().unwrap_or_default();
                         match cell {
                             Cell::Id(element) => {
@@ -158,6 +173,9 @@ pub fn table_ui(
                                     ui.selectable_label(selected_row, id).on_hover_text(hover);
                                 if label.clicked() {
                                     clicked_link = Some(element);
+                                }
+                                if label.hovered() {
+                                    response.hovered = Some(element);
                                 }
                                 if label.secondary_clicked() {
                                     let at = label
@@ -225,6 +243,9 @@ pub fn table_ui(
                                 if link.clicked() {
                                     clicked_link = Some(target);
                                     response.followed = true;
+                                }
+                                if link.hovered() {
+                                    response.hovered = Some(target);
                                 }
                                 if !dim {
                                     let id = target.id.to_string();

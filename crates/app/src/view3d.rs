@@ -389,6 +389,9 @@ pub struct View3d {
     last_viewport: Option<Rect>,
     frame_pending: bool,
     hover: Option<(HoverKey, Option<ElementRef>)>,
+    /// An element hovered elsewhere (a table row), outlined as if the
+    /// pointer were on it.
+    preview: Option<ElementRef>,
     gpu: Option<GpuLink>,
 }
 
@@ -422,6 +425,7 @@ impl View3d {
             last_viewport: None,
             frame_pending: false,
             hover: None,
+            preview: None,
             gpu,
         };
         view.set_geometry(MeshGeometry::default(), false);
@@ -470,6 +474,12 @@ impl View3d {
     }
 
     /// Frames the whole mesh.
+    /// Outlines `element` this frame as if the pointer were on it: the
+    /// preview of a table row under the pointer.
+    pub fn set_preview(&mut self, element: Option<ElementRef>) {
+        self.preview = element;
+    }
+
     pub fn frame_all(&mut self) {
         // Room for the vertex spheres and the labels above them.
         let (min, max) = self.scene.bounds;
@@ -649,10 +659,11 @@ impl View3d {
             sizes,
             palette,
         };
-        if let Some(pick) = hovered {
+        let outlined = hovered.or(self.preview);
+        if let Some(pick) = outlined {
             overlay.paint_hover(pick);
         }
-        overlay.paint_labels(&self.highlighted, hovered);
+        overlay.paint_labels(&self.highlighted, outlined);
         overlay.paint_pointers();
         if options.show_axes {
             overlay.paint_axis_letters();

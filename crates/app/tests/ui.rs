@@ -242,3 +242,27 @@ fn the_statistics_window_shows_euler_s_formula_and_the_build_s_warnings() {
     harness.get_by_label("V 3 E 3 F 1, χ 1, open (has a boundary)");
     harness.get_by_label("V 1 E 0 F 0, χ 1, open (has a boundary)");
 }
+
+#[test]
+fn a_reference_under_the_pointer_is_previewed_in_the_view_and_the_message_line() {
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .expect("opens");
+    harness.run();
+    harness
+        .get_by_label("incident edge of face 1: edge 2")
+        .hover();
+    harness.run();
+    let state = harness.state().state();
+    assert_eq!(
+        state.hovered,
+        Some(ElementRef {
+            kind: ElementKind::Edge,
+            id: 2
+        })
+    );
+    assert!(state.selection.is_none(), "a preview, not a selection");
+    harness.get_by_label("Edge 2: click to select");
+}

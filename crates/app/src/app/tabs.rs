@@ -47,6 +47,9 @@ pub(crate) struct Tab {
     pub(crate) twin: Option<Twin>,
     /// The element under the pointer in the 3D view, for the message line.
     pub(crate) hovered: Option<ElementRef>,
+    /// The row or reference under the pointer in the tables: the 3D view
+    /// previews it.
+    pub(crate) table_hovered: Option<ElementRef>,
     /// How many of an editing trace's changes the document's mesh shows.
     pub(crate) edit_applied: usize,
     /// Every load and edit of this tab, to undo and redo.
@@ -96,6 +99,7 @@ impl Tab {
             error: None,
             twin: None,
             hovered: None,
+            table_hovered: None,
             edit_applied: 0,
             history: History::default(),
             broken: Vec::new(),
