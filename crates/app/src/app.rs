@@ -834,6 +834,7 @@ impl EdgewiseApp {
         }
         self.refresh_styles();
         self.view_options.dark = self.theme.dark;
+        self.view_options.boundary = self.theme.boundary_override;
         self.view_options.pickable = self.pick_filter();
         let rect = ui.available_rect_before_wrap();
         let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;

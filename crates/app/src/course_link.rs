@@ -44,6 +44,7 @@ pub fn color_keys() -> Vec<String> {
         .into_iter()
         .map(|role| role.key().to_owned())
         .chain(crate::selection::Role::all().map(crate::selection::Role::setting_key))
+        .chain([crate::settings::BOUNDARY.to_owned()])
         .collect()
 }
 /// The mesh formats an inline mesh may be written in (all have a text form).

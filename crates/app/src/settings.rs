@@ -12,6 +12,10 @@ use crate::{selection::Role, theme::Theme, trace_role::TraceRole};
 /// The local-storage key.
 pub const STORAGE_KEY: &str = "edgewise.settings";
 
+/// The colour key of boundary half-edges, beside the trace and selection
+/// roles' keys.
+pub const BOUNDARY: &str = "boundary";
+
 /// The algorithm view's default code size, in points.
 pub const DEFAULT_CODE_SIZE: f32 = 14.0;
 /// The range offered for the code size.
@@ -65,7 +69,9 @@ impl Settings {
     pub fn sanitized(mut self) -> (Self, Option<String>) {
         let mut ignored = Vec::new();
         self.colours.retain(|role, colour| {
-            let known = TraceRole::parse(role).is_some() || Role::from_setting_key(role).is_some();
+            let known = TraceRole::parse(role).is_some()
+                || Role::from_setting_key(role).is_some()
+                || role == BOUNDARY;
             let fine = known && parse_hex(colour).is_some();
             if !fine {
                 ignored.push(format!("{role}:{colour}"));
@@ -99,7 +105,15 @@ impl Settings {
                 .iter()
                 .filter_map(|(role, hex)| Some((Role::from_setting_key(role)?, parse_hex(hex)?)))
                 .collect(),
+            boundary_override: self.colours.get(BOUNDARY).and_then(|hex| parse_hex(hex)),
         }
+    }
+
+    /// Sets (or, with the view's own colour, clears) the colour of
+    /// boundary half-edges.
+    pub fn set_boundary_colour(&mut self, colour: Color32) {
+        let default = crate::view3d::Palette::new(self.dark).boundary;
+        self.set_key_colour(BOUNDARY, colour, default);
     }
 
     /// Sets (or, with the journal's own colour, clears) a trace role's colour.

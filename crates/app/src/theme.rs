@@ -26,6 +26,8 @@ pub struct Theme {
     pub trace_overrides: Vec<(TraceRole, Color32)>,
     /// The user's own selection role colours.
     pub role_overrides: Vec<(Role, Color32)>,
+    /// The user's own colour of boundary half-edges.
+    pub boundary_override: Option<Color32>,
 }
 
 impl Theme {

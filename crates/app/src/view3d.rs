@@ -122,6 +122,10 @@ pub struct EdgeGeometry {
     pub pair: Option<u32>,
 }
 
+/// What the view's styles were built for: the styles' generation, the
+/// palette's base colours (line, boundary, face) and the geometry.
+type StylesKey = (u64, (egui::Color32, egui::Color32, egui::Color32), u64);
+
 /// Per-element look: the few elements that have a look of their own, and
 /// whether every other element is faded. Sparse, so that a selection or a
 /// trace step costs what it changes rather than what the mesh holds: the
@@ -217,6 +221,10 @@ pub struct ViewOptions {
     pub solid_faces: bool,
     pub pickable: PickFilter,
     pub dark: bool,
+    /// The user's colour for boundary half-edges, in place of the
+    /// palette's (from the theme, so not saved with the view).
+    #[serde(skip)]
+    pub boundary: Option<egui::Color32>,
     /// The frame was cleared to the background colour
     /// ([`Palette::background`]), so the view does not fill it again: each
     /// full-view fill costs a software renderer tens of milliseconds.
@@ -234,6 +242,7 @@ impl Default for ViewOptions {
             solid_faces: false,
             pickable: PickFilter::All,
             dark: false,
+            boundary: None,
             backdrop_cleared: false,
         }
     }
@@ -373,7 +382,7 @@ pub struct View3d {
     geometry_id: u64,
     styles_id: u64,
     /// (styles generation, dark, geometry id) the current styles were built for.
-    styles_key: Option<(u64, bool, u64)>,
+    styles_key: Option<StylesKey>,
     /// Elements with a colour or label, for the labels pass.
     highlighted: Vec<ElementRef>,
     /// The entries and fading the current GPU styles were built from, for
@@ -580,9 +589,12 @@ impl View3d {
             self.frame_all();
             self.frame_pending = false;
         }
-        let palette = Palette::new(options.dark);
+        let mut palette = Palette::new(options.dark);
+        if let Some(boundary) = options.boundary {
+            palette.boundary = boundary;
+        }
         self.handle_camera_input(ui, &response, rect);
-        self.update_styles(styles, options.dark, &palette);
+        self.update_styles(styles, &palette);
 
         let transforms = self.transforms(rect);
         self.coarse = self.is_small_on_screen(&transforms);
@@ -718,14 +730,17 @@ impl View3d {
     /// patches for the elements whose look changed, or everything after a
     /// new mesh, theme or fading (or while the last upload is still on its
     /// way to the GPU).
-    fn update_styles(&mut self, styles: &SceneStyles, dark: bool, palette: &Palette) {
-        let key = (styles.generation, dark, self.geometry_id);
+    fn update_styles(&mut self, styles: &SceneStyles, palette: &Palette) {
+        // The palette's base colours decide every plain element's style.
+        let look = (palette.line, palette.boundary, palette.face);
+        let key = (styles.generation, look, self.geometry_id);
         if self.styles_key == Some(key) {
             return;
         }
-        let same_base = self.styles_key.is_some_and(|(_, was_dark, geometry)| {
-            was_dark == dark && geometry == self.geometry_id
-        }) && self.fade_others == styles.fade_others;
+        let same_base = self
+            .styles_key
+            .is_some_and(|(_, was, geometry)| was == look && geometry == self.geometry_id)
+            && self.fade_others == styles.fade_others;
         self.styles_key = Some(key);
         let base_id = self.styles_id;
         self.styles_id = next_id();

@@ -124,6 +124,22 @@ impl EdgewiseApp {
                                     ui.label(name);
                                     ui.end_row();
                                 }
+                                let mut colour = theme
+                                    .boundary_override
+                                    .unwrap_or(crate::view3d::Palette::new(theme.dark).boundary);
+                                let response = ui.color_edit_button_srgba(&mut colour);
+                                response.widget_info(|| {
+                                    egui::WidgetInfo::labeled(
+                                        egui::Role::ColorWell,
+                                        true,
+                                        "colour of boundary half-edges",
+                                    )
+                                });
+                                if response.changed() {
+                                    settings.set_boundary_colour(colour);
+                                }
+                                ui.label("Boundary half-edges");
+                                ui.end_row();
                             });
                     });
                 if ui

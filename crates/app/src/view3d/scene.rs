@@ -268,6 +268,11 @@ impl Scene {
         self.geometry.edges.len()
     }
 
+    /// Half-edge `e` has no face: it runs along the boundary.
+    pub fn is_boundary_half_edge(&self, e: usize) -> bool {
+        self.geometry.half_edges && self.geometry.edges.get(e).is_some_and(|g| g.face.is_none())
+    }
+
     pub fn face_count(&self) -> usize {
         self.geometry.faces.len()
     }

@@ -31,6 +31,9 @@ pub struct Palette {
     pub label_stroke: Color32,
     pub hover: Color32,
     pub axes: [Color32; 3],
+    /// Base colour of a boundary half-edge (one without a face), as the
+    /// half-edge explainer sets them apart.
+    pub boundary: Color32,
 }
 
 impl Palette {
@@ -52,6 +55,7 @@ impl Palette {
                     Color32::from_rgb(112, 196, 120),
                     Color32::from_rgb(112, 150, 236),
                 ],
+                boundary: Color32::from_rgb(222, 150, 92),
             }
         } else {
             Self {
@@ -70,6 +74,7 @@ impl Palette {
                     Color32::from_rgb(52, 146, 64),
                     Color32::from_rgb(52, 94, 196),
                 ],
+                boundary: Color32::from_rgb(172, 92, 30),
             }
         }
     }
@@ -99,7 +104,12 @@ fn rgb(colour: Color32) -> [u8; 3] {
 
 /// The GPU style of a vertex or edge.
 pub fn line_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
-    let mut colour = style.colour.unwrap_or(palette.line);
+    line_style_on(style, palette, palette.line)
+}
+
+/// [`line_style`] for an element whose own base colour is `base`.
+fn line_style_on(style: &ElementStyle, palette: &Palette, base: Color32) -> StyleVertex {
+    let mut colour = style.colour.unwrap_or(base);
     if style.faded {
         colour = palette.faded(colour);
     }
@@ -158,10 +168,18 @@ impl StyleContext<'_> {
         }
     }
 
-    fn gpu_style(&self, kind: ElementKind, style: &ElementStyle) -> StyleVertex {
-        match kind {
+    fn gpu_style(&self, element: ElementRef, style: &ElementStyle) -> StyleVertex {
+        match element.kind {
             ElementKind::Face => face_style(style, self.palette),
-            ElementKind::Vertex | ElementKind::Edge => line_style(style, self.palette),
+            ElementKind::Vertex => line_style(style, self.palette),
+            ElementKind::Edge => {
+                let base = if self.scene.is_boundary_half_edge(element.id as usize) {
+                    self.palette.boundary
+                } else {
+                    self.palette.line
+                };
+                line_style_on(style, self.palette, base)
+            }
         }
     }
 
@@ -174,13 +192,16 @@ impl StyleContext<'_> {
 
     /// Every element's GPU style.
     pub fn build_all(&self, styles: &SceneStyles, id: u64) -> StyleUpload {
+        let base = styles.base();
         let all = |kind: ElementKind| {
-            let mut out = vec![self.gpu_style(kind, &styles.base()); self.count(kind)];
+            let mut out: Vec<StyleVertex> = (0..self.count(kind) as u32)
+                .map(|id| self.gpu_style(ElementRef::new(kind, id), &base))
+                .collect();
             let first = ElementRef::new(kind, 0);
             let last = ElementRef::new(kind, u32::MAX);
             for (element, style) in styles.elements.range(first..=last) {
                 if let Some(slot) = out.get_mut(element.id as usize) {
-                    *slot = self.gpu_style(kind, style);
+                    *slot = self.gpu_style(*element, style);
                 }
             }
             out
@@ -217,7 +238,7 @@ impl StyleContext<'_> {
             if index >= self.count(kind) {
                 continue;
             }
-            let style = self.gpu_style(kind, &styles.get(element));
+            let style = self.gpu_style(element, &styles.get(element));
             match kind {
                 ElementKind::Vertex => runs[0].push((element.id, vec![style])),
                 ElementKind::Edge => runs[1].push((element.id, vec![style])),
@@ -248,7 +269,7 @@ impl StyleContext<'_> {
             if !is_highlighted(style) || index >= self.count(element.kind) {
                 continue;
             }
-            let gpu = self.gpu_style(element.kind, style);
+            let gpu = self.gpu_style(element, style);
             match element.kind {
                 ElementKind::Vertex => {
                     upload.full_spheres.0.push(SphereInstance {
@@ -288,4 +309,40 @@ impl StyleContext<'_> {
 /// or carries a label.
 pub fn is_highlighted(style: &ElementStyle) -> bool {
     style.colour.is_some() || style.label.is_some()
+}
+
+#[cfg(test)]
+mod tests {
+    use edgewise_core::mesh::{Mesh, Structure, generate};
+
+    use super::*;
+    use crate::view3d::MeshGeometry;
+
+    #[test]
+    fn boundary_half_edges_have_their_own_base_colour() {
+        for (structure, boundary_count) in [(Structure::HalfEdge, 4), (Structure::WingedEdge, 0)] {
+            let (mesh, _) = Mesh::build(&generate::open_square(), structure).expect("builds");
+            let scene = Scene::new(MeshGeometry::from_mesh(&mesh));
+            let palette = Palette::new(false);
+            let context = StyleContext {
+                scene: &scene,
+                palette: &palette,
+            };
+            let upload = context.build_all(&SceneStyles::default(), 1);
+            let StyleWrites::All(edges) = &upload.edges else {
+                panic!("a whole upload");
+            };
+            let mut boundary = 0;
+            for (e, style) in edges.iter().enumerate() {
+                let expected = if scene.is_boundary_half_edge(e) {
+                    boundary += 1;
+                    palette.boundary
+                } else {
+                    palette.line
+                };
+                assert_eq!(style.colour[..3], rgb(expected), "{structure:?} edge {e}");
+            }
+            assert_eq!(boundary, boundary_count, "{structure:?}");
+        }
+    }
 }
