@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use edgewise_core::formats::{self, Format, Loaded, PlyEncoding, SaveOptions};
-use edgewise_core::lang::{self, Algorithm, Program, RunOptions, Value};
+use edgewise_core::lang::{self, Algorithm, Program, RunOptions, Value, question};
 use edgewise_core::mesh::operations::{self, Operation, Refusal};
 use edgewise_core::mesh::{Edit, Mesh, MeshStats, Structure};
 
@@ -151,6 +151,12 @@ enum Command {
         /// written if the run stops on an error or leaves broken records.
         #[arg(long, value_name = "OUT")]
         save: Option<PathBuf>,
+        /// A question set (`line 7: prompt` or `step 12: prompt` per line):
+        /// print each question with the step it is asked at and the answer
+        /// the run gives it, as the app will check it. `//?` comments in the
+        /// algorithm are printed as well.
+        #[arg(long, value_name = "SET")]
+        questions: Option<PathBuf>,
     },
     /// Check an algorithm file: print every error and exit 1 if there is any.
     CheckAlg {
@@ -203,6 +209,7 @@ fn main() -> ExitCode {
             args,
             step_limit,
             save,
+            questions,
         } => trace(
             &algfile,
             &name,
@@ -210,6 +217,7 @@ fn main() -> ExitCode {
             &args,
             step_limit,
             save.as_deref(),
+            questions.as_deref(),
         ),
         Command::CheckAlg { algfile } => check_alg(&algfile),
         Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
@@ -548,10 +556,20 @@ fn trace(
     args: &[String],
     step_limit: usize,
     save: Option<&Path>,
+    question_set: Option<&Path>,
 ) -> Outcome {
     let target = save.map(output_format).transpose()?;
     let program = compile(algfile)?;
     let algorithm = find(&program, algfile, name)?;
+    let mut questions = question::from_comments(algorithm);
+    if let Some(path) = question_set {
+        let text = read_text(path)?;
+        let set = question::parse_set(&text).map_err(|error| {
+            eprintln!("{}:{error}", shown(path));
+            Failure::Input
+        })?;
+        questions.extend(set);
+    }
     let mut inputs: Vec<(String, Value)> = Vec::with_capacity(args.len());
     for arg in args {
         let parsed = algorithm.parse_argument(arg).map_err(|error| {
@@ -584,6 +602,7 @@ fn trace(
     }
     out.push_str(&trace.render_marked());
     out.push('\n');
+    out.push_str(&render_questions(&trace, &questions));
     if algorithm.edits() {
         out.push_str(&format!(
             "changes: {}\nbefore: {}\nafter:  {}\n",
@@ -621,6 +640,30 @@ fn trace(
         emit(&format!("wrote {} ({written} bytes)\n", path.display()));
     }
     Ok(())
+}
+
+/// Each question the run asks, at its step, with its answer and the steps
+/// that give it; then the questions it cannot ask, and why.
+fn render_questions(trace: &lang::Trace, questions: &[question::Question]) -> String {
+    if questions.is_empty() {
+        return String::new();
+    }
+    let (posed, problems) = question::pose(trace, questions);
+    let mut out = String::from("questions:\n");
+    for p in &posed {
+        out.push_str(&format!(
+            "  at step {} (before line {}): {}\n    answer: {}. {}\n",
+            p.ask_at,
+            p.line(trace),
+            p.question.prompt,
+            p.expected,
+            p.explanation(trace)
+        ));
+    }
+    for problem in &problems {
+        out.push_str(&format!("  not asked: {problem}\n"));
+    }
+    out
 }
 
 fn check_alg(path: &Path) -> Outcome {

@@ -293,6 +293,53 @@ fn trace_prints_each_step_and_the_marked_elements() {
 }
 
 #[test]
+fn trace_prints_a_question_set_with_its_answers() {
+    let output = run(&[
+        "trace",
+        "algorithms/winged-edge.alg",
+        "vertexAdjacentEdge",
+        "meshes/tetrahedron.wtb",
+        "--arg",
+        "v=1",
+        "--questions",
+        "algorithms/questions/vertex-adjacent-edge.txt",
+    ]);
+    assert_eq!(code(&output), 0, "{}", stderr(&output));
+    let text = stdout(&output);
+    let questions = text.split_once("questions:\n").map(|(_, q)| q);
+    assert_eq!(
+        questions.map(|q| q.lines().take(2).collect::<Vec<_>>()),
+        Some(vec![
+            "  at step 0 (before line 13): Which edge will e be after the lookup v.incidentEdge?",
+            "    answer: edge 1. Step 1: lookup v.incidentEdge -> edge 1. Step 2: assign e := edge 1.",
+        ]),
+        "{text}"
+    );
+    assert_eq!(text.matches("    answer: ").count(), 6, "{text}");
+
+    let set = scratch("questions").join("set.txt");
+    std::fs::write(&set, "line 13: fine\nstep twelve: oops\n").expect("written");
+    let output = run(&[
+        "trace",
+        "algorithms/winged-edge.alg",
+        "vertexAdjacentEdge",
+        "meshes/tetrahedron.wtb",
+        "--arg",
+        "v=1",
+        "--questions",
+        set.to_str().expect("UTF-8 path"),
+    ]);
+    assert_eq!(code(&output), 1);
+    assert!(
+        stderr(&output).ends_with(
+            "set.txt:2:6: `twelve` is not a line or step number (1 or more)\n"
+        ),
+        "{}",
+        stderr(&output)
+    );
+}
+
+#[test]
 fn trace_builds_the_structure_the_algorithm_declares() {
     let output = run(&[
         "trace",

@@ -106,6 +106,7 @@ pub mod disasm;
 pub mod lexer;
 pub mod library;
 pub mod parser;
+pub mod question;
 pub mod token;
 pub mod topology;
 pub mod trace;

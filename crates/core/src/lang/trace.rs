@@ -174,6 +174,29 @@ pub enum StepKind<'t> {
     Done,
 }
 
+impl StepKind<'_> {
+    /// The value the step produced: what a lookup, comparison or
+    /// computation gave, what was assigned, marked, written or made. `None`
+    /// for a message, a call's start, a bare return and the end.
+    pub fn outcome(&self) -> Option<Value> {
+        match *self {
+            StepKind::Lookup { result, .. }
+            | StepKind::Compute { result, .. }
+            | StepKind::Call { result, .. }
+            | StepKind::Index { result, .. } => Some(result),
+            StepKind::Assign { value, .. } | StepKind::Append { value, .. } => Some(value),
+            StepKind::Compare { result, .. } => Some(Value::Boolean(result)),
+            StepKind::Mark { element }
+            | StepKind::Highlight { element }
+            | StepKind::New { element }
+            | StepKind::Delete { element } => Some(element),
+            StepKind::Write { new, .. } | StepKind::Store { new, .. } => Some(new),
+            StepKind::Return { value } => value,
+            StepKind::Message { .. } | StepKind::Invoke { .. } | StepKind::Done => None,
+        }
+    }
+}
+
 /// A decoded step with where it happened.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StepView<'t> {
@@ -1073,12 +1096,32 @@ impl Trace {
         let Some(view) = self.step(index) else {
             return String::new();
         };
+        let depth = self.depth(index).unwrap_or(0);
+        let indent = if depth > MAX_INDENT {
+            format!("{}[depth {depth}] ", "  ".repeat(MAX_INDENT))
+        } else {
+            "  ".repeat(depth)
+        };
+        format!(
+            "step {}  line {}  {indent}{}",
+            index + 1,
+            view.line,
+            self.render_operation(index)
+        )
+    }
+
+    /// What step `index` did, in the words of [`Self::render_line`] without
+    /// its step and line: `lookup e.startVertex -> vertex 1`.
+    pub fn render_operation(&self, index: usize) -> String {
+        let Some(view) = self.step(index) else {
+            return String::new();
+        };
         let Some((routine, _, instr)) = self.located(index) else {
             return String::new();
         };
         let snippet = routine.snippet(instr.span);
         let name = |reg| routine.register_name(reg);
-        let what = match view.kind {
+        match view.kind {
             StepKind::Lookup { result, .. } => format!("lookup {snippet} -> {result}"),
             StepKind::Assign { variable, value } => {
                 let name = routine
@@ -1177,14 +1220,7 @@ impl Trace {
                 format!("append {value} to {array} (now {length} {items})")
             }
             StepKind::Done => "done".to_owned(),
-        };
-        let depth = self.depth(index).unwrap_or(0);
-        let indent = if depth > MAX_INDENT {
-            format!("{}[depth {depth}] ", "  ".repeat(MAX_INDENT))
-        } else {
-            "  ".repeat(depth)
-        };
-        format!("step {}  line {}  {indent}{what}", index + 1, view.line)
+        }
     }
 
     /// `marked: edge 0, edge 5, edge 1`, or `marked:` when nothing was.
