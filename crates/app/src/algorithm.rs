@@ -6,6 +6,7 @@
 //! - [`frame`]: what one step shows (the journal's colours and labels);
 //! - [`highlight`]: syntax colouring from the language's lexer;
 //! - [`panel`]: the algorithm view and its controls;
+//! - [`quiz`]: stop-and-think questions and the student's answers;
 //! - [`editor`]: writing, checking, opening and saving algorithms.
 
 pub mod editor;
@@ -13,6 +14,7 @@ pub mod frame;
 pub mod highlight;
 pub mod library;
 pub mod panel;
+pub mod quiz;
 pub mod session;
 
 use edgewise_core::schema::ElementRef;
@@ -20,7 +22,10 @@ use edgewise_core::schema::Structure;
 use std::collections::{BTreeSet, HashMap};
 use std::sync::Arc;
 
-use edgewise_core::{lang::Algorithm, mesh::Mesh};
+use edgewise_core::{
+    lang::{Algorithm, Value, question::Question},
+    mesh::Mesh,
+};
 
 pub use frame::TraceFrame;
 pub use library::{AlgorithmLibrary, Origin};
@@ -37,6 +42,9 @@ pub struct Algorithms {
     pub library: AlgorithmLibrary,
     /// Breakpoint lines, kept per algorithm across runs.
     breakpoints: HashMap<(String, Structure), BTreeSet<u32>>,
+    /// Question sets from course links and the JavaScript API, kept per
+    /// algorithm across runs, asked besides its `//?` comments.
+    question_sets: HashMap<(String, Structure), (String, Vec<Question>)>,
     /// Seconds between automatic steps.
     pub delay: f32,
     pub editor: editor::AlgorithmEditor,
@@ -51,6 +59,7 @@ impl Default for Algorithms {
         Self {
             library: AlgorithmLibrary::shipped(),
             breakpoints: HashMap::new(),
+            question_sets: HashMap::new(),
             delay: DEFAULT_DELAY,
             editor: editor::AlgorithmEditor::default(),
             code_size: 14.0,
@@ -112,6 +121,55 @@ impl Algorithms {
             set.insert(line);
         }
         run.changed();
+    }
+
+    /// The questions a run of `algorithm` asks: its `//?` comments, then
+    /// the set given for it.
+    pub fn questions_for(&self, algorithm: &Algorithm) -> Vec<Question> {
+        let mut questions = edgewise_core::lang::question::from_comments(algorithm);
+        if let Some((_, set)) = self.question_sets.get(&Self::key_of(algorithm)) {
+            questions.extend(set.iter().cloned());
+        }
+        questions
+    }
+
+    /// The question set given for `algorithm`, as written, for share links.
+    pub fn question_set_text(&self, algorithm: &Algorithm) -> Option<&str> {
+        self.question_sets
+            .get(&Self::key_of(algorithm))
+            .map(|(text, _)| text.as_str())
+    }
+
+    /// Gives the running algorithm a question set (replacing the last one)
+    /// and asks it from the current run on; returns how many the run asks.
+    pub fn set_questions(&mut self, run: &mut AlgorithmRun, text: &str) -> Result<usize, String> {
+        let Some(algorithm) = run.algorithm().cloned() else {
+            return Err("start an algorithm before giving it questions".to_owned());
+        };
+        let set = edgewise_core::lang::question::parse_set(text)
+            .map_err(|error| format!("questions:{error}"))?;
+        self.question_sets
+            .insert(Self::key_of(&algorithm), (text.to_owned(), set));
+        if let Run::Tracing(session) = &mut run.run {
+            session.quiz = None;
+        }
+        Ok(self.pose(run))
+    }
+
+    /// Poses the run's questions if it is traced and has not yet; returns
+    /// how many it asks.
+    pub fn pose(&self, run: &mut AlgorithmRun) -> usize {
+        let Run::Tracing(session) = &mut run.run else {
+            return 0;
+        };
+        if session.quiz.is_none() {
+            let questions = self.questions_for(session.trace.algorithm());
+            session.quiz = Some(quiz::Quiz::new(&session.trace, &questions));
+            run.changed();
+        }
+        run.session()
+            .and_then(|session| session.quiz.as_ref())
+            .map_or(0, quiz::Quiz::len)
     }
 
     /// Advances `run` if it is playing; see [`AlgorithmRun::tick`].
@@ -192,7 +250,7 @@ impl AlgorithmRun {
     pub fn begin(
         &mut self,
         algorithm: Arc<Algorithm>,
-        inputs: &[(String, edgewise_core::lang::Value)],
+        inputs: &[(String, Value)],
         mesh: &Mesh,
     ) -> Result<(), String> {
         let mut pending = PendingRun::new(algorithm);
@@ -249,6 +307,17 @@ impl AlgorithmRun {
         self.run = Run::Tracing(Box::new(session));
         self.changed();
         Ok(())
+    }
+
+    /// Answers the question asked at the current step; returns its index
+    /// among the run's questions.
+    pub fn answer(&mut self, given: Value) -> Result<usize, String> {
+        let session = self.session_mut()?;
+        let step = session.step();
+        let quiz = session.quiz.as_mut().ok_or("this run asks no questions")?;
+        let index = quiz.answer(step, given)?;
+        self.changed();
+        Ok(index)
     }
 
     pub fn step(&mut self, n: usize) -> Result<(), String> {

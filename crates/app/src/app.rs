@@ -478,7 +478,7 @@ impl EdgewiseApp {
     fn trace_state(&self) -> Option<TraceState> {
         let session = self.tab().run.session()?;
         let frame = self.tab().run.current_frame(&self.theme)?;
-        Some(TraceState::new(session.trace.algorithm(), &frame))
+        Some(TraceState::new(session, &frame))
     }
 
     fn pending_state(&self) -> Option<PendingState> {

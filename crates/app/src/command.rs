@@ -7,6 +7,7 @@
 use std::fmt;
 
 use edgewise_core::{
+    lang::Value,
     mesh::{Structure, operations::Operation},
     schema::ElementRef,
 };
@@ -71,6 +72,13 @@ pub enum Command {
     Start,
     /// Steps the trace forward.
     Step(usize),
+    /// Answers the question asked at the current step: an element (or
+    /// null), true or false, or a number.
+    Answer(Value),
+    /// Gives the running algorithm a question set (`line 7: prompt` or
+    /// `step 12: prompt` per line), asked from now on besides its `//?`
+    /// comments.
+    SetQuestions(String),
     /// Drops the mesh being opened or converted a slice per frame.
     Cancel,
     /// Steps the trace back.

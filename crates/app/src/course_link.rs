@@ -93,7 +93,7 @@ const QUERY_KEYS: &[&str] = &[
     "codeSize",
 ];
 /// The fragment parameters, in the order `to_url` writes them.
-const FRAGMENT_KEYS: &[&str] = &["mesh", "poly", "format", "alg"];
+const FRAGMENT_KEYS: &[&str] = &["mesh", "poly", "format", "alg", "ask"];
 
 /// Where the link's mesh comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -139,6 +139,9 @@ pub struct CourseLink {
     /// Algorithm source carried in the fragment (`#alg=<payload>`), loaded
     /// into the menu before `algorithm` is run.
     pub algorithm_source: Option<String>,
+    /// A question set for the algorithm (`#ask=<payload>`), already read
+    /// once without error (see [`edgewise_core::lang::question`]).
+    pub questions: Option<String>,
     /// The algorithm's inputs, in link order (`?args=v:0,n:3`).
     pub args: Vec<(String, Argument)>,
     /// The trace step to show (`?step=12`).
@@ -206,6 +209,9 @@ impl CourseLink {
         }
         if let Some(source) = &self.algorithm_source {
             check_payload_size("alg", source.len(), built.alg_payload_chars)?;
+        }
+        if let Some(questions) = &self.questions {
+            check_payload_size("ask", questions.len(), built.ask_payload_chars)?;
         }
         Ok(built.url)
     }
@@ -367,6 +373,11 @@ impl CourseLink {
             built.alg_payload_chars = payload.len();
             fragment.push(format!("alg={payload}"));
         }
+        if let Some(questions) = &self.questions {
+            let payload = encode_payload(questions);
+            built.ask_payload_chars = payload.len();
+            fragment.push(format!("ask={payload}"));
+        }
 
         let base = base.split(['?', '#']).next().unwrap_or_default();
         let mut url = base.to_owned();
@@ -466,6 +477,7 @@ struct Built {
     url: String,
     mesh_payload_chars: usize,
     alg_payload_chars: usize,
+    ask_payload_chars: usize,
 }
 
 fn check_payload_size(name: &str, text_bytes: usize, payload_chars: usize) -> Result<(), String> {
@@ -628,6 +640,15 @@ impl Parser {
                 Ok(source) => self.link.algorithm_source = Some(source),
                 Err(message) => self.messages.push(message),
             },
+            "ask" => match decode_payload("ask", value) {
+                Ok(text) => match edgewise_core::lang::question::parse_set(&text) {
+                    Ok(_) => self.link.questions = Some(text),
+                    Err(error) => self
+                        .messages
+                        .push(format!("#ask= question set, line {error}")),
+                },
+                Err(message) => self.messages.push(message),
+            },
             _ => self.messages.push(unknown(key, value, FRAGMENT_KEYS, "#")),
         }
     }
@@ -743,6 +764,11 @@ impl Parser {
                 self.messages.push(format!(
                     "step={step}: only used with algorithm=, which this link does not have"
                 ));
+            }
+            if self.link.questions.take().is_some() {
+                self.messages.push(
+                    "#ask=: only used with algorithm=, which this link does not have".to_owned(),
+                );
             }
         }
         (self.link, self.messages)

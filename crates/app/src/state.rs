@@ -6,12 +6,14 @@
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::BTreeMap;
 
-use edgewise_core::lang::Algorithm;
 use edgewise_core::mesh::{Issue, MeshStats, Renumbering};
 use serde::Serialize;
 
 pub use crate::history::HistoryState;
-use crate::{algorithm::TraceFrame, code_editor::Diagnostic};
+use crate::{
+    algorithm::{TraceFrame, TraceSession, frame::value_text},
+    code_editor::Diagnostic,
+};
 
 /// A JSON-serialisable snapshot of what the app shows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -195,11 +197,100 @@ pub struct TraceState {
     pub output: Vec<String>,
     /// The call stack, the started algorithm first.
     pub calls: Vec<String>,
+    /// The question asked at this step, or null.
+    pub question: Option<QuestionState>,
+    /// The run's questions so far, or null when it asks none.
+    pub questions: Option<QuestionsState>,
+}
+
+/// A stop-and-think question at the current step.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct QuestionState {
+    /// Its place among the run's questions, from 0.
+    pub index: usize,
+    pub prompt: String,
+    /// The source line it asks about.
+    pub line: u32,
+    /// 'element' (a click, or null), 'boolean' or 'number'.
+    pub expects: &'static str,
+    /// The answer given, or null while it waits for one.
+    pub answer: Option<AnswerState>,
+}
+
+/// An answered question, as `state()` and `edgewise:answer` report it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct AnswerState {
+    /// Its place among the run's questions, from 0.
+    pub index: usize,
+    pub prompt: String,
+    pub line: u32,
+    /// The step it is asked at.
+    pub step: usize,
+    /// 'Edge 3', 'Boolean true', 'Integer 4', 'null'.
+    pub given: String,
+    pub expected: String,
+    pub correct: bool,
+    /// The steps that give the answer, as the trace prints them.
+    pub explanation: String,
+}
+
+impl AnswerState {
+    /// Question `index` of `session`'s run, if it was answered.
+    pub fn of(session: &TraceSession, index: usize) -> Option<Self> {
+        let asked = session.quiz.as_ref()?.asked(index)?;
+        let answered = asked.answered?;
+        let trace = &session.trace;
+        Some(Self {
+            index,
+            prompt: asked.posed.question.prompt.clone(),
+            line: asked.posed.line(trace),
+            step: asked.posed.ask_at,
+            given: value_text(answered.given),
+            expected: value_text(asked.posed.expected),
+            correct: answered.correct,
+            explanation: asked.posed.explanation(trace),
+        })
+    }
+}
+
+/// How a run's questions went.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct QuestionsState {
+    /// How many the run asks.
+    pub asked: usize,
+    pub answered: usize,
+    pub right: usize,
+    /// Why some questions are not asked (a line the run never reaches).
+    pub problems: Vec<String>,
 }
 
 impl TraceState {
-    pub fn new(algorithm: &Algorithm, frame: &TraceFrame) -> Self {
+    pub fn new(session: &TraceSession, frame: &TraceFrame) -> Self {
+        let algorithm = session.trace.algorithm();
+        let quiz = session.quiz.as_ref();
+        let question = quiz
+            .and_then(|quiz| quiz.at(session.step()))
+            .map(|asked| QuestionState {
+                index: asked.index,
+                prompt: asked.posed.question.prompt.clone(),
+                line: asked.posed.line(&session.trace),
+                expects: asked.expects.key(),
+                answer: AnswerState::of(session, asked.index),
+            });
+        let questions = quiz
+            .filter(|quiz| !quiz.is_empty() || !quiz.problems.is_empty())
+            .map(|quiz| {
+                let (answered, right) = quiz.score();
+                QuestionsState {
+                    asked: quiz.len(),
+                    answered,
+                    right,
+                    problems: quiz.problems.clone(),
+                }
+            });
         Self {
+            question,
+            questions,
             algorithm: algorithm.name.clone(),
             structure: algorithm.structure.link_name(),
             step: frame.step,

@@ -239,3 +239,33 @@ fn the_first_visit_with_its_hint_and_the_parts_explained() {
     harness.run();
     harness.snapshot_options("first-visit-explained", &options());
 }
+
+#[test]
+fn a_question_answered_wrongly_with_its_explanation() {
+    let Some(mut harness) = harness(egui::vec2(1440.0, 900.0), 1.0) else {
+        return;
+    };
+    let app = harness.state_mut();
+    app.load_sample("tetrahedron", Some(Structure::WingedEdge))
+        .unwrap();
+    app.run_algorithm(
+        "vertexAdjacentEdge",
+        &[("v".to_owned(), Argument::Number(1.0))],
+    )
+    .unwrap();
+    app.execute(edgewise_app::command::Command::SetQuestions(
+        include_str!("../../../algorithms/questions/vertex-adjacent-edge.txt").to_owned(),
+    ))
+    .unwrap();
+    app.trace_goto(6).unwrap();
+    harness.run();
+    harness.snapshot_options("question-asked", &options());
+    harness
+        .state_mut()
+        .execute(edgewise_app::command::Command::Answer(
+            edgewise_core::lang::Value::Edge(2),
+        ))
+        .unwrap();
+    harness.run();
+    harness.snapshot_options("question-answered-wrongly", &options());
+}

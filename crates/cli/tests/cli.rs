@@ -331,9 +331,8 @@ fn trace_prints_a_question_set_with_its_answers() {
     ]);
     assert_eq!(code(&output), 1);
     assert!(
-        stderr(&output).ends_with(
-            "set.txt:2:6: `twelve` is not a line or step number (1 or more)\n"
-        ),
+        stderr(&output)
+            .ends_with("set.txt:2:6: `twelve` is not a line or step number (1 or more)\n"),
         "{}",
         stderr(&output)
     );

@@ -30,7 +30,11 @@ fn posed(trace: &Trace, set: &str) -> Vec<Posed> {
     let questions = question::parse_set(&text).expect("the set reads");
     let (posed, problems) = question::pose(trace, &questions);
     assert!(problems.is_empty(), "{set}: {problems:?}");
-    assert_eq!(posed.len(), questions.len(), "{set}: every question is asked");
+    assert_eq!(
+        posed.len(),
+        questions.len(),
+        "{set}: every question is asked"
+    );
     posed
 }
 

@@ -1,6 +1,6 @@
 //! The embed protocol through web/examples/embed-script.html: two views
 //! placed by edgewise-embed.js size themselves from `edgewise:resize`, tell
-//! the page each step and selection, and answer calls, refusing bad ones
+//! the page each step, selection and answer, and answer calls, refusing bad ones
 //! with a reason.
 
 use std::time::Duration;
@@ -69,6 +69,67 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
     );
     assert!(winged >= 240 + 48, "{heights}");
     assert!(half - winged >= 100, "the tables' share: {heights}");
+
+    // The winged view's link carries questions: it asks the first at step
+    // 0, and the page hears each answer with its verdict.
+    let call_in = |id: &str, script: &str| {
+        format!(
+            "document.getElementById('{id}').edgewise.{script} \
+               .then((value) => ({{ ok: true, value }}), (error) => ({{ ok: false, error: error.message }}))"
+        )
+    };
+    let state = browser
+        .eval_async(&call_in("winged", "call('state')"))
+        .await?;
+    assert_eq!(
+        state["value"]["trace"]["question"]["prompt"],
+        "Which edge will e be after the lookup v.incidentEdge?",
+        "{state}"
+    );
+    let answered = browser
+        .eval_async(&call_in("winged", "call('answer', 'edge', 3)"))
+        .await?;
+    assert_eq!(answered["ok"], true, "{answered}");
+    browser
+        .wait_for(
+            "document.getElementById('winged-answers').textContent.startsWith('Not quite')",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let told = browser
+        .eval("return document.getElementById('winged-answers').textContent;")
+        .await?;
+    assert_eq!(
+        told,
+        "Not quite: Which edge will e be after the lookup v.incidentEdge? You answered Edge 3; \
+         the answer is Edge 1. (0 of 1 right)"
+    );
+    browser.screenshot("embed-script-question-answered").await?;
+    let went = browser
+        .eval_async(&call_in("winged", "call('goto', 4)"))
+        .await?;
+    assert_eq!(went["ok"], true, "{went}");
+    let answered = browser
+        .eval_async(&call_in("winged", "call('answer', false)"))
+        .await?;
+    assert_eq!(answered["ok"], true, "{answered}");
+    browser
+        .wait_for(
+            "document.getElementById('winged-answers').textContent.endsWith('(1 of 2 right)')",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let refused = browser
+        .eval_async(&call_in("winged", "call('answer', 'edge', 1)"))
+        .await?;
+    assert_eq!(refused["ok"], false, "{refused}");
+    assert_eq!(
+        refused["error"], "the question at step 4 is answered already (Boolean false)",
+        "{refused}"
+    );
+    browser
+        .eval_async(&call_in("winged", "call('goto', 0)"))
+        .await?;
 
     // The page's Step button calls into the view; the step comes back.
     browser

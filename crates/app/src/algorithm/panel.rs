@@ -97,6 +97,8 @@ impl Algorithms {
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
         header_ui(ui, &algorithm);
         let control = self.controls_ui(run, ui, step, steps, playing);
+        let answered = question_ui(run, ui, theme);
+        let control = control.or(answered);
         let breakpoints = self.breakpoints(run.algorithm());
         let Some(frame) = run.frame(theme).cloned() else {
             return control;
@@ -111,16 +113,18 @@ impl Algorithms {
         control.or(toggled)
     }
 
-    /// The step buttons, the step slider and the delay, for the panel and for
-    /// embedded views.
+    /// The step buttons, the step slider and the delay, and the question
+    /// asked at the step, for embedded views.
     pub fn trace_controls_ui(
         &mut self,
         run: &mut AlgorithmRun,
         ui: &mut egui::Ui,
+        theme: &Theme,
     ) -> Option<Command> {
         let session = run.session()?;
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
-        self.controls_ui(run, ui, step, steps, playing)
+        let control = self.controls_ui(run, ui, step, steps, playing);
+        control.or(question_ui(run, ui, theme))
     }
 
     fn controls_ui(
@@ -409,6 +413,16 @@ fn algorithm_hover(algorithm: &Algorithm) -> String {
         Some(description) => format!("{}\n{description}", algorithm.signature()),
         None => algorithm.signature(),
     }
+}
+
+/// The card of the question asked at the current step, if any.
+fn question_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui, theme: &Theme) -> Option<Command> {
+    let Run::Tracing(session) = &mut run.run else {
+        return None;
+    };
+    let step = session.step();
+    let quiz = session.quiz.as_mut()?;
+    quiz.question_ui(ui, &session.trace, step, theme)
 }
 
 /// The message line's sentence, and the output once done, or the error.

@@ -116,6 +116,8 @@ pub struct TraceSession {
     pub playing: bool,
     /// egui time of the last automatic step.
     pub last_auto_step: f64,
+    /// The run's questions, posed once the app has its question sets.
+    pub quiz: Option<super::quiz::Quiz>,
 }
 
 impl TraceSession {
@@ -125,6 +127,7 @@ impl TraceSession {
             step: 0,
             playing: false,
             last_auto_step: 0.0,
+            quiz: None,
         }
     }
 
@@ -233,13 +236,18 @@ impl TraceSession {
             .unwrap_or(0)
     }
 
-    /// One automatic step; stops playing at a breakpoint or the end.
+    /// One automatic step; stops playing at a breakpoint, a question not
+    /// yet answered, or the end.
     pub fn auto_step(&mut self, breakpoints: &BTreeSet<u32>) {
         self.forward(1);
-        if self
+        let at_breakpoint = self
             .line_at(self.step)
-            .is_some_and(|line| breakpoints.contains(&line))
-        {
+            .is_some_and(|line| breakpoints.contains(&line));
+        let asked = self
+            .quiz
+            .as_ref()
+            .is_some_and(|quiz| quiz.stops_at(self.step));
+        if at_breakpoint || asked {
             self.playing = false;
         }
     }

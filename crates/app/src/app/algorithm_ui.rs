@@ -116,6 +116,14 @@ impl EdgewiseApp {
     pub(super) fn element_clicked(&mut self, element: Option<ElementRef>) {
         match (&self.tab().run.run, element) {
             (Run::Picking(_), Some(element)) => self.issue(Command::Pick(element)),
+            (Run::Tracing(session), Some(element))
+                if session
+                    .quiz
+                    .as_ref()
+                    .is_some_and(|quiz| quiz.stops_at(session.step())) =>
+            {
+                self.issue(Command::Answer(element.into()));
+            }
             (Run::Tracing(_), element) if self.run_finished() => {
                 self.issue(Command::Abort);
                 self.issue(Command::Select(element));
@@ -156,12 +164,18 @@ impl EdgewiseApp {
                     pending.algorithm.name
                 )
             })),
-            Run::Tracing(_) => {
+            Run::Tracing(session) => {
                 let frame = self.tab().run.current_frame(&self.theme)?;
-                Some(format!(
-                    "Step {} of {}: {}",
-                    frame.step, frame.steps, frame.message
-                ))
+                let step = format!("Step {} of {}: {}", frame.step, frame.steps, frame.message);
+                let question = session
+                    .quiz
+                    .as_ref()
+                    .and_then(|quiz| quiz.at(session.step()))
+                    .filter(|asked| asked.answered.is_none());
+                Some(match question {
+                    Some(asked) => format!("{step} Question: {}", asked.posed.question.prompt),
+                    None => step,
+                })
             }
         }
     }

@@ -19,6 +19,7 @@ use super::{EdgewiseApp, embed::Embed, settings_ui::Presentation};
 use crate::{
     Argument,
     algorithm::Origin,
+    command::Command,
     course_link::{self, CourseLink, MeshSource, Panels, ThemeChoice},
     selection::Role,
     settings::{self, Settings},
@@ -85,6 +86,11 @@ impl EdgewiseApp {
         if let Some(name) = &link.algorithm {
             match self.run_algorithm(name, &link.args) {
                 Ok(()) => {
+                    if let Some(questions) = &link.questions
+                        && let Err(message) = self.execute(Command::SetQuestions(questions.clone()))
+                    {
+                        messages.push(format!("#ask=: {message}"));
+                    }
                     if let Some(step) = link.step
                         && let Err(message) = self.trace_goto(step)
                     {
@@ -208,6 +214,10 @@ impl EdgewiseApp {
             if user_made {
                 link.algorithm_source = Some(algorithm.source.to_string());
             }
+            link.questions = self
+                .algorithms
+                .question_set_text(&algorithm)
+                .map(str::to_owned);
             link.args = inputs
                 .into_iter()
                 .filter_map(|(name, value)| Some((name, argument_of(value)?)))

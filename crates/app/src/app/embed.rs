@@ -32,9 +32,11 @@ impl EdgewiseApp {
                             ui.strong(egui::RichText::new(&algorithm.name).monospace());
                         }
                     });
-                    let asked = self
-                        .algorithms
-                        .trace_controls_ui(&mut self.tabs[self.active_tab].run, ui);
+                    let asked = self.algorithms.trace_controls_ui(
+                        &mut self.tabs[self.active_tab].run,
+                        ui,
+                        &self.theme,
+                    );
                     if let Some(command) = asked {
                         self.issue(command);
                     }

@@ -9,7 +9,7 @@ use edgewise_core::schema::ElementRef;
 use serde::Serialize;
 
 use super::EdgewiseApp;
-use crate::state::{Counts, TraceState};
+use crate::state::{AnswerState, Counts, TraceState};
 
 /// Events kept for a platform that does not deliver them (natively, until a
 /// test takes them).
@@ -43,6 +43,8 @@ pub enum EmbedEvent {
     Resize {
         height: u32,
     },
+    /// A question was answered.
+    Answer(AnswerState),
 }
 
 impl EmbedEvent {
@@ -54,6 +56,7 @@ impl EmbedEvent {
             Self::SelectionChange { .. } => "selectionchange",
             Self::StepChange { .. } => "stepchange",
             Self::Resize { .. } => "resize",
+            Self::Answer(_) => "answer",
         }
     }
 }
@@ -118,6 +121,19 @@ impl EdgewiseApp {
         self.embed_events.extend(events);
         let excess = self.embed_events.len().saturating_sub(QUEUED);
         self.embed_events.drain(..excess);
+    }
+
+    /// Queues `edgewise:answer` for the run's question `index`, just
+    /// answered.
+    pub(super) fn report_answer(&mut self, index: usize) {
+        let answer = self
+            .tab()
+            .run
+            .session()
+            .and_then(|session| AnswerState::of(session, index));
+        if let Some(answer) = answer {
+            self.embed_events.push(EmbedEvent::Answer(answer));
+        }
     }
 
     /// Takes the queued events, oldest first.

@@ -37,6 +37,9 @@ impl EdgewiseApp {
             Command::Edit { .. } | Command::SetCell { .. } | Command::CompactIds
         );
         let result = self.dispatch(command);
+        // A run just traced asks its questions from its first step.
+        let run = &mut self.tabs[self.active_tab].run;
+        self.algorithms.pose(run);
         if shows_status && result.is_ok() {
             self.show_algorithm_panel = true;
         }
@@ -85,6 +88,16 @@ impl EdgewiseApp {
             ),
             Command::Start => done(self.tab_mut().with_mesh(AlgorithmRun::start)),
             Command::Step(n) => done(self.tab_mut().run.step(n)),
+            Command::Answer(given) => {
+                let index = self.tab_mut().run.answer(given)?;
+                self.report_answer(index);
+                Ok(Reply::Done)
+            }
+            Command::SetQuestions(text) => {
+                self.algorithms.pose(&mut self.tabs[self.active_tab].run);
+                let run = &mut self.tabs[self.active_tab].run;
+                done(self.algorithms.set_questions(run, &text).map(drop))
+            }
             Command::Back(n) => done(self.tab_mut().run.back(n)),
             Command::StepOver => done(self.tab_mut().run.step_over()),
             Command::StepOut => done(self.tab_mut().run.step_out()),

@@ -28,6 +28,7 @@ fn full_link() -> CourseLink {
         structure: Some(Structure::WingedEdge),
         algorithm: Some("vertexAdjacentEdge".into()),
         algorithm_source: None,
+        questions: None,
         args: vec![
             ("v".into(), Argument::Number(1.0)),
             ("closed".into(), Argument::Boolean(true)),
@@ -397,11 +398,25 @@ fn arb_link() -> impl Strategy<Value = CourseLink> {
         ElementKind::Edge,
         ElementKind::Face,
     ]);
+    // A question set that reads: `line N: prompt` or `step N: prompt`.
+    let questions = proptest::collection::vec(
+        (any::<bool>(), 1..100_000u32, "[A-Za-z?][A-Za-z ?]{0,40}"),
+        1..4,
+    )
+    .prop_map(|lines| {
+        lines
+            .into_iter()
+            .map(|(step, n, prompt)| {
+                format!("{} {n}: {prompt}\n", if step { "step" } else { "line" })
+            })
+            .collect::<String>()
+    });
     let algorithm = proptest::option::of((
         name(),
         proptest::option::of(any::<String>()),
         proptest::collection::btree_map(name(), arb_argument(), 0..4),
         proptest::option::of(any::<usize>()),
+        proptest::option::of(questions),
     ));
     let colors = proptest::collection::btree_map(
         proptest::sample::select(color_keys()),
@@ -441,11 +456,15 @@ fn arb_link() -> impl Strategy<Value = CourseLink> {
         .prop_map(|(mesh, half, algorithm, selection, camera, view, page)| {
             let (ids, axes, orientation, solid, mesh_scale, label_scale) = view;
             let (dark, embed, tables, panels, present, colors, code_size) = page;
-            let (algorithm, algorithm_source, args, step) = match algorithm {
-                Some((name, source, args, step)) => {
-                    (Some(name), source, args.into_iter().collect(), step)
-                }
-                None => (None, None, Vec::new(), None),
+            let (algorithm, algorithm_source, args, step, questions) = match algorithm {
+                Some((name, source, args, step, questions)) => (
+                    Some(name),
+                    source,
+                    args.into_iter().collect(),
+                    step,
+                    questions,
+                ),
+                None => (None, None, Vec::new(), None, None),
             };
             CourseLink {
                 mesh,
@@ -458,6 +477,7 @@ fn arb_link() -> impl Strategy<Value = CourseLink> {
                 }),
                 algorithm,
                 algorithm_source,
+                questions,
                 args,
                 step,
                 selection: selection.map(|(kind, id)| ElementRef { kind, id }),

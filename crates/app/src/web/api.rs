@@ -12,7 +12,7 @@ use eframe::wasm_bindgen::{JsValue, closure::Closure};
 
 use edgewise_core::{
     formats::{Format, MAX_FILE_BYTES},
-    lang::MAX_SOURCE_BYTES,
+    lang::{MAX_SOURCE_BYTES, Value, question},
     mesh::{Structure, operations::Operation},
     schema::{ElementKind, ElementRef},
 };
@@ -112,6 +112,19 @@ const COMMANDS: &[CommandEntry] = &[
         name: "step",
         call: "step(n)",
         read: |call, n, _| Ok(Command::Step(count(call, "n", n, Some(1))?)),
+    },
+    CommandEntry {
+        name: "answer",
+        call: "answer(value, id)",
+        read: read_answer,
+    },
+    CommandEntry {
+        name: "ask",
+        call: "ask(questions)",
+        read: |call, text, _| {
+            let text = text_argument(call, "questions", text, question::MAX_SET_BYTES)?;
+            Ok(Command::SetQuestions(text))
+        },
     },
     CommandEntry {
         name: "back",
@@ -305,6 +318,31 @@ fn read_element(call: &str, kind: &JsValue, id: &JsValue) -> Result<ElementRef, 
     let id =
         u32::try_from(id).map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
     Ok(ElementRef::new(kind, id))
+}
+
+/// `answer(kind, id)` for an element, `answer(null)`, `answer(true)` or
+/// `answer(4)`.
+fn read_answer(call: &'static str, value: &JsValue, id: &JsValue) -> Result<Command, String> {
+    let given = if value.is_null() {
+        Value::Null
+    } else if let Some(b) = value.as_bool() {
+        Value::Boolean(b)
+    } else if let Some(n) = value.as_f64() {
+        if !n.is_finite() || n.abs() > f64::from(f32::MAX) {
+            return Err(expected(call, "value", "a finite number", value));
+        }
+        crate::algorithm::quiz::number_value(n as f32)
+    } else if value.is_string() {
+        read_element(call, value, id)?.into()
+    } else {
+        return Err(expected(
+            call,
+            "value",
+            "'vertex', 'edge' or 'face' with an id, null, true, false or a number",
+            value,
+        ));
+    };
+    Ok(Command::Answer(given))
 }
 
 /// The most ids an operation takes (MEKR: a face and two vertices).

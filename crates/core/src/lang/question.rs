@@ -24,6 +24,8 @@ use super::types::Value;
 pub const MAX_QUESTIONS: usize = 100;
 /// The longest prompt, in characters.
 pub const MAX_PROMPT_CHARS: usize = 300;
+/// The longest question set, in bytes.
+pub const MAX_SET_BYTES: usize = 64 * 1024;
 /// The comment that starts a question in algorithm source.
 pub const COMMENT: &str = "//?";
 
@@ -71,6 +73,13 @@ impl std::error::Error for QuestionSetError {}
 /// Reads a question set: one `line N: prompt` or `step N: prompt` per line;
 /// blank lines and lines starting with `#` are skipped.
 pub fn parse_set(text: &str) -> Result<Vec<Question>, QuestionSetError> {
+    if text.len() > MAX_SET_BYTES {
+        return Err(QuestionSetError {
+            line: 1,
+            column: 1,
+            message: format!("the set is {} bytes; at most {MAX_SET_BYTES}", text.len()),
+        });
+    }
     let mut questions = Vec::new();
     for (number, raw) in text.lines().enumerate() {
         let line = number + 1;
@@ -291,9 +300,7 @@ pub fn pose(trace: &Trace, questions: &[Question]) -> (Vec<Posed>, Vec<String>) 
                 // The line's operations, with the calls it makes.
                 let depth = trace.depth(start);
                 let end = (start..steps)
-                    .find(|&index| {
-                        trace.line(index) != Some(line) && trace.depth(index) <= depth
-                    })
+                    .find(|&index| trace.line(index) != Some(line) && trace.depth(index) <= depth)
                     .unwrap_or(steps);
                 start..end
             }
@@ -341,8 +348,9 @@ mod tests {
 
     #[test]
     fn a_set_reads_lines_and_steps_and_skips_comments() {
-        let set = parse_set("# vertexAdjacentEdge\n\nline 12: Which edge?\n  Step 3 : Is it true?\n")
-            .expect("valid");
+        let set =
+            parse_set("# vertexAdjacentEdge\n\nline 12: Which edge?\n  Step 3 : Is it true?\n")
+                .expect("valid");
         assert_eq!(
             set,
             vec![
@@ -361,12 +369,27 @@ mod tests {
     #[test]
     fn set_errors_name_the_line_and_column() {
         let cases = [
-            ("line 3 Which?", "1:1: expected `line N: prompt` or `step N: prompt`"),
-            ("\nlne 3: Which?", "2:1: expected `line` or `step`, found `lne`"),
-            ("line x: Which?", "1:6: `x` is not a line or step number (1 or more)"),
-            ("line 0: Which?", "1:6: `0` is not a line or step number (1 or more)"),
+            (
+                "line 3 Which?",
+                "1:1: expected `line N: prompt` or `step N: prompt`",
+            ),
+            (
+                "\nlne 3: Which?",
+                "2:1: expected `line` or `step`, found `lne`",
+            ),
+            (
+                "line x: Which?",
+                "1:6: `x` is not a line or step number (1 or more)",
+            ),
+            (
+                "line 0: Which?",
+                "1:6: `0` is not a line or step number (1 or more)",
+            ),
             ("  line 2:   ", "1:10: the question is empty"),
-            ("line 2 3: Which?", "1:1: expected `line N` or `step N` before the colon, found `line 2 3`"),
+            (
+                "line 2 3: Which?",
+                "1:1: expected `line N` or `step N` before the colon, found `line 2 3`",
+            ),
         ];
         for (text, message) in cases {
             let error = parse_set(text).expect_err(text);
