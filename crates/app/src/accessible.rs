@@ -17,88 +17,152 @@ use crate::{state::HighlightState, tables};
 /// out (its rows are still read in the app's tables through AccessKit).
 pub const MAX_ROWS: usize = 300;
 
+/// One cell of a table as text writers see it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Cell {
+    /// A reference: the element named, or none.
+    Reference(Option<ElementRef>),
+    Coordinate(f32),
+}
+
+/// One of the three tables, for writers other than the app's own view
+/// (the screen readers' HTML, the SVG and PDF exports).
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextTable {
+    pub kind: ElementKind,
+    /// "Faces", "Edges", "Half-edges", "Vertices".
+    pub title: &'static str,
+    /// Rows in the mesh (deleted ones included).
+    pub count: usize,
+    /// After `id`: one per cell, `x`, `y` and `z` for a position.
+    pub headers: Vec<&'static str>,
+    /// The first rows, up to the limit asked for; `None` cells for a
+    /// deleted row.
+    pub rows: Vec<(ElementRef, Option<Vec<Cell>>)>,
+}
+
+/// The three tables of `mesh` in the app's order, each with at most
+/// `max_rows` rows.
+pub fn text_tables(mesh: &Mesh, max_rows: usize) -> Vec<TextTable> {
+    [
+        (ElementKind::Face, "Faces"),
+        (ElementKind::Edge, tables::edge_table_title(mesh)),
+        (ElementKind::Vertex, "Vertices"),
+    ]
+    .into_iter()
+    .map(|(kind, title)| text_table(mesh, kind, title, max_rows))
+    .collect()
+}
+
+fn text_table(mesh: &Mesh, kind: ElementKind, title: &'static str, max_rows: usize) -> TextTable {
+    let count = mesh.count(kind);
+    let columns = Column::table(mesh.structure(), kind);
+    let mut headers = Vec::new();
+    for entry in columns {
+        if entry.column == Column::Position {
+            headers.extend(["x", "y", "z"]);
+        } else {
+            headers.push(entry.header);
+        }
+    }
+    let rows = (0..count.min(max_rows) as u32)
+        .map(|id| {
+            let element = ElementRef { kind, id };
+            if !mesh.contains(element) {
+                return (element, None);
+            }
+            let mut cells = Vec::with_capacity(headers.len());
+            for entry in columns {
+                if entry.column == Column::Position {
+                    let p = mesh.position(VertexId::new(id)).unwrap_or_default();
+                    cells.extend([p.x, p.y, p.z].map(Cell::Coordinate));
+                } else {
+                    let target = mesh.reference(element, entry.column).ok().flatten();
+                    cells.push(Cell::Reference(target));
+                }
+            }
+            (element, Some(cells))
+        })
+        .collect();
+    TextTable {
+        kind,
+        title,
+        count,
+        headers,
+        rows,
+    }
+}
+
 /// The three tables of `mesh` as HTML, with each highlighted row's roles
 /// (`highlights`, as `state().highlights` lists them) in a last column.
 pub fn tables_html(mesh: &Mesh, highlights: &[HighlightState]) -> String {
-    let mut roles: BTreeMap<(ElementKind, u32), Vec<&str>> = BTreeMap::new();
+    let roles = roles_by_row(highlights);
+    let mut html = String::new();
+    for table in text_tables(mesh, MAX_ROWS) {
+        table_html(&mut html, mesh, &table, &roles);
+    }
+    html
+}
+
+/// Each highlighted row's roles in words, once each.
+pub fn roles_by_row(highlights: &[HighlightState]) -> BTreeMap<ElementRef, Vec<&str>> {
+    let mut roles: BTreeMap<ElementRef, Vec<&str>> = BTreeMap::new();
     for highlight in highlights {
-        let entry = roles.entry((highlight.kind, highlight.id)).or_default();
+        let entry = roles
+            .entry(ElementRef::new(highlight.kind, highlight.id))
+            .or_default();
         if !entry.contains(&highlight.role.as_str()) {
             entry.push(&highlight.role);
         }
     }
-    let mut html = String::new();
-    for (kind, title) in [
-        (ElementKind::Face, "Faces"),
-        (ElementKind::Edge, tables::edge_table_title(mesh)),
-        (ElementKind::Vertex, "Vertices"),
-    ] {
-        table_html(&mut html, mesh, kind, title, &roles);
-    }
-    html
+    roles
 }
 
 fn table_html(
     html: &mut String,
     mesh: &Mesh,
-    kind: ElementKind,
-    title: &str,
-    roles: &BTreeMap<(ElementKind, u32), Vec<&str>>,
+    table: &TextTable,
+    roles: &BTreeMap<ElementRef, Vec<&str>>,
 ) {
-    let count = mesh.count(kind);
-    let shown = count.min(MAX_ROWS);
-    let columns = Column::table(mesh.structure(), kind);
-    let _ = write!(html, "<table><caption>{title}: {count} rows");
-    if shown < count {
-        let _ = write!(html, ", the first {shown} here");
+    let _ = write!(
+        html,
+        "<table><caption>{}: {} rows",
+        table.title, table.count
+    );
+    if table.rows.len() < table.count {
+        let _ = write!(html, ", the first {} here", table.rows.len());
     }
     html.push_str("</caption><thead><tr><th scope=\"col\">id</th>");
-    for entry in columns {
-        if entry.column == Column::Position {
-            html.push_str(
-                "<th scope=\"col\">x</th><th scope=\"col\">y</th><th scope=\"col\">z</th>",
-            );
-        } else {
-            let _ = write!(html, "<th scope=\"col\">{}</th>", entry.header);
-        }
+    for header in &table.headers {
+        let _ = write!(html, "<th scope=\"col\">{header}</th>");
     }
     html.push_str("<th scope=\"col\">role</th></tr></thead><tbody>");
-    for id in 0..shown as u32 {
-        let element = ElementRef { kind, id };
+    for (element, cells) in &table.rows {
         let _ = write!(
             html,
             "<tr><th scope=\"row\">{}</th>",
-            tables::row_name(mesh, element)
+            tables::row_name(mesh, *element)
         );
-        if !mesh.contains(element) {
+        let Some(cells) = cells else {
             let _ = write!(
                 html,
                 "<td colspan=\"{}\">deleted</td></tr>",
-                columns.len() + 1
+                table.headers.len() + 1
             );
             continue;
-        }
-        for entry in columns {
-            if entry.column == Column::Position {
-                let p = mesh.position(VertexId::new(id)).unwrap_or_default();
-                let _ = write!(
-                    html,
-                    "<td>{:.3}</td><td>{:.3}</td><td>{:.3}</td>",
-                    p.x, p.y, p.z
-                );
-            } else {
-                match mesh.reference(element, entry.column).ok().flatten() {
-                    Some(target) => {
-                        let _ = write!(html, "<td>{}</td>", tables::row_name(mesh, target));
-                    }
-                    None => html.push_str("<td>none</td>"),
+        };
+        for cell in cells {
+            match cell {
+                Cell::Coordinate(x) => {
+                    let _ = write!(html, "<td>{x:.3}</td>");
                 }
+                Cell::Reference(Some(target)) => {
+                    let _ = write!(html, "<td>{}</td>", tables::row_name(mesh, *target));
+                }
+                Cell::Reference(None) => html.push_str("<td>none</td>"),
             }
         }
-        let role = roles
-            .get(&(kind, id))
-            .map(|r| r.join(", "))
-            .unwrap_or_default();
+        let role = roles.get(element).map(|r| r.join(", ")).unwrap_or_default();
         let _ = write!(html, "<td>{role}</td></tr>");
     }
     html.push_str("</tbody></table>");

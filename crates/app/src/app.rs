@@ -41,6 +41,7 @@ pub mod files;
 pub mod first_visit;
 mod open_dialog;
 mod pending;
+mod pictures;
 mod readers;
 pub mod settings_ui;
 mod statistics;
@@ -91,6 +92,8 @@ pub struct EdgewiseApp {
     /// height an embedding page is asked for.
     chrome_height: f32,
     embed_events: Vec<embed_events::EmbedEvent>,
+    /// Where the screenshot `exportImage('png')` asked for arrives.
+    screenshot: Option<pictures::ScreenshotSlot>,
     /// The theme key last applied to egui's visuals.
     applied_theme: Option<u64>,
     presentation: Option<settings_ui::Presentation>,
@@ -163,6 +166,7 @@ impl EdgewiseApp {
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
             embed_events: Vec::new(),
+            screenshot: None,
             applied_theme: None,
             presentation: None,
             presentation_choice: settings_ui::Presentation::default(),

@@ -11,6 +11,7 @@ pub mod code_editor;
 pub mod command;
 pub mod course_link;
 mod document;
+pub mod export;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod history;

@@ -28,6 +28,7 @@ mod renderer;
 mod scene;
 mod spheres;
 mod style;
+pub mod vector;
 
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::borrow::Cow;
@@ -560,6 +561,27 @@ impl View3d {
     /// elements it changed, rather than as every element's style.
     pub fn styles_patched(&self) -> bool {
         self.patched
+    }
+
+    /// The view as vector shapes, from the camera and in the colours of
+    /// the last frame drawn; `None` before the first.
+    pub fn vector_view(&self, options: &ViewOptions) -> Option<vector::VectorView> {
+        let viewport = self.last_viewport?;
+        let mut palette = Palette::new(options.dark);
+        if let Some(boundary) = options.boundary {
+            palette.boundary = boundary;
+        }
+        let looks = vector::Looks {
+            styles: &self.shown,
+            fade_others: self.fade_others,
+        };
+        Some(vector::vector_view(
+            &self.scene,
+            &looks,
+            &self.transforms(viewport),
+            options,
+            palette,
+        ))
     }
 
     /// Where an element's anchor (a vertex, an edge's middle, a face's

@@ -109,19 +109,26 @@ pub fn line_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
 
 /// [`line_style`] for an element whose own base colour is `base`.
 fn line_style_on(style: &ElementStyle, palette: &Palette, base: Color32) -> StyleVertex {
-    let mut colour = style.colour.unwrap_or(base);
-    if style.faded {
-        colour = palette.faded(colour);
-    }
-    let [r, g, b] = rgb(colour);
+    let [r, g, b] = rgb(line_colour(style, palette, base));
     StyleVertex {
         colour: [r, g, b, 255],
         extra: [if style.colour.is_some() { 255 } else { 0 }, 0, 0, 0],
     }
 }
 
-/// The GPU style of a face (alpha for see-through drawing).
-pub fn face_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
+/// The colour a vertex or edge is drawn in, `base` being its colour
+/// without a style of its own.
+pub fn line_colour(style: &ElementStyle, palette: &Palette, base: Color32) -> Color32 {
+    let colour = style.colour.unwrap_or(base);
+    if style.faded {
+        palette.faded(colour)
+    } else {
+        colour
+    }
+}
+
+/// The colour a see-through face is drawn in, and its opacity.
+pub fn face_colour(style: &ElementStyle, palette: &Palette) -> (Color32, f32) {
     let (colour, mut alpha) = match style.colour {
         Some(colour) => (colour, palette.face_highlight_alpha),
         None => (palette.face, palette.face_alpha),
@@ -129,11 +136,18 @@ pub fn face_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
     if style.faded {
         alpha *= 0.45;
     }
-    let [r, g, b] = rgb(if style.faded {
+    let colour = if style.faded {
         mix(colour, palette.background, 0.4)
     } else {
         colour
-    });
+    };
+    (colour, alpha)
+}
+
+/// The GPU style of a face (alpha for see-through drawing).
+pub fn face_style(style: &ElementStyle, palette: &Palette) -> StyleVertex {
+    let (colour, alpha) = face_colour(style, palette);
+    let [r, g, b] = rgb(colour);
     StyleVertex {
         colour: [r, g, b, (alpha * 255.0).round() as u8],
         extra: [if style.colour.is_some() { 255 } else { 0 }, 0, 0, 0],

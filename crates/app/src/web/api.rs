@@ -6,9 +6,9 @@
 //!   wrong (a bad argument names the call, the argument and what was
 //!   expected, before anything is read or changed).
 //! - [`QUERIES`]: each entry returns a value (`state`, `algorithms`,
-//!   `shareUrl`) or, for `exportMesh`, a Promise of one.
+//!   `shareUrl`) or, for `exportMesh` and `exportImage`, a Promise of one.
 
-use eframe::wasm_bindgen::{JsValue, closure::Closure};
+use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
 use edgewise_core::{
     formats::{Format, MAX_FILE_BYTES},
@@ -236,6 +236,10 @@ const QUERIES: &[QueryEntry] = &[
     QueryEntry {
         name: "exportMesh",
         answer: |runner, format, _| Ok(export(runner, format).into()),
+    },
+    QueryEntry {
+        name: "exportImage",
+        answer: |runner, format, _| Ok(export_image(runner, format).into()),
     },
     QueryEntry {
         name: "screenPosition",
@@ -522,6 +526,70 @@ fn export(runner: &eframe::WebRunner, format: &JsValue) -> js_sys::Promise {
         exported_object(&saved, format.is_binary()).map_err(|err| js_error_text(&err))
     })();
     settle_with(result)
+}
+
+/// `exportImage(format)`: `'svg'` resolves to the SVG text of the view
+/// and its tables; `'png'` to a `data:image/png` URL of the next frame.
+fn export_image(runner: &eframe::WebRunner, format: &JsValue) -> js_sys::Promise {
+    const CALL: &str = "exportImage(format)";
+    match format.as_string().as_deref() {
+        Some("svg") => settle_with(
+            with_app(runner, |app| app.export_svg())
+                .map_err(|err| js_error_text(&err))
+                .and_then(|svg| svg.map(JsValue::from).map_err(String::from)),
+        ),
+        Some("png") => {
+            if let Err(err) = with_app(runner, EdgewiseApp::request_screenshot) {
+                return settle(Err(js_error_text(&err)));
+            }
+            let runner = runner.clone();
+            wasm_bindgen_futures::future_to_promise(async move {
+                // The screenshot comes with the next frame drawn.
+                for _ in 0..300 {
+                    after_ms(16).await;
+                    if let Some(image) = with_app(&runner, EdgewiseApp::take_screenshot)? {
+                        return png_data_url(&image);
+                    }
+                }
+                Err(js_sys::Error::new(&format!(
+                    "{CALL}: no frame was drawn within 5 seconds; is the page hidden?"
+                ))
+                .into())
+            })
+        }
+        _ => settle(Err(expected(CALL, "format", "'png' or 'svg'", format))),
+    }
+}
+
+/// The image as a PNG data URL, encoded by the browser through a canvas.
+fn png_data_url(image: &egui::ColorImage) -> Result<JsValue, JsValue> {
+    let [width, height] = image.size.map(|n| n as u32);
+    let document = web_sys::window()
+        .and_then(|window| window.document())
+        .ok_or("exportImage: no document")?;
+    let canvas: web_sys::HtmlCanvasElement = document
+        .create_element("canvas")?
+        .dyn_into()
+        .map_err(|_| JsValue::from("exportImage: no canvas"))?;
+    canvas.set_width(width);
+    canvas.set_height(height);
+    let context: web_sys::CanvasRenderingContext2d = canvas
+        .get_context("2d")?
+        .ok_or("exportImage: no 2D context")?
+        .dyn_into()
+        .map_err(|_| JsValue::from("exportImage: no 2D context"))?;
+    let rgba: Vec<u8> = image
+        .pixels
+        .iter()
+        .flat_map(egui::Color32::to_srgba_unmultiplied)
+        .collect();
+    let data = web_sys::ImageData::new_with_u8_clamped_array_and_sh(
+        wasm_bindgen::Clamped(&rgba),
+        width,
+        height,
+    )?;
+    context.put_image_data(&data, 0.0, 0.0)?;
+    Ok(canvas.to_data_url_with_type("image/png")?.into())
 }
 
 /// Puts a function on the API object. The API lives as long as the page, so

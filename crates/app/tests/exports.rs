@@ -1,0 +1,106 @@
+//! Pictures for slides and handouts: the SVG export holds the view as
+//! vector shapes, the tables with the highlighted rows and their roles, and
+//! the message line, as well-formed XML (tests/golden/export-*.svg;
+//! `EDGEWISE_BLESS=1` rewrites them).
+
+mod support;
+
+#[path = "../../core/tests/golden/mod.rs"]
+mod golden;
+
+use edgewise_app::Argument;
+use edgewise_core::mesh::Structure;
+use edgewise_core::schema::{ElementKind, ElementRef};
+
+fn golden_path(name: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(format!("export-{name}.svg"))
+}
+
+/// Reads `svg` through an XML parser: it fails on anything malformed.
+fn well_formed(svg: &str) {
+    let mut reader = quick_xml::Reader::from_str(svg);
+    loop {
+        match reader.read_event() {
+            Ok(quick_xml::events::Event::Eof) => break,
+            Ok(_) => {}
+            Err(error) => panic!(
+                "not well-formed at byte {}: {error}\n{svg}",
+                reader.buffer_position()
+            ),
+        }
+    }
+}
+
+fn count(svg: &str, tag: &str) -> usize {
+    svg.matches(&format!("<{tag} ")).count()
+}
+
+#[test]
+fn a_selection_exports_with_its_roles_in_the_tables() {
+    let mut harness = support::harness_with("tetrahedron", Some(Structure::WingedEdge));
+    harness
+        .state_mut()
+        .select(Some(ElementRef::new(ElementKind::Edge, 0)))
+        .expect("selects");
+    harness.run();
+    let svg = harness.state().export_svg().expect("exports");
+    well_formed(&svg);
+    assert!(
+        svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""),
+        "{svg}"
+    );
+    assert!(
+        svg.contains("<title>Edgewise: tetrahedron.wtb</title>"),
+        "{svg}"
+    );
+    // Four faces, six arrows (each a shaft and a head), four vertices.
+    assert_eq!(count(&svg, "line"), 6);
+    assert_eq!(count(&svg, "polygon"), 4 + 6);
+    assert_eq!(count(&svg, "circle"), 4);
+    assert!(svg.contains(">Faces: 4 rows</text>"), "{svg}");
+    assert!(svg.contains(">Edges: 6 rows</text>"), "{svg}");
+    assert!(svg.contains(">Vertices: 4 rows</text>"), "{svg}");
+    assert!(svg.contains(">selected</text>"), "{svg}");
+    assert!(svg.contains(">left predecessor</text>"), "{svg}");
+    assert!(svg.contains("Edge 0 selected:"), "the caption: {svg}");
+    golden::assert_matches(&golden_path("tetrahedron-edge-0"), &svg);
+}
+
+#[test]
+fn a_trace_step_exports_with_its_sentence() {
+    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
+    let app = harness.state_mut();
+    app.run_algorithm(
+        "vertexAdjacentEdge",
+        &[("v".to_owned(), Argument::Number(0.0))],
+    )
+    .expect("runs");
+    app.trace_goto(4).expect("steps");
+    harness.run();
+    let svg = harness.state().export_svg().expect("exports");
+    well_formed(&svg);
+    assert!(
+        svg.contains("<title>Edgewise: vertexAdjacentEdge on cube.htb</title>"),
+        "{svg}"
+    );
+    assert!(svg.contains("Step 4 of "), "{svg}");
+    assert!(svg.contains(">Half-edges: 24 rows</text>"), "{svg}");
+    assert!(
+        svg.contains(">lookup</text>") || svg.contains(">variable</text>"),
+        "{svg}"
+    );
+    golden::assert_matches(&golden_path("cube-trace-step-4"), &svg);
+}
+
+#[test]
+fn without_a_mesh_the_export_says_why() {
+    let mut harness = support::harness();
+    harness.run();
+    let error = harness.state().export_svg().expect_err("no mesh");
+    assert_eq!(
+        error.as_str(),
+        "open a mesh before exporting a picture of it"
+    );
+}
