@@ -1008,7 +1008,7 @@ impl EdgewiseApp {
 
 /// Per-element styles for `mesh` from a paint: an entry for each painted or
 /// labelled element the mesh has, in time proportional to the paint.
-fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
+pub(crate) fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
     let mut styles = SceneStyles {
         generation,
         fade_others: paint.fade_others && !paint.is_empty(),

@@ -104,6 +104,10 @@ pub enum Command {
     /// Saves the open mesh in a format: a download in the browser, a file
     /// natively.
     SaveAs(SaveFormat),
+    /// Saves the view and its tables as SVG (a download in the browser).
+    SavePicture,
+    /// Saves the run as a PDF handout, a page per step.
+    SaveHandout,
     /// Applies a local operation (an edge flip, an Euler operator) to the
     /// open mesh, or refuses with the reason and leaves it as it was.
     Edit {

@@ -2,7 +2,10 @@
 //! as vector shapes ([`crate::view3d::vector`]) with the three tables beside
 //! it, highlighted rows in their colours and roles in words, and a caption
 //! (the trace step's sentence, or the selection's), so it prints crisply at
-//! any size and its text can be searched and copied.
+//! any size and its text can be searched and copied. [`pdf`] writes a
+//! whole run as a handout.
+
+pub mod pdf;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

@@ -566,18 +566,46 @@ impl View3d {
     /// The view as vector shapes, from the camera and in the colours of
     /// the last frame drawn; `None` before the first.
     pub fn vector_view(&self, options: &ViewOptions) -> Option<vector::VectorView> {
+        let looks = vector::Looks {
+            styles: &self.shown,
+            fade_others: self.fade_others,
+        };
+        self.vector_view_with(&self.scene, &looks, options)
+    }
+
+    /// [`Self::vector_view`] of another moment from the same camera: the
+    /// mesh as `geometry` (the view's own when `None`) in `styles`, for a
+    /// handout's pages.
+    pub fn vector_view_of(
+        &self,
+        geometry: Option<MeshGeometry>,
+        styles: &SceneStyles,
+        options: &ViewOptions,
+    ) -> Option<vector::VectorView> {
+        let looks = vector::Looks {
+            styles: &styles.elements,
+            fade_others: styles.fade_others,
+        };
+        match geometry {
+            Some(geometry) => self.vector_view_with(&Scene::new(geometry), &looks, options),
+            None => self.vector_view_with(&self.scene, &looks, options),
+        }
+    }
+
+    fn vector_view_with(
+        &self,
+        scene: &Scene,
+        looks: &vector::Looks<'_>,
+        options: &ViewOptions,
+    ) -> Option<vector::VectorView> {
         let viewport = self.last_viewport?;
         let mut palette = Palette::new(options.dark);
         if let Some(boundary) = options.boundary {
             palette.boundary = boundary;
         }
-        let looks = vector::Looks {
-            styles: &self.shown,
-            fade_others: self.fade_others,
-        };
         Some(vector::vector_view(
-            &self.scene,
-            &looks,
+            scene,
+            looks,
             &self.transforms(viewport),
             options,
             palette,

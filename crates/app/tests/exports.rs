@@ -104,3 +104,66 @@ fn without_a_mesh_the_export_says_why() {
         "open a mesh before exporting a picture of it"
     );
 }
+
+/// The PDF's page count, from its page tree.
+fn page_count(pdf: &[u8]) -> usize {
+    let text = String::from_utf8_lossy(pdf);
+    text.split("/Type /Pages ")
+        .nth(1)
+        .and_then(|rest| rest.split("/Count ").nth(1))
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|count| count.parse().ok())
+        .unwrap_or(0)
+}
+
+/// Keeps a handout in the target folder, to be looked at.
+fn keep(name: &str, bytes: &[u8]) {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"));
+    std::fs::write(dir.join(name), bytes).expect("written");
+}
+
+#[test]
+fn a_handout_has_a_page_per_step_and_follows_an_edit() {
+    let mut harness = support::harness_with("tetrahedron", Some(Structure::WingedEdge));
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), Argument::Number(1.0))],
+        )
+        .expect("runs");
+    harness.run();
+    let (name, pdf) = harness.state().export_handout().expect("a handout");
+    keep(&name, &pdf);
+    assert_eq!(name, "tetrahedron-vertexAdjacentEdge.pdf");
+    assert!(pdf.starts_with(b"%PDF-1.4\n") && pdf.ends_with(b"%%EOF\n"));
+    assert_eq!(page_count(&pdf), 23, "the start and 22 steps");
+    let text = String::from_utf8_lossy(&pdf);
+    assert!(
+        text.contains("(Step 7 of 22: Lookup"),
+        "the step's sentence"
+    );
+    assert!(text.contains("(Page 23 of 23)"));
+
+    // An edit: the pages follow the mesh as the run changes it.
+    let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));
+    harness
+        .state_mut()
+        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(0.0))])
+        .expect("runs");
+    harness.run();
+    let (name, pdf) = harness.state().export_handout().expect("a handout");
+    keep(&name, &pdf);
+    let steps = harness.state().state().trace.expect("tracing").steps;
+    assert_eq!(page_count(&pdf), steps + 1);
+    let text = String::from_utf8_lossy(&pdf);
+    assert!(text.contains("Write"), "the writes have pages");
+
+    let mut harness = support::harness_with("cube", None);
+    harness.run();
+    let error = harness.state().export_handout().expect_err("no run");
+    assert_eq!(
+        error.as_str(),
+        "run an algorithm first: a handout has a page per step of its run"
+    );
+}

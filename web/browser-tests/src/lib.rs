@@ -416,11 +416,7 @@ impl Browser {
             .screenshot()
             .await
             .context("screenshot failed")?;
-        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("screenshots");
-        std::fs::create_dir_all(&dir)?;
-        let path = dir.join(format!("{name}.png"));
-        std::fs::write(&path, &bytes)?;
-        Screenshot::decode(&bytes, path)
+        Screenshot::keep(name, &bytes)
     }
 
     /// Closes the browser session.
@@ -441,7 +437,22 @@ pub struct Screenshot {
     pub pixels: Vec<u8>,
 }
 
+/// Where screenshots and exported pictures are written, to be looked at.
+pub fn screenshots_dir() -> anyhow::Result<PathBuf> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("screenshots");
+    std::fs::create_dir_all(&dir)?;
+    Ok(dir)
+}
+
 impl Screenshot {
+    /// Writes PNG `bytes` to the screenshots folder as `name.png` and
+    /// decodes them.
+    pub fn keep(name: &str, bytes: &[u8]) -> anyhow::Result<Self> {
+        let path = screenshots_dir()?.join(format!("{name}.png"));
+        std::fs::write(&path, bytes)?;
+        Self::decode(bytes, path)
+    }
+
     fn decode(bytes: &[u8], path: PathBuf) -> anyhow::Result<Self> {
         let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
         decoder.set_transformations(png::Transformations::EXPAND);

@@ -37,7 +37,8 @@ pub enum EmbedEvent {
     },
     /// The trace moved, started or ended (`trace` null: no run).
     StepChange {
-        trace: Option<TraceState>,
+        /// Boxed: the other events are small.
+        trace: Option<Box<TraceState>>,
     },
     /// The content's preferred height in CSS pixels, for the iframe.
     Resize {
@@ -112,7 +113,7 @@ impl EdgewiseApp {
         }
         if now.step != before.step {
             events.push(EmbedEvent::StepChange {
-                trace: self.trace_state(),
+                trace: self.trace_state().map(Box::new),
             });
         }
         if now.height != before.height {

@@ -118,6 +118,18 @@ impl EdgewiseApp {
             Command::CloseTab(index) => done(self.remove_tab(index)),
             Command::SetSideBySide(on) => done(self.show_twin(on)),
             Command::SaveAs(format) => done(self.save_as(format)),
+            Command::SavePicture => {
+                let svg = self.export_svg()?;
+                let name = self.tab().document.as_ref().map_or_else(
+                    || "edgewise.svg".to_owned(),
+                    |document| format!("{}.svg", crate::files::mesh_stem(&document.name)),
+                );
+                done(self.files.io.write(&name, svg.as_bytes()).map(drop))
+            }
+            Command::SaveHandout => {
+                let (name, pdf) = self.export_handout()?;
+                done(self.files.io.write(&name, &pdf).map(drop))
+            }
             Command::Edit { operation, ids } => {
                 done(self.tab_mut().apply_operation(operation, &ids))
             }

@@ -158,16 +158,33 @@ impl EdgewiseApp {
             ui.menu_button("Save as…", |ui| {
                 for format in SaveFormat::ALL {
                     if ui.button(format.label()).clicked() {
-                        chosen = Some(format);
+                        chosen = Some(Command::SaveAs(format));
                     }
+                }
+                ui.separator();
+                if ui
+                    .button("Picture of the view (.svg)")
+                    .on_hover_text("The 3D view as vector shapes, with the tables beside it")
+                    .clicked()
+                {
+                    chosen = Some(Command::SavePicture);
+                }
+                let running = self.tab().run.session().is_some();
+                if ui
+                    .add_enabled(running, egui::Button::new("Handout of the run (.pdf)"))
+                    .on_hover_text("A page per step of the algorithm's run, for printing")
+                    .on_disabled_hover_text("Run an algorithm first")
+                    .clicked()
+                {
+                    chosen = Some(Command::SaveHandout);
                 }
                 self.files.io.save_note_ui(ui);
             })
             .response
             .on_disabled_hover_text("Open a mesh first");
         });
-        if let Some(format) = chosen {
-            self.issue(Command::SaveAs(format));
+        if let Some(command) = chosen {
+            self.issue(command);
         }
     }
 

@@ -1,16 +1,22 @@
 //! Pictures of the active tab for slides and handouts: the SVG of the view
-//! and its tables ([`crate::export`]), and screenshots of the whole window,
-//! which the browser encodes as PNG.
+//! and its tables ([`crate::export`]), a PDF handout of a run with a page
+//! per step, and screenshots of the whole window, which the browser encodes
+//! as PNG.
 
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
-use super::EdgewiseApp;
+use super::{EdgewiseApp, scene_styles};
 use crate::{
     accessible,
+    algorithm::frame::frame_at,
     command::CommandError,
-    export::{self, Picture, RowLook},
+    export::{self, Picture, RowLook, pdf},
+    view3d::MeshGeometry,
 };
+
+/// Characters of variables on one line of a handout's page.
+const VARIABLES_PER_LINE: usize = 120;
 
 /// Where a requested screenshot arrives from the renderer.
 pub(super) type ScreenshotSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
@@ -51,6 +57,79 @@ impl EdgewiseApp {
             tables: &tables,
             rows: &rows,
         }))
+    }
+
+    /// A PDF handout of the run: one page per step, from the start to the
+    /// end, each the view at that step (the mesh as it then was, for an
+    /// algorithm that changes it) under the step's sentence and the
+    /// variables. Returns the file's name and bytes.
+    pub fn export_handout(&self) -> Result<(String, Vec<u8>), CommandError> {
+        let tab = self.tab();
+        let (Some(document), Some(session)) = (tab.document.as_ref(), tab.run.session()) else {
+            return Err("run an algorithm first: a handout has a page per step of its run".into());
+        };
+        let trace = &session.trace;
+        let steps = trace.len();
+        if steps + 1 > pdf::MAX_PAGES {
+            return Err(format!(
+                "{} has {steps} steps; a handout holds at most {} pages (a step each, with the start)",
+                trace.algorithm().name,
+                pdf::MAX_PAGES
+            )
+            .into());
+        }
+        let edits = session.edits();
+        let mut mesh = document.mesh().clone();
+        let mut applied = tab.edit_applied;
+        let mut pages = Vec::with_capacity(steps + 1);
+        for step in 0..=steps {
+            let geometry = if edits {
+                let wanted = trace.changes_through(step.checked_sub(1));
+                trace
+                    .seek(&mut mesh, applied, wanted)
+                    .map_err(|error| format!("step {step}: {error}"))?;
+                applied = wanted;
+                Some(MeshGeometry::from_mesh(&mesh))
+            } else {
+                None
+            };
+            let frame = frame_at(trace, step, &self.theme);
+            let styles = scene_styles(&mesh, &frame.paint, 0);
+            let view = tab
+                .view
+                .vector_view_of(geometry, &styles, &self.view_options)
+                .ok_or("the view has not been drawn yet; export it after the next frame")?;
+            let mut lines = vec![format!(
+                "Step {} of {}: {}",
+                frame.step, frame.steps, frame.message
+            )];
+            let variables: Vec<String> = frame
+                .variables
+                .iter()
+                .map(|v| format!("{} = {}", v.name, v.value))
+                .collect();
+            // The variables, as many to a line as fit the page.
+            let mut line = String::new();
+            for variable in variables {
+                if !line.is_empty() && line.len() + variable.len() > VARIABLES_PER_LINE {
+                    lines.push(std::mem::take(&mut line));
+                }
+                if !line.is_empty() {
+                    line.push_str("    ");
+                }
+                line.push_str(&variable);
+            }
+            if !line.is_empty() {
+                lines.push(line);
+            }
+            pages.push(pdf::Page { view, lines });
+        }
+        let title = format!("{} on {}", trace.algorithm().name, document.name);
+        let stem = crate::files::mesh_stem(&document.name);
+        Ok((
+            format!("{stem}-{}.pdf", trace.algorithm().name),
+            pdf::handout(&title, &pages),
+        ))
     }
 
     /// Asks for a screenshot of the next frame; [`Self::take_screenshot`]

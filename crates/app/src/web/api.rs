@@ -238,6 +238,19 @@ const QUERIES: &[QueryEntry] = &[
         answer: |runner, format, _| Ok(export(runner, format).into()),
     },
     QueryEntry {
+        name: "exportHandout",
+        answer: |runner, _, _| {
+            let result = with_app(runner, |app| app.export_handout())
+                .map_err(|err| js_error_text(&err))
+                .and_then(|handout| handout.map_err(String::from))
+                .and_then(|(name, bytes)| {
+                    exported_object(&SavedFile { name, bytes }, true)
+                        .map_err(|err| js_error_text(&err))
+                });
+            Ok(settle_with(result).into())
+        },
+    },
+    QueryEntry {
         name: "exportImage",
         answer: |runner, format, _| Ok(export_image(runner, format).into()),
     },
