@@ -58,6 +58,23 @@ impl TraceRole {
         Self::ALL.into_iter().find(|role| role.key() == key)
     }
 
+    /// The role's mark in labels, a cue besides colour (for readers who
+    /// cannot tell the colours apart, and for print in gray); a variable's
+    /// cue is its name.
+    pub fn glyph(self) -> Option<&'static str> {
+        match self {
+            TraceRole::Output => Some("✓"),
+            TraceRole::Lookup => Some("→"),
+            TraceRole::Highlighted => Some("★"),
+            TraceRole::Variable => None,
+            TraceRole::Compared => Some("?"),
+            TraceRole::Written => Some("✎"),
+            TraceRole::Created => Some("+"),
+            TraceRole::Deleted => Some("×"),
+            TraceRole::Broken => Some("!"),
+        }
+    }
+
     /// The legend's wording.
     pub fn meaning(self) -> &'static str {
         match self {

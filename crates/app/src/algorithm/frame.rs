@@ -245,9 +245,26 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
     for &element in &marked {
         push(&mut paint, element, TraceRole::Output);
     }
-    paint.labels = names
+    // Each role's glyph, then the names of the variables that refer to it.
+    let mut glyphs: HashMap<ElementRef, Vec<&str>> = HashMap::new();
+    for painted in &paint.painted {
+        if let Some(glyph) = TraceRole::parse(&painted.role).and_then(TraceRole::glyph) {
+            let entry = glyphs.entry(painted.element).or_default();
+            if !entry.contains(&glyph) {
+                entry.push(glyph);
+            }
+        }
+    }
+    let labelled: std::collections::BTreeSet<ElementRef> =
+        glyphs.keys().chain(names.keys()).copied().collect();
+    paint.labels = labelled
         .into_iter()
-        .map(|(element, names)| (element, names.join(", ")))
+        .map(|element| {
+            let marks = glyphs.get(&element).map(|g| g.concat());
+            let names = names.get(&element).map(|n| n.join(", "));
+            let label = [marks, names].into_iter().flatten().collect::<Vec<_>>();
+            (element, label.join(" "))
+        })
         .collect();
 
     let (line, span) = match view {

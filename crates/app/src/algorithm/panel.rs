@@ -501,7 +501,10 @@ fn legend_ui(ui: &mut egui::Ui, theme: &Theme) {
                 let (rect, _) = ui.allocate_exact_size(vec2(12.0, 12.0), Sense::hover());
                 ui.painter()
                     .rect_filled(rect, 2.0, theme.trace_colour(role));
-                ui.small(role.meaning());
+                match role.glyph() {
+                    Some(glyph) => ui.small(format!("{glyph} {}", role.meaning())),
+                    None => ui.small(format!("name: {}", role.meaning())),
+                };
             });
         }
     });

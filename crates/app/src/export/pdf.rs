@@ -117,7 +117,8 @@ fn rgb(colour: Color32) -> String {
 }
 
 /// Text for a PDF string in `WinAnsiEncoding`: Latin-1 kept (as octal escapes
-/// beyond ASCII), a few common symbols spelled out, anything else `?`.
+/// beyond ASCII), a few common symbols and the trace roles' glyphs spelled
+/// out, anything else `?`.
 pub fn pdf_text(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
@@ -128,6 +129,10 @@ pub fn pdf_text(text: &str) -> String {
             }
             '∅' => out.push_str("none"),
             '→' => out.push_str("->"),
+            // The trace roles' glyphs (`TraceRole::glyph`).
+            '★' => out.push('*'),
+            '✓' => out.push_str("ok"),
+            '✎' => out.push_str("w"),
             '…' => out.push_str("..."),
             '–' | '—' | '−' => out.push('-'),
             ' '..='~' => out.push(c),
@@ -323,7 +328,7 @@ mod tests {
     #[test]
     fn text_is_escaped_for_win_ansi() {
         assert_eq!(pdf_text("a (b) \\ c"), "a \\(b\\) \\\\ c");
-        assert_eq!(pdf_text("∅ → é ✓"), "none -> \\351 ?");
+        assert_eq!(pdf_text("∅ → é ✓ ☃"), "none -> \\351 ok ?");
     }
 
     #[test]
