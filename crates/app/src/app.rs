@@ -34,6 +34,7 @@ pub mod algorithm_ui;
 pub mod course;
 pub(crate) mod edit_menu;
 mod edit_ui;
+mod element_box;
 pub mod embed;
 pub mod embed_events;
 pub mod execute;
@@ -92,6 +93,8 @@ pub struct EdgewiseApp {
     /// height an embedding page is asked for.
     chrome_height: f32,
     embed_events: Vec<embed_events::EmbedEvent>,
+    /// What is typed in the message line's element box.
+    element_box: String,
     /// Where the screenshot `exportImage('png')` asked for arrives.
     screenshot: Option<pictures::ScreenshotSlot>,
     /// The theme key last applied to egui's visuals.
@@ -166,6 +169,7 @@ impl EdgewiseApp {
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
             embed_events: Vec::new(),
+            element_box: String::new(),
             screenshot: None,
             applied_theme: None,
             presentation: None,
@@ -846,7 +850,12 @@ impl EdgewiseApp {
             rect.split_top_bottom_at_y((rect.bottom() - line_height).max(rect.top()));
         let hovered = self.tab().hovered.or(self.tab().table_hovered);
         ui.scope_builder(egui::UiBuilder::new().max_rect(line_rect), |ui| {
-            self.message_line_ui(ui, hovered);
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                self.element_box_ui(ui);
+                ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
+                    self.message_line_ui(ui, hovered);
+                });
+            });
         });
         let response = ui
             .scope_builder(egui::UiBuilder::new().max_rect(view_rect), |ui| {

@@ -104,6 +104,10 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
         "Not quite: Which edge will e be after the lookup v.incidentEdge? You answered Edge 3; \
          the answer is Edge 1. (0 of 1 right)"
     );
+    // The question card sits under the view, with the step controls.
+    browser
+        .eval("document.getElementById('winged-answers').scrollIntoView({block: 'end'}); return null;")
+        .await?;
     browser.screenshot("embed-script-question-answered").await?;
     let went = browser
         .eval_async(&call_in("winged", "call('goto', 4)"))
