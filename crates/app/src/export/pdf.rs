@@ -132,7 +132,7 @@ pub fn pdf_text(text: &str) -> String {
             // The trace roles' glyphs (`TraceRole::glyph`).
             '★' => out.push('*'),
             '✓' => out.push_str("ok"),
-            '✎' => out.push_str("w"),
+            '✎' => out.push('w'),
             '…' => out.push_str("..."),
             '–' | '—' | '−' => out.push('-'),
             ' '..='~' => out.push(c),
