@@ -7,6 +7,7 @@
 
 mod api;
 mod arguments;
+mod recording;
 
 use eframe::wasm_bindgen::{JsCast as _, JsValue};
 

@@ -1,7 +1,8 @@
 //! `exportImage`: the view as PNG (a data URL of the next frame) and as
 //! SVG (vector shapes and the tables), each opening as an image in the
-//! browser; `exportHandout`: a run as a PDF with a page per step. All are
-//! written to screenshots/ to be looked at.
+//! browser; `exportHandout`: a run as a PDF with a page per step;
+//! `recordRun`: the run as a WebM video. All are written to screenshots/ to
+//! be looked at.
 
 use base64::Engine as _;
 use edgewise_browser_tests::{Browser, Screenshot, screenshots_dir};
@@ -88,6 +89,35 @@ async fn the_view_exports_as_png_and_svg_that_open_as_images() -> anyhow::Result
     assert!(
         String::from_utf8_lossy(&pdf).contains("/Count 23"),
         "a page for the start and each of the 22 steps"
+    );
+
+    // The run as a video, a step every 60 ms, recorded from the canvas.
+    let video = browser
+        .eval_async("window.edgewise.recordRun({delay: 60})")
+        .await?;
+    assert_eq!(video["name"], "tetrahedron-vertexAdjacentEdge.webm");
+    assert_eq!(video["type"], "video/webm");
+    let webm = base64::engine::general_purpose::STANDARD
+        .decode(video["base64"].as_str().unwrap_or_default())?;
+    std::fs::write(
+        screenshots_dir()?.join("run-vertexAdjacentEdge.webm"),
+        &webm,
+    )?;
+    assert!(
+        webm.starts_with(&[0x1a, 0x45, 0xdf, 0xa3]),
+        "a WebM (EBML) file of {} bytes",
+        webm.len()
+    );
+    assert_eq!(
+        browser.state().await?["trace"]["step"],
+        0,
+        "the trace is back where it was"
+    );
+    assert_eq!(
+        browser
+            .refusal("window.edgewise.recordRun({delay: 1})")
+            .await?,
+        "recordRun(options): options.delay must be milliseconds from 50 to 5000, not 1"
     );
 
     let refusal = browser

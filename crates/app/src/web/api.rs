@@ -251,6 +251,10 @@ const QUERIES: &[QueryEntry] = &[
         },
     },
     QueryEntry {
+        name: "recordRun",
+        answer: |runner, options, _| Ok(super::recording::record_run(runner, options).into()),
+    },
+    QueryEntry {
         name: "exportImage",
         answer: |runner, format, _| Ok(export_image(runner, format).into()),
     },
@@ -638,7 +642,7 @@ fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> 
 }
 
 /// Standard base64 with padding, so binary files cross the JSON boundary.
-fn base64(bytes: &[u8]) -> String {
+pub(super) fn base64(bytes: &[u8]) -> String {
     const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {

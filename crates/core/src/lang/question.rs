@@ -161,11 +161,8 @@ fn checked_prompt(prompt: &str) -> Result<String, String> {
 }
 
 /// Up to 40 characters of `text`, for messages.
-fn shorten(text: &str) -> String {
-    match text.char_indices().nth(40) {
-        Some((end, _)) => format!("{}…", &text[..end]),
-        None => text.to_owned(),
-    }
+fn shorten(text: &str) -> std::borrow::Cow<'_, str> {
+    super::diagnostic::shorten(text, 40)
 }
 
 /// The `//?` questions in `routine`'s source, each on the next line with
