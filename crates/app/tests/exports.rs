@@ -70,14 +70,8 @@ fn a_selection_exports_with_its_roles_in_the_tables() {
 
 #[test]
 fn a_trace_step_exports_with_its_sentence() {
-    let mut harness = support::harness_with("cube", Some(Structure::HalfEdge));
-    let app = harness.state_mut();
-    app.run_algorithm(
-        "vertexAdjacentEdge",
-        &[("v".to_owned(), Argument::Number(0.0))],
-    )
-    .expect("runs");
-    app.trace_goto(4).expect("steps");
+    let mut harness = support::harness_tracing("cube", Some(Structure::HalfEdge), 0);
+    harness.state_mut().trace_goto(4).expect("steps");
     harness.run();
     let svg = harness.state().export_svg().expect("exports");
     well_formed(&svg);
@@ -124,15 +118,7 @@ fn keep(name: &str, bytes: &[u8]) {
 
 #[test]
 fn a_handout_has_a_page_per_step_and_follows_an_edit() {
-    let mut harness = support::harness_with("tetrahedron", Some(Structure::WingedEdge));
-    harness
-        .state_mut()
-        .run_algorithm(
-            "vertexAdjacentEdge",
-            &[("v".to_owned(), Argument::Number(1.0))],
-        )
-        .expect("runs");
-    harness.run();
+    let harness = support::harness_tracing("tetrahedron", Some(Structure::WingedEdge), 1);
     let (name, pdf) = harness.state().export_handout().expect("a handout");
     keep(&name, &pdf);
     assert_eq!(name, "tetrahedron-vertexAdjacentEdge.pdf");

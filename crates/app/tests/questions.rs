@@ -5,7 +5,7 @@
 
 mod support;
 
-use edgewise_app::{Argument, EmbedEvent, command::Command};
+use edgewise_app::{EmbedEvent, command::Command};
 use edgewise_core::lang::Value;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use egui_kittest::kittest::Queryable as _;
@@ -13,14 +13,10 @@ use egui_kittest::kittest::Queryable as _;
 const SET: &str = include_str!("../../../algorithms/questions/vertex-adjacent-edge.txt");
 
 fn started() -> egui_kittest::Harness<'static, edgewise_app::EdgewiseApp> {
-    let mut harness = support::harness_with("tetrahedron", None);
-    let app = harness.state_mut();
-    app.run_algorithm(
-        "vertexAdjacentEdge",
-        &[("v".to_owned(), Argument::Number(1.0))],
-    )
-    .expect("runs");
-    app.execute(Command::SetQuestions(SET.to_owned()))
+    let mut harness = support::harness_tracing("tetrahedron", None, 1);
+    harness
+        .state_mut()
+        .execute(Command::SetQuestions(SET.to_owned()))
         .expect("the set reads");
     harness.run();
     harness

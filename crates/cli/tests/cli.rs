@@ -267,16 +267,24 @@ fn tables_prints_the_three_tables() {
     assert_eq!(stdout(&output), expected);
 }
 
-#[test]
-fn trace_prints_each_step_and_the_marked_elements() {
-    let output = run(&[
+/// `edgewise trace` of vertexAdjacentEdge on Table 2 from `v`, with `more`.
+fn trace_table_2(v: &str, more: &[&str]) -> Output {
+    let arg = format!("v={v}");
+    let mut args = vec![
         "trace",
         "algorithms/winged-edge.alg",
         "vertexAdjacentEdge",
         "meshes/tetrahedron.wtb",
         "--arg",
-        "v=3",
-    ]);
+        &arg,
+    ];
+    args.extend_from_slice(more);
+    run(&args)
+}
+
+#[test]
+fn trace_prints_each_step_and_the_marked_elements() {
+    let output = trace_table_2("3", &[]);
     assert_eq!(code(&output), 0, "{}", stderr(&output));
     let text = stdout(&output);
     let lines: Vec<&str> = text.lines().collect();
@@ -294,16 +302,13 @@ fn trace_prints_each_step_and_the_marked_elements() {
 
 #[test]
 fn trace_prints_a_question_set_with_its_answers() {
-    let output = run(&[
-        "trace",
-        "algorithms/winged-edge.alg",
-        "vertexAdjacentEdge",
-        "meshes/tetrahedron.wtb",
-        "--arg",
-        "v=1",
-        "--questions",
-        "algorithms/questions/vertex-adjacent-edge.txt",
-    ]);
+    let output = trace_table_2(
+        "1",
+        &[
+            "--questions",
+            "algorithms/questions/vertex-adjacent-edge.txt",
+        ],
+    );
     assert_eq!(code(&output), 0, "{}", stderr(&output));
     let text = stdout(&output);
     let questions = text.split_once("questions:\n").map(|(_, q)| q);
@@ -319,16 +324,7 @@ fn trace_prints_a_question_set_with_its_answers() {
 
     let set = scratch("questions").join("set.txt");
     std::fs::write(&set, "line 13: fine\nstep twelve: oops\n").expect("written");
-    let output = run(&[
-        "trace",
-        "algorithms/winged-edge.alg",
-        "vertexAdjacentEdge",
-        "meshes/tetrahedron.wtb",
-        "--arg",
-        "v=1",
-        "--questions",
-        set.to_str().expect("UTF-8 path"),
-    ]);
+    let output = trace_table_2("1", &["--questions", set.to_str().expect("UTF-8 path")]);
     assert_eq!(code(&output), 1);
     assert!(
         stderr(&output)

@@ -46,15 +46,20 @@ fn summary(trace: &Trace, posed: &[Posed]) -> Vec<(usize, u32, Value)> {
         .collect()
 }
 
-#[test]
-fn vertex_adjacent_edge_on_table_2() {
-    let trace = traced(
+/// vertexAdjacentEdge on the journal's Table 2, from vertex 1.
+fn table_2_from_vertex_1() -> Trace {
+    traced(
         "winged-edge.alg",
         "vertexAdjacentEdge",
         "meshes/tetrahedron.wtb",
         Structure::WingedEdge,
         ("v", Value::Vertex(1)),
-    );
+    )
+}
+
+#[test]
+fn vertex_adjacent_edge_on_table_2() {
+    let trace = table_2_from_vertex_1();
     let posed = posed(&trace, "algorithms/questions/vertex-adjacent-edge.txt");
     assert_eq!(
         summary(&trace, &posed),
@@ -133,13 +138,7 @@ fn comments_attach_to_the_next_line_with_code() {
 
 #[test]
 fn questions_the_run_cannot_ask_are_explained() {
-    let trace = traced(
-        "winged-edge.alg",
-        "vertexAdjacentEdge",
-        "meshes/tetrahedron.wtb",
-        Structure::WingedEdge,
-        ("v", Value::Vertex(1)),
-    );
+    let trace = table_2_from_vertex_1();
     let questions =
         question::parse_set("line 40: Never here?\nstep 99: Too late?\nline 23: The end?\n")
             .expect("reads");

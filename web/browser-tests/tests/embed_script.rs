@@ -10,6 +10,15 @@ use edgewise_browser_tests::Browser;
 /// Two apps start side by side on the CPU renderer: allow for both.
 const START_TIMEOUT: Duration = Duration::from_secs(180);
 
+/// A script calling the view in `#id` through `edgewise-embed.js`, that
+/// resolves to `{ok, value}` or `{ok: false, error}`.
+fn call_in(id: &str, script: &str) -> String {
+    format!(
+        "document.getElementById('{id}').edgewise.{script} \
+           .then((value) => ({{ ok: true, value }}), (error) => ({{ ok: false, error: error.message }}))"
+    )
+}
+
 #[tokio::test]
 async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
@@ -72,12 +81,6 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
 
     // The winged view's link carries questions: it asks the first at step
     // 0, and the page hears each answer with its verdict.
-    let call_in = |id: &str, script: &str| {
-        format!(
-            "document.getElementById('{id}').edgewise.{script} \
-               .then((value) => ({{ ok: true, value }}), (error) => ({{ ok: false, error: error.message }}))"
-        )
-    };
     let state = browser
         .eval_async(&call_in("winged", "call('state')"))
         .await?;
@@ -154,12 +157,7 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
     );
 
     // Calls answer with the API's value or its refusal.
-    let call = |script: &str| {
-        format!(
-            "document.getElementById('half').edgewise.{script} \
-               .then((value) => ({{ ok: true, value }}), (error) => ({{ ok: false, error: error.message }}))"
-        )
-    };
+    let call = |script: &str| call_in("half", script);
     let aborted = browser.eval_async(&call("call('abort')")).await?;
     assert_eq!(aborted["ok"], true, "{aborted}");
     let selected = browser

@@ -19,6 +19,12 @@ fn image_size(src_js: &str) -> String {
     )
 }
 
+/// The bytes of an exported `{name, base64}` file.
+fn decoded(file: &serde_json::Value) -> anyhow::Result<Vec<u8>> {
+    Ok(base64::engine::general_purpose::STANDARD
+        .decode(file["base64"].as_str().unwrap_or_default())?)
+}
+
 #[tokio::test]
 async fn the_view_exports_as_png_and_svg_that_open_as_images() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
@@ -79,8 +85,7 @@ async fn the_view_exports_as_png_and_svg_that_open_as_images() -> anyhow::Result
         .eval_async("window.edgewise.exportHandout()")
         .await?;
     assert_eq!(handout["name"], "tetrahedron-vertexAdjacentEdge.pdf");
-    let pdf = base64::engine::general_purpose::STANDARD
-        .decode(handout["base64"].as_str().unwrap_or_default())?;
+    let pdf = decoded(&handout)?;
     std::fs::write(
         screenshots_dir()?.join("handout-vertexAdjacentEdge.pdf"),
         &pdf,
@@ -97,8 +102,7 @@ async fn the_view_exports_as_png_and_svg_that_open_as_images() -> anyhow::Result
         .await?;
     assert_eq!(video["name"], "tetrahedron-vertexAdjacentEdge.webm");
     assert_eq!(video["type"], "video/webm");
-    let webm = base64::engine::general_purpose::STANDARD
-        .decode(video["base64"].as_str().unwrap_or_default())?;
+    let webm = decoded(&video)?;
     std::fs::write(
         screenshots_dir()?.join("run-vertexAdjacentEdge.webm"),
         &webm,

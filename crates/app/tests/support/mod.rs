@@ -49,6 +49,26 @@ pub fn harness_with(sample: &str, structure: Option<Structure>) -> Harness<'stat
     harness
 }
 
+/// [`harness_with`], then vertexAdjacentEdge started from vertex `v`, at
+/// step 0.
+#[allow(dead_code)] // Not every test file that includes this module uses it.
+pub fn harness_tracing(
+    sample: &str,
+    structure: Option<Structure>,
+    v: u32,
+) -> Harness<'static, EdgewiseApp> {
+    let mut harness = harness_with(sample, structure);
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), edgewise_app::Argument::Number(f64::from(v)))],
+        )
+        .expect("vertexAdjacentEdge runs");
+    harness.run();
+    harness
+}
+
 /// A sample file of meshes/, loaded natively as `structure`.
 pub fn sample_mesh(file: &str, structure: Structure) -> Mesh {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
