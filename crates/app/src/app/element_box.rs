@@ -9,6 +9,8 @@ use super::EdgewiseApp;
 
 /// The box's id, for giving it focus.
 const ID: &str = "element_box";
+/// Below this many points of message line, the box shrinks.
+const NARROW: f32 = 520.0;
 
 /// Reads `vertex 3`, `v3`, `edge 5`, `e 5`, `half-edge 5`, `h5`, `face 1`
 /// or `f1` (any case).
@@ -43,11 +45,17 @@ impl EdgewiseApp {
         if slash {
             ui.memory_mut(|memory| memory.request_focus(id));
         }
+        // A narrow view keeps most of its line for the message.
+        let (width, hint) = if ui.available_width() < NARROW {
+            (56.0, "/ go to")
+        } else {
+            (120.0, "go to: e 3   ( / )")
+        };
         let response = ui.add(
             egui::TextEdit::singleline(&mut self.element_box)
                 .id(id)
-                .desired_width(120.0)
-                .hint_text("go to: e 3   ( / )"),
+                .desired_width(width)
+                .hint_text(hint),
         );
         let response = response.on_hover_text(
             "Type an element (vertex 1, e 3, f2) and Enter: the same as clicking it",
