@@ -153,3 +153,22 @@ fn a_handout_has_a_page_per_step_and_follows_an_edit() {
         "run an algorithm first: a handout has a page per step of its run"
     );
 }
+
+#[test]
+fn a_mesh_too_large_for_a_vector_picture_is_refused() {
+    let mut harness = support::harness_with("icosphere-20k", None);
+    harness.run();
+    assert!(harness.state().export_svg().is_ok(), "20,480 faces draw");
+    let mut harness = support::harness_with("torus-200k", None);
+    for _ in 0..600 {
+        harness.step();
+        if harness.state().state().job.is_none() {
+            break;
+        }
+    }
+    let error = harness.state().export_svg().expect_err("too large");
+    assert_eq!(
+        error.as_str(),
+        "torus-200k has 199712 faces; a vector picture holds at most 50000: save a PNG of it instead"
+    );
+}

@@ -15,6 +15,12 @@ use crate::{
     view3d::MeshGeometry,
 };
 
+/// The most faces a vector picture draws: beyond, the file would be too
+/// large to open comfortably, and a PNG serves better.
+pub const MAX_PICTURE_FACES: usize = 50_000;
+/// The most faces a handout draws over all its pages.
+pub const MAX_HANDOUT_FACES: usize = 200_000;
+
 /// Characters of variables on one line of a handout's page.
 const VARIABLES_PER_LINE: usize = 120;
 
@@ -31,6 +37,15 @@ impl EdgewiseApp {
             .document
             .as_ref()
             .ok_or("open a mesh before exporting a picture of it")?;
+        let faces = document.mesh().face_count();
+        if faces > MAX_PICTURE_FACES {
+            return Err(format!(
+                "{} has {faces} faces; a vector picture holds at most {MAX_PICTURE_FACES}: \
+                 save a PNG of it instead",
+                document.name
+            )
+            .into());
+        }
         let view = tab
             .view
             .vector_view(&self.view_options)
@@ -75,6 +90,15 @@ impl EdgewiseApp {
                 "{} has {steps} steps; a handout holds at most {} pages (a step each, with the start)",
                 trace.algorithm().name,
                 pdf::MAX_PAGES
+            )
+            .into());
+        }
+        let faces = document.mesh().face_count();
+        if faces * (steps + 1) > MAX_HANDOUT_FACES {
+            return Err(format!(
+                "a handout of {} steps on {faces} faces would draw more than {MAX_HANDOUT_FACES} \
+                 faces in all; run it on a smaller mesh",
+                steps + 1
             )
             .into());
         }
