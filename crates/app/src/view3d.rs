@@ -773,6 +773,50 @@ impl View3d {
         if response.double_clicked() {
             self.frame_all();
         }
+        self.camera_keys(ui);
+    }
+
+    /// The camera from the keyboard, when no text field has it:
+    /// Shift+arrows orbit by 15°, `+` and `-` zoom, Shift+Home frames the
+    /// mesh. (Plain arrows and Home walk a trace.)
+    fn camera_keys(&mut self, ui: &egui::Ui) {
+        use egui::{Key, Modifiers};
+        if ui.ctx().egui_wants_keyboard_input() {
+            return;
+        }
+        // 32 points of drag turn the camera about 15 degrees.
+        const TURN: f32 = 32.0;
+        let (orbit, zoom, frame) = ui.input(|i| {
+            let shifted = |key| i.modifiers.matches_exact(Modifiers::SHIFT) && i.key_pressed(key);
+            let orbit = [
+                (Key::ArrowLeft, egui::vec2(-TURN, 0.0)),
+                (Key::ArrowRight, egui::vec2(TURN, 0.0)),
+                (Key::ArrowUp, egui::vec2(0.0, -TURN)),
+                (Key::ArrowDown, egui::vec2(0.0, TURN)),
+            ]
+            .into_iter()
+            .filter(|(key, _)| shifted(*key))
+            .fold(egui::Vec2::ZERO, |sum, (_, delta)| sum + delta);
+            // Ctrl or Cmd with + and - zoom the page instead.
+            let bare = !i.modifiers.command && !i.modifiers.alt;
+            let zoom = if bare && (i.key_pressed(Key::Plus) || i.key_pressed(Key::Equals)) {
+                1.25
+            } else if bare && i.key_pressed(Key::Minus) {
+                0.8
+            } else {
+                1.0
+            };
+            (orbit, zoom, shifted(Key::Home))
+        });
+        if orbit != egui::Vec2::ZERO {
+            self.camera.orbit(orbit);
+        }
+        if zoom != 1.0 {
+            self.camera.zoom(zoom);
+        }
+        if frame {
+            self.frame_all();
+        }
     }
 
     /// Brings the per-element GPU styles and the highlighted list up to

@@ -80,3 +80,41 @@ fn a_mistyped_element_says_what_was_expected() {
     assert_eq!(harness.state().state().selection, None);
     harness.get_by_label("Dismiss");
 }
+
+#[test]
+fn the_camera_turns_zooms_and_frames_from_the_keyboard() {
+    let mut harness = support::harness_tracing("tetrahedron", None, 1);
+    let camera = |harness: &egui_kittest::Harness<'static, edgewise_app::EdgewiseApp>| {
+        harness.state().course_link().camera.expect("a camera")
+    };
+    let start = camera(&harness);
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::ArrowLeft);
+    harness.run();
+    let turned = camera(&harness);
+    assert!(
+        (turned.yaw - start.yaw).abs() > 0.2,
+        "Shift+← turns the view: {start:?} -> {turned:?}"
+    );
+    let trace = harness.state().state().trace.expect("tracing");
+    assert_eq!(trace.step, 0, "and does not step the trace");
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::Home);
+    harness.run();
+    let framed = camera(&harness);
+    harness.key_press(egui::Key::Plus);
+    harness.run();
+    assert!(camera(&harness).distance < framed.distance, "+ zooms in");
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::Home);
+    harness.run();
+    let again = camera(&harness);
+    assert!(
+        (again.distance - framed.distance).abs() < 1e-3 * framed.distance,
+        "Shift+Home frames the mesh again: {framed:?} -> {again:?}"
+    );
+    harness.key_press(egui::Key::ArrowRight);
+    harness.run();
+    assert_eq!(
+        harness.state().state().trace.expect("tracing").step,
+        1,
+        "→ steps"
+    );
+}

@@ -197,11 +197,13 @@ impl EdgewiseApp {
         if ctx.egui_wants_keyboard_input() || self.tab().run.session().is_none() {
             return;
         }
+        // Shift with an arrow or Home moves the camera instead.
         let (forward, back, home, end, play, now) = ctx.input(|i| {
+            let plain = !i.modifiers.shift;
             (
-                i.key_pressed(egui::Key::Space) || i.key_pressed(egui::Key::ArrowRight),
-                i.key_pressed(egui::Key::ArrowLeft),
-                i.key_pressed(egui::Key::Home),
+                i.key_pressed(egui::Key::Space) || (plain && i.key_pressed(egui::Key::ArrowRight)),
+                plain && i.key_pressed(egui::Key::ArrowLeft),
+                plain && i.key_pressed(egui::Key::Home),
                 i.key_pressed(egui::Key::End),
                 i.key_pressed(egui::Key::P),
                 i.time,
