@@ -698,17 +698,15 @@ impl EdgewiseApp {
         let text = if let Some(text) = self.algorithm_message() {
             text
         } else if let Some(pick) = hovered {
-            let e = pick;
-            format!("{} {}: click to select", e.kind.title(), e.id)
+            format!("{}: click to select", titled(document.mesh(), pick))
         } else if let Some(first) = document.highlights().first() {
             let refs: Vec<String> = document.highlights()[1..]
                 .iter()
                 .map(|h| format!("{} {}", h.role.key(), h.element.id))
                 .collect();
             format!(
-                "{} {} selected: {}",
-                first.element.kind.title(),
-                first.element.id,
+                "{} selected: {}",
+                titled(document.mesh(), first.element),
                 refs.join(", ")
             )
         } else if let Some(warning) = document.warnings.first() {
@@ -876,6 +874,16 @@ impl EdgewiseApp {
         self.edit_keys(ui.ctx(), view_rect);
         self.edit_menu_ui(ui.ctx());
     }
+}
+
+/// "Half-edge 3", "Edge 3", "Vertex 1": a row's name to start a sentence.
+fn titled(mesh: &Mesh, element: ElementRef) -> String {
+    let name = tables::row_name(mesh, element);
+    let mut chars = name.chars();
+    chars
+        .next()
+        .map(|first| first.to_uppercase().chain(chars).collect())
+        .unwrap_or_default()
 }
 
 /// Whether a line of an error belongs to a rendered source excerpt: `  |`,

@@ -55,11 +55,11 @@ async fn the_accessibility_tree_holds_the_tables_and_announces_steps() -> anyhow
     browser
         .wait_for(
             "document.getElementById('edgewise_a11y_tables').querySelectorAll('table').length === 3 \
-             && document.getElementById('edgewise_a11y_live').textContent.startsWith('Edge 3 selected')",
+             && document.getElementById('edgewise_a11y_live').textContent.startsWith('Half-edge 3 selected')",
             Duration::from_secs(30),
         )
         .await?;
-    let nodes = ax_nodes_with(&browser, "StaticText", "Edge 3 selected").await?;
+    let nodes = ax_nodes_with(&browser, "StaticText", "Half-edge 3 selected").await?;
     for caption in ["Faces: 4 rows", "Half-edges: 12 rows", "Vertices: 4 rows"] {
         assert!(has(&nodes, "table", caption), "a table named {caption}");
     }
