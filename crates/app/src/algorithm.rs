@@ -141,8 +141,8 @@ impl Algorithms {
     }
 
     /// Gives the running algorithm a question set (replacing the last one)
-    /// and asks it from the current run on; returns how many the run asks.
-    pub fn set_questions(&mut self, run: &mut AlgorithmRun, text: &str) -> Result<usize, String> {
+    /// and asks it from the current run on.
+    pub fn set_questions(&mut self, run: &mut AlgorithmRun, text: &str) -> Result<(), String> {
         let Some(algorithm) = run.algorithm().cloned() else {
             return Err("start an algorithm before giving it questions".to_owned());
         };
@@ -153,23 +153,20 @@ impl Algorithms {
         if let Run::Tracing(session) = &mut run.run {
             session.quiz = None;
         }
-        Ok(self.pose(run))
+        self.pose(run);
+        Ok(())
     }
 
-    /// Poses the run's questions if it is traced and has not yet; returns
-    /// how many it asks.
-    pub fn pose(&self, run: &mut AlgorithmRun) -> usize {
+    /// Poses the run's questions if it is traced and has not yet.
+    pub fn pose(&self, run: &mut AlgorithmRun) {
         let Run::Tracing(session) = &mut run.run else {
-            return 0;
+            return;
         };
         if session.quiz.is_none() {
             let questions = self.questions_for(session.trace.algorithm());
             session.quiz = Some(quiz::Quiz::new(&session.trace, &questions));
             run.changed();
         }
-        run.session()
-            .and_then(|session| session.quiz.as_ref())
-            .map_or(0, quiz::Quiz::len)
     }
 
     /// Advances `run` if it is playing; see [`AlgorithmRun::tick`].

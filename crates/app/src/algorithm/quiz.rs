@@ -110,9 +110,14 @@ impl Quiz {
         })
     }
 
+    /// The question at `step` that waits for its answer, if any.
+    pub fn waiting(&self, step: usize) -> Option<Asked<'_>> {
+        self.at(step).filter(|asked| asked.answered.is_none())
+    }
+
     /// Whether play stops at `step`: a question there waits for its answer.
     pub fn stops_at(&self, step: usize) -> bool {
-        self.at(step).is_some_and(|asked| asked.answered.is_none())
+        self.waiting(step).is_some()
     }
 
     /// How many were answered, and how many of those rightly.

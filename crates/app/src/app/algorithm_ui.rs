@@ -170,8 +170,7 @@ impl EdgewiseApp {
                 let question = session
                     .quiz
                     .as_ref()
-                    .and_then(|quiz| quiz.at(session.step()))
-                    .filter(|asked| asked.answered.is_none());
+                    .and_then(|quiz| quiz.waiting(session.step()));
                 Some(match question {
                     Some(asked) => format!("{step} Question: {}", asked.posed.question.prompt),
                     None => step,

@@ -94,9 +94,8 @@ impl EdgewiseApp {
                 Ok(Reply::Done)
             }
             Command::SetQuestions(text) => {
-                self.algorithms.pose(&mut self.tabs[self.active_tab].run);
                 let run = &mut self.tabs[self.active_tab].run;
-                done(self.algorithms.set_questions(run, &text).map(drop))
+                done(self.algorithms.set_questions(run, &text))
             }
             Command::Back(n) => done(self.tab_mut().run.back(n)),
             Command::StepOver => done(self.tab_mut().run.step_over()),
