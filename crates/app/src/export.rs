@@ -16,7 +16,7 @@ use edgewise_core::schema::ElementRef;
 
 use crate::accessible::{Cell, TextTable};
 use crate::settings::to_hex as hex;
-use crate::view3d::vector::{Shape, VectorView};
+use crate::view3d::vector::{Shape, VectorView, shaft_end};
 
 /// Rows each table shows; the rest are counted in a last line.
 pub const TABLE_ROWS: usize = 48;
@@ -65,7 +65,7 @@ pub fn xml_escape(text: &str) -> String {
     out
 }
 
-/// A number as SVG writes it: at most two decimals, no `-0`.
+/// A number as SVG and PDF write it: at most two decimals, no `-0`.
 fn n(x: f32) -> String {
     if !x.is_finite() {
         return "0".to_owned();
@@ -200,13 +200,7 @@ fn shape_svg(out: &mut String, shape: &Shape, dy: f32, palette: &crate::view3d::
             colour,
             width,
         } => {
-            // The shaft stops where the head begins, so the tip stays sharp.
-            let base = Pos2::new((head[1].x + head[2].x) * 0.5, (head[1].y + head[2].y) * 0.5);
-            let end = if from.distance(*to) > from.distance(base) {
-                base
-            } else {
-                *to
-            };
+            let end = shaft_end(*from, *to, head);
             let colour = hex(*colour);
             let _ = writeln!(
                 out,

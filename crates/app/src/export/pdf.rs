@@ -11,7 +11,8 @@ use std::fmt::Write as _;
 
 use egui::{Color32, Pos2};
 
-use crate::view3d::vector::{Shape, VectorView, label_size};
+use super::n;
+use crate::view3d::vector::{Shape, VectorView, label_size, shaft_end};
 
 /// Landscape A4, in PDF points.
 pub const PAGE: (f32, f32) = (842.0, 595.0);
@@ -94,20 +95,6 @@ pub fn handout(title: &str, pages: &[Page]) -> Vec<u8> {
         objects.len() + 1
     );
     out.into_bytes()
-}
-
-/// A number as the content stream writes it.
-fn n(x: f32) -> String {
-    if x.is_finite() {
-        let rounded = (x * 100.0).round() / 100.0;
-        if rounded == 0.0 {
-            "0".to_owned()
-        } else {
-            format!("{rounded}")
-        }
-    } else {
-        "0".to_owned()
-    }
 }
 
 fn rgb(colour: Color32) -> String {
@@ -233,13 +220,12 @@ fn shape_contents(
         }
         Shape::Arrow {
             from,
+            to,
             head,
             colour,
             width,
-            ..
         } => {
-            let base = Pos2::new((head[1].x + head[2].x) * 0.5, (head[1].y + head[2].y) * 0.5);
-            let (a, b) = (place(*from), place(base));
+            let (a, b) = (place(*from), place(shaft_end(*from, *to, head)));
             let _ = writeln!(
                 out,
                 "{c} RG {c} rg {} w 1 J {} {} m {} {} l S {} f",

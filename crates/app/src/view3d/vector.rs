@@ -202,6 +202,17 @@ pub(super) fn vector_view(
     }
 }
 
+/// Where an arrow's shaft stops: where its head begins, so the tip stays
+/// sharp; at the tip itself for an arrow shorter than its head.
+pub fn shaft_end(from: Pos2, to: Pos2, head: &[Pos2; 3]) -> Pos2 {
+    let base = Pos2::new((head[1].x + head[2].x) * 0.5, (head[1].y + head[2].y) * 0.5);
+    if from.distance(to) > from.distance(base) {
+        base
+    } else {
+        to
+    }
+}
+
 /// The head of an arrow ending at `to`: its tip and the two back corners.
 fn arrowhead(from: Pos2, to: Pos2, length: f32, half_width: f32) -> [Pos2; 3] {
     let direction = (to - from).normalized();

@@ -628,8 +628,9 @@ fn settle_with(result: Result<JsValue, String>) -> js_sys::Promise {
     }
 }
 
-/// `exportMesh`'s answer: `{name, text}`, or `{name, base64}` for binary output.
-fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> {
+/// An exported file as the API answers it (`exportMesh`, `exportHandout`,
+/// `recordRun`): `{name, text}`, or `{name, base64}` for binary output.
+pub(super) fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> {
     let object = js_sys::Object::new();
     js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
     let (key, value) = if binary {
@@ -642,7 +643,7 @@ fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> 
 }
 
 /// Standard base64 with padding, so binary files cross the JSON boundary.
-pub(super) fn base64(bytes: &[u8]) -> String {
+fn base64(bytes: &[u8]) -> String {
     const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for chunk in bytes.chunks(3) {

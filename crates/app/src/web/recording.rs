@@ -137,10 +137,8 @@ async fn record(runner: &eframe::WebRunner, delay: f64) -> Result<JsValue, Strin
     if bytes.is_empty() {
         return Err("the browser recorded no video; is the page hidden?".to_owned());
     }
-    let object = js_sys::Object::new();
-    let set = |key: &str, value: JsValue| js_sys::Reflect::set(&object, &key.into(), &value);
-    set("name", name.into()).map_err(error_text)?;
-    set("type", "video/webm".into()).map_err(error_text)?;
-    set("base64", super::api::base64(&bytes).into()).map_err(error_text)?;
-    Ok(object.into())
+    let object = super::api::exported_object(&crate::files::SavedFile { name, bytes }, true)
+        .map_err(error_text)?;
+    js_sys::Reflect::set(&object, &"type".into(), &"video/webm".into()).map_err(error_text)?;
+    Ok(object)
 }
