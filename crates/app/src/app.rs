@@ -34,7 +34,7 @@ pub mod algorithm_ui;
 pub mod course;
 pub(crate) mod edit_menu;
 mod edit_ui;
-mod element_box;
+pub(crate) mod element_box;
 pub mod embed;
 pub mod embed_events;
 pub mod execute;
@@ -831,6 +831,13 @@ impl EdgewiseApp {
         }
     }
 
+    /// The view's options from the theme and the algorithm's inputs.
+    fn sync_view_options(&mut self) {
+        self.view_options.dark = self.theme.dark;
+        self.view_options.boundary = self.theme.boundary_override;
+        self.view_options.pickable = self.pick_filter();
+    }
+
     fn view_ui(&mut self, ui: &mut egui::Ui) {
         if self.tab().document.is_none() {
             ui.centered_and_justified(|ui| {
@@ -839,9 +846,7 @@ impl EdgewiseApp {
             return;
         }
         self.refresh_styles();
-        self.view_options.dark = self.theme.dark;
-        self.view_options.boundary = self.theme.boundary_override;
-        self.view_options.pickable = self.pick_filter();
+        self.sync_view_options();
         let rect = ui.available_rect_before_wrap();
         let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
         let (view_rect, line_rect) =

@@ -875,11 +875,7 @@ fn parse_args(value: &str) -> Result<Vec<(String, Argument)>, &'static str> {
     for entry in value.split(',') {
         let (name, value) = entry.split_once(':').ok_or(EXPECTED)?;
         let name = parse_name(name).ok_or(EXPECTED)?;
-        let argument = match value {
-            "true" => Argument::Boolean(true),
-            "false" => Argument::Boolean(false),
-            _ => Argument::Number(parse_finite(value).ok_or(EXPECTED)?),
-        };
+        let argument = Argument::parse(value).ok_or(EXPECTED)?;
         if args.iter().any(|(n, _)| *n == name) {
             return Err("expected each input once, such as args=v:0,n:3");
         }

@@ -33,6 +33,7 @@ pub mod view3d;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
+pub use app::element_box::parse_element;
 pub use app::files;
 pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;

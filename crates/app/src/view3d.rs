@@ -599,17 +599,40 @@ impl View3d {
         options: &ViewOptions,
     ) -> Option<vector::VectorView> {
         let viewport = self.last_viewport?;
-        let mut palette = Palette::new(options.dark);
-        if let Some(boundary) = options.boundary {
-            palette.boundary = boundary;
-        }
         Some(vector::vector_view(
             scene,
             looks,
             &self.transforms(viewport),
             options,
-            palette,
+            Palette::of(options),
         ))
+    }
+
+    /// Takes `rect` as the view's place, framing the mesh if a new one
+    /// waits for it, and `styles` as its colours: what every frame does
+    /// before drawing.
+    fn place(&mut self, rect: Rect, styles: &SceneStyles, options: &ViewOptions) -> Palette {
+        self.last_aspect = rect.aspect_ratio();
+        self.last_viewport = Some(rect);
+        if self.frame_pending {
+            self.frame_all();
+            self.frame_pending = false;
+        }
+        let palette = Palette::of(options);
+        self.update_styles(styles, &palette);
+        palette
+    }
+
+    /// Lays the view out `size` points big as its first frame in a window
+    /// would, with no window and no GPU, so that [`Self::vector_view`]
+    /// has a camera to draw from: `edgewise render`.
+    pub fn lay_out_offscreen(
+        &mut self,
+        size: egui::Vec2,
+        styles: &SceneStyles,
+        options: &ViewOptions,
+    ) {
+        self.place(Rect::from_min_size(egui::Pos2::ZERO, size), styles, options);
     }
 
     /// Where an element's anchor (a vertex, an edge's middle, a face's
@@ -633,18 +656,8 @@ impl View3d {
         if rect.width() < 1.0 || rect.height() < 1.0 {
             return ViewResponse::default();
         }
-        self.last_aspect = rect.aspect_ratio();
-        self.last_viewport = Some(rect);
-        if self.frame_pending {
-            self.frame_all();
-            self.frame_pending = false;
-        }
-        let mut palette = Palette::new(options.dark);
-        if let Some(boundary) = options.boundary {
-            palette.boundary = boundary;
-        }
+        let palette = self.place(rect, styles, options);
         self.handle_camera_input(ui, &response, rect);
-        self.update_styles(styles, &palette);
 
         let transforms = self.transforms(rect);
         self.coarse = self.is_small_on_screen(&transforms);

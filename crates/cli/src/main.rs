@@ -10,6 +10,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
 
+mod render;
+
 use clap::{Parser, Subcommand, ValueEnum};
 use edgewise_core::formats::{self, Format, Loaded, PlyEncoding, SaveOptions};
 use edgewise_core::lang::{self, Algorithm, Program, RunOptions, Value, question};
@@ -158,6 +160,47 @@ enum Command {
         #[arg(long, value_name = "SET")]
         questions: Option<PathBuf>,
     },
+    /// Draw the app's view, with the tables, as an SVG picture of one moment
+    /// or a PDF handout of a run (a page per step), as the app's Save menu
+    /// does.
+    #[command(after_help = RENDER_EXAMPLES)]
+    Render {
+        /// The file to write: .svg (the view and the tables at one step) or
+        /// .pdf (a handout of the run, a page per step).
+        output: PathBuf,
+        /// The mesh file (`-` for standard input); with --link, the file its
+        /// `mesh=` names.
+        meshfile: Option<PathBuf>,
+        /// A course link, whole or its `?…#…` part: the mesh, algorithm,
+        /// inputs, step, selection, camera and colours, as the app opens it.
+        /// A `mesh=` path is read from MESHFILE, else under this folder.
+        #[arg(long)]
+        link: Option<String>,
+        /// The structure to build (default: a table file's own, else winged).
+        #[arg(long, value_enum)]
+        structure: Option<StructureArg>,
+        /// An algorithm file to load besides the app's library.
+        #[arg(long = "alg", value_name = "ALGFILE")]
+        algfile: Option<PathBuf>,
+        /// The algorithm to run, from ALGFILE or the app's library.
+        #[arg(long, value_name = "NAME")]
+        run: Option<String>,
+        /// An input, such as `v=3` (repeat for each input).
+        #[arg(long = "arg", value_name = "NAME=VALUE")]
+        args: Vec<String>,
+        /// The step to draw in an SVG (default: the start, or the link's).
+        #[arg(long)]
+        step: Option<usize>,
+        /// An element to select: `e3`, `vertex 1`, `f0`.
+        #[arg(long, value_name = "ELEMENT")]
+        select: Option<String>,
+        /// The view's size in points.
+        #[arg(long, value_name = "WIDTHxHEIGHT", default_value = "800x600")]
+        size: String,
+        /// The dark theme.
+        #[arg(long)]
+        dark: bool,
+    },
     /// Check an algorithm file: print every error and exit 1 if there is any.
     CheckAlg {
         /// The algorithm file.
@@ -171,6 +214,11 @@ enum Command {
         name: Option<String>,
     },
 }
+
+const RENDER_EXAMPLES: &str = "Examples:
+  edgewise render tetra.svg meshes/tetrahedron.wtb --select e0
+  edgewise render handout.pdf meshes/tetrahedron.wtb --run vertexAdjacentEdge --arg v=1
+  edgewise render step4.svg --link 'https://example.edu/edgewise/?sample=cube&algorithm=vertexAdjacentEdge&args=v:0&step=4'";
 
 /// How a command ended, mapped to the exit code.
 enum Failure {
@@ -219,6 +267,31 @@ fn main() -> ExitCode {
             save.as_deref(),
             questions.as_deref(),
         ),
+        Command::Render {
+            output,
+            meshfile,
+            link,
+            structure,
+            algfile,
+            run,
+            args,
+            step,
+            select,
+            size,
+            dark,
+        } => render::render(&render::Request {
+            output: &output,
+            meshfile: meshfile.as_deref(),
+            link: link.as_deref(),
+            structure,
+            algfile: algfile.as_deref(),
+            run: run.as_deref(),
+            args: &args,
+            step,
+            select: select.as_deref(),
+            size: &size,
+            dark,
+        }),
         Command::CheckAlg { algfile } => check_alg(&algfile),
         Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
     };

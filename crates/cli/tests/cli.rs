@@ -1,49 +1,12 @@
 //! The built `edgewise` binary: output, stderr messages and exit codes
 //! (0 fine, 1 bad input, 2 usage) of every command.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+mod common;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+use std::path::Path;
+use std::process::Output;
 
-/// Runs `edgewise` in `dir` with `args` and optional standard input.
-fn run_in(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_edgewise"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(if stdin.is_some() {
-            Stdio::piped()
-        } else {
-            Stdio::null()
-        })
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("edgewise runs");
-    if let (Some(bytes), Some(mut pipe)) = (stdin, child.stdin.take()) {
-        pipe.write_all(bytes).expect("stdin");
-    }
-    child.wait_with_output().expect("edgewise finishes")
-}
-
-fn run(args: &[&str]) -> Output {
-    run_in(&root(), args, None)
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-fn code(output: &Output) -> i32 {
-    output.status.code().unwrap_or(-1)
-}
+use common::{code, root, run, run_in, scratch, stderr, stdout};
 
 #[test]
 fn info_prints_counts_topology_and_warnings() {
@@ -485,18 +448,12 @@ fn usage_errors_exit_2() {
         "edit",
         "tables",
         "trace",
+        "render",
         "check-alg",
         "disasm",
     ] {
         assert!(stdout(&help).contains(command), "--help lists {command}");
     }
-}
-
-/// A fresh folder for one test's output files.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("edgewise-cli-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
 }
 
 #[test]

@@ -28,6 +28,20 @@ const VARIABLES_PER_LINE: usize = 120;
 pub(super) type ScreenshotSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
 
 impl EdgewiseApp {
+    /// Lays the active tab out as its first frame in a window `width` by
+    /// `height` points would, with no window: a mesh being opened is made now,
+    /// the camera frames it, and the colours are the current moment's.
+    /// [`Self::export_svg`] and [`Self::export_handout`] then work from
+    /// the command line (`edgewise render`).
+    pub fn lay_out_offscreen(&mut self, width: f32, height: f32) {
+        self.finish_pending();
+        self.refresh_styles();
+        self.sync_view_options();
+        let tab = &mut self.tabs[self.active_tab];
+        tab.view
+            .lay_out_offscreen(egui::vec2(width, height), &tab.styles, &self.view_options);
+    }
+
     /// The view as vector shapes with the tables beside it, highlighted
     /// rows in their colours and roles in words, and the message line as
     /// the caption.

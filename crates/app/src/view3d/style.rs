@@ -79,6 +79,16 @@ impl Palette {
         }
     }
 
+    /// The palette `options` ask for: their theme, and their boundary
+    /// colour if one is set.
+    pub fn of(options: &super::ViewOptions) -> Self {
+        let mut palette = Self::new(options.dark);
+        if let Some(boundary) = options.boundary {
+            palette.boundary = boundary;
+        }
+        palette
+    }
+
     /// A colour washed towards the background, for faded elements.
     pub fn faded(&self, colour: Color32) -> Color32 {
         mix(colour, self.background, 0.72)
