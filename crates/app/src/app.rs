@@ -40,6 +40,7 @@ pub mod embed_events;
 pub mod execute;
 pub mod files;
 pub mod first_visit;
+mod focus_ring;
 mod open_dialog;
 mod pending;
 mod pictures;
@@ -119,6 +120,7 @@ pub struct EdgewiseApp {
     pub(crate) files: FileState,
     /// How meshes prepared a slice per frame ended (see `pending.rs`).
     jobs: pending::JobLog,
+    focus_ring: focus_ring::FocusRing,
 }
 
 impl EdgewiseApp {
@@ -185,6 +187,7 @@ impl EdgewiseApp {
             ctx: None,
             files: FileState::default(),
             jobs: pending::JobLog::default(),
+            focus_ring: focus_ring::FocusRing::default(),
         }
     }
 
@@ -370,8 +373,10 @@ impl EdgewiseApp {
         }
     }
 
-    /// Half-edge walking from the keyboard: n successor, p predecessor,
-    /// t pair (twin), f face, v end vertex.
+    /// Walking from the keyboard while no widget has focus: ↑ and ↓ move
+    /// the selection along its table (from edge 0 when nothing is
+    /// selected); in a half-edge mesh, n successor, p predecessor, t pair
+    /// (twin), f face, v end vertex.
     fn keyboard_walk(&mut self, ctx: &egui::Context) {
         if ctx.egui_wants_keyboard_input() {
             return;
@@ -379,6 +384,21 @@ impl EdgewiseApp {
         let Some(document) = &self.tab().document else {
             return;
         };
+        let (up, down) = ctx.input(|i| {
+            let plain = !i.modifiers.any();
+            (
+                plain && i.key_pressed(egui::Key::ArrowUp),
+                plain && i.key_pressed(egui::Key::ArrowDown),
+            )
+        });
+        if (up || down) && !self.tab().run.is_active() {
+            let selected = document.selection();
+            let next = table_neighbour(document.mesh(), selected, down);
+            if next.is_some() && next != selected {
+                self.issue(Command::Select(next));
+            }
+            return;
+        }
         if !matches!(document.mesh(), Mesh::Half(_)) {
             return;
         }
@@ -404,6 +424,12 @@ impl EdgewiseApp {
         if let Some(target) = target {
             self.issue(Command::Select(Some(target)));
         }
+    }
+
+    /// Where the keyboard focus ring was drawn in the last frame: only
+    /// after Tab moved focus, until the next pointer press.
+    pub fn focus_ring(&self) -> Option<egui::Rect> {
+        self.focus_ring.drawn()
     }
 
     /// Records a failure for the error panel and `state().error`: what
@@ -931,6 +957,8 @@ impl eframe::App for EdgewiseApp {
         } else {
             self.whole_ui(ui);
         }
+        let ring = crate::view3d::Palette::new(self.theme.dark).hover;
+        self.focus_ring.ui(ui.ctx(), ring);
         self.observe_for_embedding(ui.ctx());
         crate::platform::deliver_events(&mut self.embed_events);
         self.mirror_for_readers();
@@ -1124,4 +1152,24 @@ fn counts(mesh: &Mesh) -> Counts {
         faces: mesh.face_count(),
         halfedges: mesh.edge_count() * 2,
     }
+}
+
+/// The row above (`down` false) or below `from` in its table, over deleted
+/// rows; with nothing selected, the first or last edge. `None` at either
+/// end of the table.
+fn table_neighbour(
+    mesh: &dyn edgewise_core::schema::Records,
+    from: Option<ElementRef>,
+    down: bool,
+) -> Option<ElementRef> {
+    let kind = from.map_or(ElementKind::Edge, |e| e.kind);
+    let count = u32::try_from(mesh.count(kind)).unwrap_or(u32::MAX);
+    let ids: Box<dyn Iterator<Item = u32>> = match (from, down) {
+        (None, true) => Box::new(0..count),
+        (None, false) => Box::new((0..count).rev()),
+        (Some(e), true) => Box::new(e.id.saturating_add(1)..count),
+        (Some(e), false) => Box::new((0..e.id.min(count)).rev()),
+    };
+    ids.map(|id| ElementRef::new(kind, id))
+        .find(|&element| mesh.contains(element))
 }

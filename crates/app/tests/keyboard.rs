@@ -4,8 +4,10 @@
 
 mod support;
 
+use edgewise_app::Argument;
 use edgewise_app::command::Command;
-use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_core::mesh::{Structure, operations::Operation};
+use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
 use egui_kittest::kittest::Queryable as _;
 
 /// Presses `/`, types `text` and Enter.
@@ -116,5 +118,139 @@ fn the_camera_turns_zooms_and_frames_from_the_keyboard() {
         harness.state().state().trace.expect("tracing").step,
         1,
         "→ steps"
+    );
+}
+
+#[test]
+fn arrows_walk_the_selection_along_its_table_over_deleted_rows() {
+    let mut harness = support::harness_with("octahedron", Some(Structure::WingedEdge));
+    let selection = |harness: &support::AppHarness| harness.state().state().selection;
+    let press = |harness: &mut support::AppHarness, key| {
+        harness.key_press(key);
+        harness.run();
+    };
+    press(&mut harness, egui::Key::ArrowDown);
+    assert_eq!(selection(&harness), Some(edge(0)), "↓ starts at edge 0");
+    press(&mut harness, egui::Key::ArrowDown);
+    assert_eq!(selection(&harness), Some(edge(1)));
+    press(&mut harness, egui::Key::ArrowUp);
+    press(&mut harness, egui::Key::ArrowUp);
+    assert_eq!(selection(&harness), Some(edge(0)), "the first row stays");
+
+    let last = ElementRef::new(ElementKind::Vertex, 5);
+    harness.state_mut().select(Some(last)).expect("selects");
+    harness.run();
+    press(&mut harness, egui::Key::ArrowDown);
+    assert_eq!(selection(&harness), Some(last), "the last row stays");
+    press(&mut harness, egui::Key::ArrowUp);
+    assert_eq!(
+        selection(&harness),
+        Some(ElementRef::new(ElementKind::Vertex, 4))
+    );
+
+    // Collapsing an edge deletes rows but keeps their ids until compacted.
+    harness
+        .state_mut()
+        .edit(Operation::CollapseEdge, &[0])
+        .expect("collapses");
+    harness.run();
+    let mesh = harness.state().mesh().expect("a mesh").clone();
+    let live: Vec<u32> = (0..mesh.count(ElementKind::Edge) as u32)
+        .filter(|&e| mesh.contains(edge(e)))
+        .collect();
+    assert!(
+        live.len() < mesh.count(ElementKind::Edge),
+        "some edge rows are deleted"
+    );
+    harness.state_mut().select(None).expect("clears");
+    harness.run();
+    let mut walked = Vec::new();
+    for _ in 0..live.len() + 2 {
+        press(&mut harness, egui::Key::ArrowDown);
+        walked.push(selection(&harness).expect("selected").id);
+    }
+    walked.dedup();
+    assert_eq!(walked, live, "↓ visits every live edge, in order, once");
+
+    // During a run, → steps and ↓ leaves the selection alone.
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), Argument::Number(1.0))],
+        )
+        .expect("runs");
+    harness.run();
+    let before = selection(&harness);
+    press(&mut harness, egui::Key::ArrowDown);
+    assert_eq!(selection(&harness), before);
+}
+
+#[test]
+fn tab_shows_a_focus_ring_until_the_pointer_is_used() {
+    let mut harness = support::harness_with("tetrahedron", None);
+    assert_eq!(harness.state().focus_ring(), None, "no ring at first");
+    harness.key_press(egui::Key::Tab);
+    harness.run();
+    let ring = harness.state().focus_ring().expect("Tab shows a ring");
+    assert!(ring.width() > 4.0 && ring.height() > 4.0, "{ring:?}");
+    harness.key_press(egui::Key::Tab);
+    harness.run();
+    let next = harness.state().focus_ring().expect("Tab moves it");
+    assert_ne!(next, ring, "round the next widget");
+
+    // Escape gives focus back to the app's own keys.
+    harness.key_press(egui::Key::Escape);
+    harness.run();
+    assert_eq!(harness.state().focus_ring(), None);
+    harness.key_press(egui::Key::ArrowDown);
+    harness.run();
+    assert_eq!(harness.state().state().selection, Some(edge(0)));
+
+    harness.key_press(egui::Key::Tab);
+    harness.run();
+    assert!(harness.state().focus_ring().is_some());
+    let corner = egui::pos2(700.0, 400.0);
+    harness.hover_at(corner);
+    harness.event(egui::Event::PointerButton {
+        pos: corner,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    harness.run();
+    assert_eq!(harness.state().focus_ring(), None, "a press hides it");
+}
+
+fn edge(id: u32) -> ElementRef {
+    ElementRef::new(ElementKind::Edge, id)
+}
+
+#[test]
+fn tab_reaches_the_tables_and_enter_follows_a_reference() {
+    let mut harness = support::harness_with("tetrahedron", Some(Structure::WingedEdge));
+    harness.state_mut().select(Some(edge(0))).expect("selects");
+    harness.run();
+    // The tables fill the lower part of the window.
+    let mut in_tables = false;
+    for _ in 0..80 {
+        harness.key_press(egui::Key::Tab);
+        harness.run();
+        if harness
+            .state()
+            .focus_ring()
+            .is_some_and(|ring| ring.top() > 600.0)
+        {
+            in_tables = true;
+            break;
+        }
+    }
+    assert!(in_tables, "Tab reaches a table cell");
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+    let selection = harness.state().state().selection;
+    assert!(
+        selection.is_some() && selection != Some(edge(0)),
+        "Enter on a cell selects its row or follows its reference: {selection:?}"
     );
 }

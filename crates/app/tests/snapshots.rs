@@ -269,3 +269,21 @@ fn a_question_answered_wrongly_with_its_explanation() {
     harness.run();
     harness.snapshot_options("question-answered-wrongly", &options());
 }
+
+#[test]
+fn keyboard_focus_ring_light() {
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", Some(Structure::WingedEdge))
+        .unwrap();
+    harness.run();
+    for _ in 0..3 {
+        harness.key_press(egui::Key::Tab);
+        harness.run();
+    }
+    assert!(harness.state().focus_ring().is_some());
+    harness.snapshot_options("keyboard-focus-ring-light", &options());
+}
