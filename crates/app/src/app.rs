@@ -481,6 +481,7 @@ impl EdgewiseApp {
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
             coarse_view: self.tab().view.coarse(),
             styles_patched: self.tab().view.styles_patched(),
+            base_image: self.tab().view.base_image_counts(),
             welcome: self.tour.as_ref().map(|tour| tour.done),
             job: self
                 .tab()

@@ -61,6 +61,11 @@ pub struct AppState {
     /// of the elements it changed (a selection, a step), not every element.
     #[serde(rename = "stylesPatched")]
     pub styles_patched: bool,
+    /// [drawn, copied]: how often the coarse view's base image was drawn,
+    /// and copied to the screen in place of the mesh's lines and faces;
+    /// null without a GPU.
+    #[serde(rename = "baseImage")]
+    pub base_image: Option<[u64; 2]>,
     /// A large mesh being opened or converted a slice per frame, or null.
     pub job: Option<JobState>,
     /// The first-visit hint's three things to try, each true once done, or

@@ -16,6 +16,7 @@
 
 mod arrows;
 mod axes;
+mod base_image;
 mod bvh;
 mod camera;
 mod coarse;
@@ -230,6 +231,15 @@ pub struct ViewOptions {
     /// ([`Palette::background`]), so the view does not fill it again: each
     /// full-view fill costs a software renderer tens of milliseconds.
     pub backdrop_cleared: bool,
+    /// Draw the coarse level of detail from an image kept while the camera,
+    /// the mesh and the colours stay (`base_image.rs`); off redraws it every
+    /// frame, to compare the two.
+    #[serde(skip, default = "on")]
+    pub base_image: bool,
+}
+
+fn on() -> bool {
+    true
 }
 
 impl Default for ViewOptions {
@@ -245,6 +255,7 @@ impl Default for ViewOptions {
             dark: false,
             boundary: None,
             backdrop_cleared: false,
+            base_image: true,
         }
     }
 }
@@ -543,6 +554,17 @@ impl View3d {
     /// lines, no vertex spheres, highlighted elements in full.
     pub fn coarse(&self) -> bool {
         self.coarse
+    }
+
+    /// How many times the coarse level of detail's base image was drawn,
+    /// and copied to the screen instead of drawing the mesh; `None`
+    /// without a GPU.
+    pub fn base_image_counts(&self) -> Option<[u64; 2]> {
+        let uploaded = &self.gpu.as_ref()?.uploaded;
+        Some([
+            uploaded.base_image_drawn.load(Ordering::Relaxed),
+            uploaded.base_image_copied.load(Ordering::Relaxed),
+        ])
     }
 
     /// Whether the mesh's edges are so small on screen, and so many, that
@@ -944,11 +966,24 @@ impl View3d {
                 orientation: options.show_orientation,
                 solid_faces: options.solid_faces,
                 coarse: self.coarse,
+                base_image: options.base_image,
             },
             uploaded: gpu.uploaded.clone(),
+            // As `egui_wgpu` rounds the callback's rect to pixels.
+            viewport_px: [
+                pixel_span(rect.min.x, rect.max.x, pixels_per_point),
+                pixel_span(rect.min.y, rect.max.y, pixels_per_point),
+            ],
         };
         painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
     }
+}
+
+/// How many whole pixels lie between two edges in points, each rounded.
+fn pixel_span(from: f32, to: f32, pixels_per_point: f32) -> u32 {
+    let span = (to * pixels_per_point).round() - (from * pixels_per_point).round();
+    // A float-to-int cast saturates: negative and NaN spans give 0.
+    span as u32
 }
 
 impl Drop for View3d {

@@ -503,3 +503,88 @@ fn patched_styles_draw_what_whole_styles_draw() {
         );
     }
 }
+
+/// The coarse level of detail copied from its base image looks as drawing
+/// it directly does; a step or selection then keeps the image, and a turn
+/// of the camera draws it again.
+#[test]
+fn the_coarse_base_image_draws_what_drawing_directly_does() {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [480, 360]);
+    let geometry = geometry(&generate::torus(120, 120), Structure::HalfEdge);
+    let styles = styles_for(&geometry);
+    let from_image = ViewOptions::default();
+    let direct = ViewOptions {
+        base_image: false,
+        ..ViewOptions::default()
+    };
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    let (copied, _) = harness.show(&mut view, &styles, &from_image, Vec::new());
+    assert!(view.coarse());
+    // Two frames: the image drawn once and copied twice.
+    assert_eq!(view.base_image_counts(), Some([1, 2]));
+    let (drawn, _) = harness.show(&mut view, &styles, &direct, Vec::new());
+    assert_eq!(
+        view.base_image_counts(),
+        Some([1, 2]),
+        "off: drawn directly"
+    );
+    // Blending into the image and then over the backdrop rounds to 8 bits
+    // twice; no channel may move further than that.
+    let worst = copied
+        .pixels
+        .iter()
+        .zip(&drawn.pixels)
+        .map(|(a, b)| a.abs_diff(*b))
+        .max()
+        .unwrap_or(0);
+    if worst > 2 {
+        copied.save("base_image_copied.png");
+        drawn.save("base_image_drawn.png");
+    }
+    assert!(worst <= 2, "a channel differs by {worst}");
+
+    // A new highlight over the kept image.
+    let mut stepped = styles.clone();
+    stepped.generation += 1;
+    entry(&mut stepped, ElementKind::Vertex, 3).colour = Some(PURPLE);
+    entry(&mut stepped, ElementKind::Edge, 7).colour = Some(GREEN);
+    let (after_step, _) = harness.show(&mut view, &stepped, &from_image, Vec::new());
+    assert_eq!(
+        view.base_image_counts(),
+        Some([1, 4]),
+        "a step keeps the image"
+    );
+    let (direct_step, _) = harness.show(&mut view, &stepped, &direct, Vec::new());
+    let differing = after_step
+        .pixels
+        .chunks(4)
+        .zip(direct_step.pixels.chunks(4))
+        .filter(|(a, b)| a.iter().zip(b.iter()).any(|(x, y)| x.abs_diff(*y) > 2))
+        .count();
+    // Only where a highlight lies under a see-through face may they differ:
+    // copied, the highlight is drawn over the faces.
+    if differing >= 400 {
+        after_step.save("base_image_step.png");
+        direct_step.save("base_image_step_drawn.png");
+    }
+    assert!(differing < 400, "{differing} pixels differ after a step");
+    assert_ne!(after_step.pixels, copied.pixels, "the new highlight shows");
+
+    // A turn of the camera, or solid faces, draws the mesh again.
+    let mut camera = view.camera();
+    camera.yaw += 0.3;
+    view.set_camera(camera);
+    harness.show(&mut view, &stepped, &from_image, Vec::new());
+    assert_eq!(view.base_image_counts(), Some([2, 6]));
+    let solid = ViewOptions {
+        solid_faces: true,
+        ..ViewOptions::default()
+    };
+    harness.show(&mut view, &stepped, &solid, Vec::new());
+    assert_eq!(view.base_image_counts(), Some([2, 6]), "solid faces hide");
+}

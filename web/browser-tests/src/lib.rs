@@ -283,18 +283,25 @@ impl Browser {
             .and_then(|p| Some((p.first()?.as_f64()?, p.get(1)?.as_f64()?))))
     }
 
-    /// Presses and releases a key (`"Enter"`, `"e"`, `"z"`), with
-    /// `modifiers` as CDP counts them (2 is Ctrl, 8 is Shift).
+    /// Presses and releases a key (`"Enter"`, `"Tab"`, `"ArrowDown"`,
+    /// `"e"`, `"z"`), with `modifiers` as CDP counts them (2 is Ctrl, 8 is
+    /// Shift).
     pub async fn press_key(&self, key: &str, modifiers: u32) -> anyhow::Result<()> {
-        let code = match key {
-            "Enter" => "Enter".to_owned(),
-            "Escape" => "Escape".to_owned(),
-            other => format!("Key{}", other.to_uppercase()),
-        };
-        let key_code = match key {
-            "Enter" => 13,
-            "Escape" => 27,
-            other => u32::from(other.to_ascii_uppercase().bytes().next().unwrap_or(b'A')),
+        const NAMED: &[(&str, u32)] = &[
+            ("Enter", 13),
+            ("Escape", 27),
+            ("Tab", 9),
+            ("ArrowLeft", 37),
+            ("ArrowUp", 38),
+            ("ArrowRight", 39),
+            ("ArrowDown", 40),
+        ];
+        let (code, key_code) = match NAMED.iter().find(|(name, _)| *name == key) {
+            Some(&(name, key_code)) => (name.to_owned(), key_code),
+            None => (
+                format!("Key{}", key.to_uppercase()),
+                u32::from(key.to_ascii_uppercase().bytes().next().unwrap_or(b'A')),
+            ),
         };
         let text = if key.len() == 1 && modifiers == 0 {
             key
@@ -495,6 +502,14 @@ impl Screenshot {
     /// never drew, or a page that never loaded.
     pub fn is_blank(&self) -> bool {
         self.distinct_colours(16) < 16
+    }
+
+    /// How many pixels are `colour`, give or take `tolerance` per channel.
+    pub fn count(&self, colour: [u8; 3], tolerance: u8) -> usize {
+        self.pixels
+            .chunks_exact(4)
+            .filter(|p| (0..3).all(|c| p[c].abs_diff(colour[c]) <= tolerance))
+            .count()
     }
 
     /// The RGB colour at (x, y).

@@ -108,3 +108,49 @@ async fn the_accessibility_tree_holds_the_tables_and_announces_steps() -> anyhow
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// The focus ring's colour in the light theme (the hover blue).
+const RING: [u8; 3] = [0, 108, 204];
+
+#[tokio::test]
+async fn the_keyboard_alone_moves_focus_visibly_and_walks_a_table() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("?sample=tetrahedron&structure=winged").await?;
+    browser
+        .wait_for(
+            "window.edgewise.state().mesh === 'tetrahedron.wtb'",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let before = browser.screenshot("keyboard-before").await?.count(RING, 24);
+    for _ in 0..3 {
+        browser.press_key("Tab", 0).await?;
+    }
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let ringed = browser
+        .screenshot("keyboard-focus-ring")
+        .await?
+        .count(RING, 24);
+    assert!(
+        ringed > before + 100,
+        "Tab draws a focus ring: {before} ring-blue pixels before, {ringed} after"
+    );
+
+    // Escape gives the keys back to the app: ↓ walks the edge table.
+    browser.press_key("Escape", 0).await?;
+    browser.press_key("ArrowDown", 0).await?;
+    browser.press_key("ArrowDown", 0).await?;
+    browser
+        .wait_for(
+            "JSON.stringify(window.edgewise.state().selection) === '{\"kind\":\"edge\",\"id\":1}'",
+            Duration::from_secs(10),
+        )
+        .await?;
+    let cleared = browser.screenshot("keyboard-walked").await?.count(RING, 24);
+    assert!(
+        cleared < ringed,
+        "Escape hides the ring: {cleared} vs {ringed}"
+    );
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}

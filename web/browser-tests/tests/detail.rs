@@ -18,6 +18,13 @@ async fn settle(browser: &Browser) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// `state().baseImage`: how often the base image was drawn and copied.
+async fn base_image(browser: &Browser) -> anyhow::Result<[u64; 2]> {
+    let state = browser.state().await?;
+    let count = |i: usize| state["baseImage"][i].as_u64().unwrap_or(0);
+    Ok([count(0), count(1)])
+}
+
 #[tokio::test]
 async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
@@ -38,6 +45,28 @@ async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyho
     assert!(
         browser.element_at("vertex", 0).await?.is_some(),
         "the selected vertex is in view"
+    );
+
+    // A new selection is drawn over the kept base image: WebGL2 copies it
+    // rather than drawing the 20k faces again.
+    let [drawn, copied] = base_image(&browser).await?;
+    assert!(drawn >= 1 && copied >= 1, "drawn {drawn}, copied {copied}");
+    browser
+        .eval_async("window.edgewise.select('vertex', 5)")
+        .await?;
+    settle(&browser).await?;
+    let [drawn_after, copied_after] = base_image(&browser).await?;
+    assert_eq!(drawn_after, drawn, "the selection keeps the image");
+    assert!(copied_after > copied, "and copies it");
+    let selected = browser.screenshot("detail-icosphere-selected").await?;
+    assert!(
+        selected.distinct_colours(64) > 4,
+        "the copied image is not blank"
+    );
+    assert_eq!(
+        selected.pixel(5, 300),
+        shot.pixel(5, 300),
+        "the backdrop beside the view is unchanged"
     );
 
     browser

@@ -9,6 +9,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use eframe::egui_wgpu::{CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
 
 use super::arrows::{ArrowBuffers, ArrowInstance, ArrowRenderer};
+use super::base_image::{BaseImage, BaseImageRenderer, BaseKey};
 use super::coarse::{CoarseBuffers, CoarseGeometry, CoarseRenderer};
 use super::faces::{FaceBuffers, FaceRenderer};
 use super::gpu::{
@@ -85,6 +86,10 @@ pub struct StyleUpload {
 pub struct UploadState {
     pub geometry: AtomicU64,
     pub styles: AtomicU64,
+    /// How many times the coarse base image was drawn, and copied to the
+    /// screen in place of drawing the mesh.
+    pub base_image_drawn: AtomicU64,
+    pub base_image_copied: AtomicU64,
 }
 
 /// What to draw this frame besides the mesh.
@@ -96,6 +101,8 @@ pub struct DrawFlags {
     /// The coarse level of detail: edges as lines and no vertex spheres,
     /// but highlighted elements in full.
     pub coarse: bool,
+    /// The coarse level of detail may be copied from its base image.
+    pub base_image: bool,
 }
 
 /// Every drawable's renderer, shared by all views, and each view's buffers;
@@ -107,6 +114,7 @@ pub struct Renderers {
     coarse: CoarseRenderer,
     faces: FaceRenderer,
     orientation: OrientationRenderer,
+    base_image: BaseImageRenderer,
     srgb_target: bool,
     views: HashMap<u64, ViewBuffers>,
 }
@@ -122,6 +130,7 @@ impl Renderers {
             coarse: CoarseRenderer::new(&factory),
             faces: FaceRenderer::new(&factory),
             orientation: OrientationRenderer::new(&factory),
+            base_image: BaseImageRenderer::new(device, &frame_layout, target_format),
             frame_layout,
             srgb_target: target_format.is_srgb(),
             views: HashMap::new(),
@@ -159,6 +168,7 @@ struct ViewBuffers {
     full_arrows: ArrowBuffers,
     full_faces: FaceBuffers,
     coarse: CoarseBuffers,
+    base_image: BaseImage,
 }
 
 impl ViewBuffers {
@@ -176,6 +186,7 @@ impl ViewBuffers {
             full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
+            base_image: BaseImage::default(),
         }
     }
 }
@@ -193,6 +204,24 @@ pub struct ViewCallback {
     pub axes_styles: [StyleVertex; 3],
     pub flags: DrawFlags,
     pub uploaded: Arc<UploadState>,
+    /// The view's size in pixels, as `egui_wgpu` sets the viewport.
+    pub viewport_px: [u32; 2],
+}
+
+impl ViewCallback {
+    /// What the coarse base image must show this frame, if one is used:
+    /// only behind see-through faces, which hide nothing.
+    fn base_key(&self, srgb: bool) -> Option<BaseKey> {
+        (self.flags.coarse && self.flags.base_image && !self.flags.solid_faces).then(|| {
+            let mut frame = self.frame;
+            frame.params[0] = if srgb { 1.0 } else { 0.0 };
+            BaseKey {
+                geometry_id: self.geometry_id,
+                frame,
+                size: self.viewport_px,
+            }
+        })
+    }
 }
 
 impl CallbackTrait for ViewCallback {
@@ -201,7 +230,7 @@ impl CallbackTrait for ViewCallback {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         _screen_descriptor: &ScreenDescriptor,
-        _egui_encoder: &mut wgpu::CommandEncoder,
+        egui_encoder: &mut wgpu::CommandEncoder,
         resources: &mut CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
         let Some(renderers) = resources.get_mut::<Renderers>() else {
@@ -250,12 +279,33 @@ impl CallbackTrait for ViewCallback {
         let mut frame = self.frame;
         frame.params[0] = if srgb { 1.0 } else { 0.0 };
         view.frame.write(queue, &frame);
+
+        // The base image, drawn in this encoder before egui's pass (and
+        // after the uniform write above, which the queue applies first).
+        if let Some(key) = self.base_key(srgb)
+            && view.geometry_id == self.geometry_id
+        {
+            let coarse = &renderers.coarse;
+            let (frame_group, buffers) = (&view.frame, &view.coarse);
+            let drawn =
+                view.base_image
+                    .update(device, egui_encoder, &renderers.base_image, key, |pass| {
+                        frame_group.bind(pass);
+                        coarse.draw_lines(pass, buffers);
+                        coarse.draw_faces(pass, buffers, false);
+                    });
+            if drawn {
+                self.uploaded
+                    .base_image_drawn
+                    .fetch_add(1, Ordering::Relaxed);
+            }
+        }
         Vec::new()
     }
 
     fn paint(
         &self,
-        _info: egui::PaintCallbackInfo,
+        info: egui::PaintCallbackInfo,
         pass: &mut wgpu::RenderPass<'static>,
         resources: &CallbackResources,
     ) {
@@ -271,9 +321,24 @@ impl CallbackTrait for ViewCallback {
             return;
         }
         view.frame.bind(pass);
+        let viewport = info.viewport_in_pixels();
+        let from_image = self
+            .base_key(renderers.srgb_target)
+            .filter(|key| {
+                [i64::from(key.size[0]), i64::from(key.size[1])]
+                    == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
+            })
+            .is_some_and(|key| view.base_image.is_current(&key));
 
         // Opaque first: spheres, arrows (or lines), axes, orientation marks.
-        if self.flags.coarse {
+        if from_image {
+            renderers.base_image.draw(pass, &view.base_image);
+            self.uploaded
+                .base_image_copied
+                .fetch_add(1, Ordering::Relaxed);
+            renderers.spheres.draw(pass, &view.full_spheres);
+            renderers.arrows.draw(pass, &view.full_arrows);
+        } else if self.flags.coarse {
             renderers.coarse.draw_lines(pass, &view.coarse);
             renderers.spheres.draw(pass, &view.full_spheres);
             renderers.arrows.draw(pass, &view.full_arrows);
@@ -290,7 +355,9 @@ impl CallbackTrait for ViewCallback {
         // Faces last: see-through ones test depth against everything opaque
         // without hiding what is behind them.
         let solid = self.flags.solid_faces;
-        if self.flags.coarse {
+        if from_image {
+            renderers.faces.draw(pass, &view.full_faces, solid);
+        } else if self.flags.coarse {
             renderers.coarse.draw_faces(pass, &view.coarse, solid);
             renderers.faces.draw(pass, &view.full_faces, solid);
         } else {

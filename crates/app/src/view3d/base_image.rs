@@ -1,0 +1,239 @@
+//! The coarse level of detail's base image: the mesh's lines and flat
+//! faces drawn once into a texture the size of the view, then copied to the
+//! screen each frame until the camera, the mesh, the colours or the view's
+//! size change. A selection, a trace step or a panel repainting over an
+//! unchanged view then costs one copy and the highlighted elements, however
+//! large the mesh; a software renderer otherwise redraws every line and
+//! face of it.
+//!
+//! The image is premultiplied: cleared to transparent, with faces blended
+//! over the lines as on screen, so copying it over the backdrop gives what
+//! drawing there would. Highlighted elements are drawn after the copy, over
+//! the faces rather than under them; solid faces, which hide what is
+//! behind them, are always drawn directly.
+
+use super::gpu::{FrameUniform, depth_format};
+
+const SHADER: &str = include_str!("shaders/base_image.wgsl");
+
+/// What an image was drawn for; any change draws it again.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BaseKey {
+    pub geometry_id: u64,
+    pub frame: FrameUniform,
+    /// The view's size in pixels.
+    pub size: [u32; 2],
+}
+
+/// The copy pipeline, shared by every view.
+pub struct BaseImageRenderer {
+    layout: wgpu::BindGroupLayout,
+    pipeline: wgpu::RenderPipeline,
+    target_format: wgpu::TextureFormat,
+    /// The largest texture side the device allows.
+    max_side: u32,
+}
+
+impl BaseImageRenderer {
+    pub fn new(
+        device: &wgpu::Device,
+        frame_layout: &wgpu::BindGroupLayout,
+        target_format: wgpu::TextureFormat,
+    ) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("view3d base image"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("view3d base image"),
+            // The frame uniform stays bound at 0 for the drawables after.
+            bind_group_layouts: &[Some(frame_layout), Some(&layout)],
+            immediate_size: 0,
+        });
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("view3d base image"),
+            source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+        });
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("view3d base image"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_base_image"),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: depth_format(),
+                depth_write_enabled: Some(false),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: wgpu::StencilState::default(),
+                bias: wgpu::DepthBiasState::default(),
+            }),
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_base_image"),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: target_format,
+                    blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self {
+            layout,
+            pipeline,
+            target_format,
+            max_side: device.limits().max_texture_dimension_2d,
+        }
+    }
+
+    /// Copies `image` over the viewport.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'static>, image: &BaseImage) {
+        let Some(target) = &image.target else {
+            return;
+        };
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(1, &target.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
+
+/// One view's image and the textures it is drawn into.
+#[derive(Default)]
+pub struct BaseImage {
+    drawn_for: Option<BaseKey>,
+    target: Option<Target>,
+}
+
+struct Target {
+    size: [u32; 2],
+    colour: wgpu::TextureView,
+    depth: wgpu::TextureView,
+    bind_group: wgpu::BindGroup,
+}
+
+impl BaseImage {
+    /// Whether the image shows what `key` asks for.
+    pub fn is_current(&self, key: &BaseKey) -> bool {
+        self.drawn_for.as_ref() == Some(key)
+    }
+
+    /// Draws the image for `key` with `draw`, unless it is current. True
+    /// when it drew; the image is current afterwards unless the view is
+    /// too large for a texture (the mesh is then drawn directly).
+    pub fn update(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        renderer: &BaseImageRenderer,
+        key: BaseKey,
+        draw: impl FnOnce(&mut wgpu::RenderPass<'static>),
+    ) -> bool {
+        if self.is_current(&key) {
+            return false;
+        }
+        let [width, height] = key.size;
+        if width == 0 || height == 0 || width.max(height) > renderer.max_side {
+            self.drawn_for = None;
+            return false;
+        }
+        if self.target.as_ref().is_none_or(|t| t.size != key.size) {
+            self.target = Some(Target::new(device, renderer, key.size));
+        }
+        let Some(target) = &self.target else {
+            return false;
+        };
+        let mut pass = encoder
+            .begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("view3d base image"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &target.colour,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &target.depth,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Discard,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            })
+            .forget_lifetime();
+        draw(&mut pass);
+        drop(pass);
+        self.drawn_for = Some(key);
+        true
+    }
+}
+
+impl Target {
+    fn new(device: &wgpu::Device, renderer: &BaseImageRenderer, size: [u32; 2]) -> Self {
+        let extent = wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: 1,
+        };
+        let texture = |label, format, usage| {
+            device
+                .create_texture(&wgpu::TextureDescriptor {
+                    label: Some(label),
+                    size: extent,
+                    mip_level_count: 1,
+                    sample_count: 1,
+                    dimension: wgpu::TextureDimension::D2,
+                    format,
+                    usage,
+                    view_formats: &[],
+                })
+                .create_view(&wgpu::TextureViewDescriptor::default())
+        };
+        let colour = texture(
+            "view3d base image",
+            renderer.target_format,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        );
+        let depth = texture(
+            "view3d base image depth",
+            depth_format(),
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("view3d base image"),
+            layout: &renderer.layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(&colour),
+            }],
+        });
+        Self {
+            size,
+            colour,
+            depth,
+            bind_group,
+        }
+    }
+}
