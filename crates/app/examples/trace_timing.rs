@@ -24,6 +24,21 @@ fn main() {
         }
         harness.run();
 
+        // A selection with the frame after it, as a click makes one.
+        let selections = 20_u32;
+        let start = Instant::now();
+        for e in 0..selections {
+            let edge = edgewise_core::schema::ElementRef::new(
+                edgewise_core::schema::ElementKind::Edge,
+                1000 + 7 * e,
+            );
+            harness.state_mut().select(Some(edge)).ok();
+            harness.step();
+        }
+        let per_selection = start.elapsed() / selections;
+        harness.state_mut().select(None).ok();
+        harness.run();
+
         let start = Instant::now();
         let started = harness
             .state_mut()
@@ -48,8 +63,10 @@ fn main() {
         }
         let per_step = start.elapsed() / u32::try_from(steps.max(1)).unwrap_or(1);
         println!(
-            "200k-face torus, {structure:?}: recording vertexStar {:.2} ms; one step with the \
-             frame drawn (headless) {:.1} ms, over {steps} steps",
+            "200k-face torus, {structure:?}: a selection with its frame (headless) {:.1} ms; \
+             recording vertexStar {:.2} ms; one step with the frame drawn (headless) {:.1} ms, \
+             over {steps} steps",
+            per_selection.as_secs_f64() * 1e3,
             record.as_secs_f64() * 1e3,
             per_step.as_secs_f64() * 1e3,
         );

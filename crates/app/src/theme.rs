@@ -60,6 +60,8 @@ impl Theme {
         };
         // Panels show the cleared frame ([`backdrop`]).
         visuals.panel_fill = Color32::TRANSPARENT;
+        visuals.window_shadow = egui::epaint::Shadow::NONE;
+        visuals.popup_shadow = egui::epaint::Shadow::NONE;
         if !self.dark {
             visuals.window_fill = Color32::from_rgb(0xfa, 0xf9, 0xf6);
             visuals.extreme_bg_color = Color32::from_rgb(0xfd, 0xfd, 0xfb);

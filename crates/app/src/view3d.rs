@@ -866,10 +866,10 @@ impl View3d {
         if self.styles_key == Some(key) {
             return;
         }
+        // Fading the others is the frame uniform's, so it patches too.
         let same_base = self
             .styles_key
-            .is_some_and(|(_, was, geometry)| was == look && geometry == self.geometry_id)
-            && self.fade_others == styles.fade_others;
+            .is_some_and(|(_, was, geometry)| was == look && geometry == self.geometry_id);
         self.styles_key = Some(key);
         let base_id = self.styles_id;
         self.styles_id = next_id();
@@ -913,10 +913,9 @@ impl View3d {
         let pixels_per_point = painter.pixels_per_point();
         gpu.drop_taken();
         let sizes = self.scene.sizes(options.mesh_scale);
-        let base = ElementStyle {
-            faded: self.fade_others,
-            ..ElementStyle::default()
-        };
+        // Unfaded: the shaders fade the coarse view with the plain elements
+        // (`FrameUniform::fade`).
+        let base = ElementStyle::default();
         // Coarse lines fade as the arrows they stand for would, by the mean
         // edge's length in pixels.
         let edge_pixels = self.scene.unit * pixels_per_point
@@ -950,6 +949,7 @@ impl View3d {
             background: palette.background.to_normalized_gamma_f32(),
             coarse_line: coarse_line.to_normalized_gamma_f32(),
             coarse_face: style::uniform_colour(style::face_style(&base, palette)),
+            fade: style::uniform_fade(self.fade_others),
         };
         let (axes, axes_styles) = axes::instances(&self.scene, &sizes, palette);
         let callback = ViewCallback {

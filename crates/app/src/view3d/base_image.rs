@@ -8,13 +8,18 @@
 //!
 //! The image is premultiplied: cleared to transparent, with faces blended
 //! over the lines as on screen, so copying it over the backdrop gives what
-//! drawing there would. Highlighted elements are drawn after the copy, over
-//! the faces rather than under them; solid faces, which hide what is
+//! drawing there would. It is drawn unfaded, from a frame uniform of its
+//! own, and the copy fades it while others are highlighted, so the first
+//! selection keeps it too. Highlighted elements are drawn after the copy,
+//! over the faces rather than under them; solid faces, which hide what is
 //! behind them, are always drawn directly.
 
 use super::gpu::{FrameUniform, depth_format};
 
-const SHADER: &str = include_str!("shaders/base_image.wgsl");
+const SHADER: &str = concat!(
+    include_str!("shaders/common.wgsl"),
+    include_str!("shaders/base_image.wgsl")
+);
 
 /// What an image was drawn for; any change draws it again.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -32,6 +32,10 @@ pub struct FrameUniform {
     pub background: [f32; 4],
     pub coarse_line: [f32; 4],
     pub coarse_face: [f32; 4],
+    /// How elements without a style of their own fade while others are
+    /// highlighted: on (1 or 0), then [`super::style::FADE_LINE`],
+    /// [`super::style::FADE_FACE_ALPHA`] and [`super::style::FADE_FACE_MIX`].
+    pub fade: [f32; 4],
 }
 
 /// The layout of bind group 0, the frame uniform, which every pipeline uses.

@@ -169,6 +169,8 @@ struct ViewBuffers {
     full_faces: FaceBuffers,
     coarse: CoarseBuffers,
     base_image: BaseImage,
+    /// The frame uniform the base image is drawn with: unfaded.
+    base_image_frame: FrameBindGroup,
 }
 
 impl ViewBuffers {
@@ -187,6 +189,7 @@ impl ViewBuffers {
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
             base_image: BaseImage::default(),
+            base_image_frame: FrameBindGroup::new(device, frame_layout),
         }
     }
 }
@@ -215,6 +218,8 @@ impl ViewCallback {
         (self.flags.coarse && self.flags.base_image && !self.flags.solid_faces).then(|| {
             let mut frame = self.frame;
             frame.params[0] = if srgb { 1.0 } else { 0.0 };
+            // Drawn unfaded; the copy fades it.
+            frame.fade[0] = 0.0;
             BaseKey {
                 geometry_id: self.geometry_id,
                 frame,
@@ -286,7 +291,10 @@ impl CallbackTrait for ViewCallback {
             && view.geometry_id == self.geometry_id
         {
             let coarse = &renderers.coarse;
-            let (frame_group, buffers) = (&view.frame, &view.coarse);
+            if !view.base_image.is_current(&key) {
+                view.base_image_frame.write(queue, &key.frame);
+            }
+            let (frame_group, buffers) = (&view.base_image_frame, &view.coarse);
             let drawn =
                 view.base_image
                     .update(device, egui_encoder, &renderers.base_image, key, |pass| {

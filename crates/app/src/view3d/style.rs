@@ -91,7 +91,7 @@ impl Palette {
 
     /// A colour washed towards the background, for faded elements.
     pub fn faded(&self, colour: Color32) -> Color32 {
-        mix(colour, self.background, 0.72)
+        mix(colour, self.background, FADE_LINE)
     }
 }
 
@@ -110,6 +110,26 @@ pub fn mix(a: Color32, b: Color32, t: f32) -> Color32 {
 fn rgb(colour: Color32) -> [u8; 3] {
     let [r, g, b, _] = colour.to_srgba_unmultiplied();
     [r, g, b]
+}
+
+/// How far a faded vertex or edge moves towards the background.
+pub const FADE_LINE: f32 = 0.72;
+/// How far a faded face moves towards the background.
+pub const FADE_FACE_MIX: f32 = 0.4;
+/// What a faded face keeps of its opacity: as much of its colour shows as
+/// of a faded line's, so fading a picture of plain lines and faces as a
+/// whole (the coarse view's base image) fades each as drawing it faded does.
+pub const FADE_FACE_ALPHA: f32 = (1.0 - FADE_LINE) / (1.0 - FADE_FACE_MIX);
+
+/// The frame uniform's `fade`: whether elements without a style of their
+/// own fade, and how, as [`Palette::faded`] and [`face_colour`] do.
+pub fn uniform_fade(fade_others: bool) -> [f32; 4] {
+    [
+        if fade_others { 1.0 } else { 0.0 },
+        FADE_LINE,
+        FADE_FACE_ALPHA,
+        FADE_FACE_MIX,
+    ]
 }
 
 /// The GPU style of a vertex or edge.
@@ -144,10 +164,10 @@ pub fn face_colour(style: &ElementStyle, palette: &Palette) -> (Color32, f32) {
         None => (palette.face, palette.face_alpha),
     };
     if style.faded {
-        alpha *= 0.45;
+        alpha *= FADE_FACE_ALPHA;
     }
     let colour = if style.faded {
-        mix(colour, palette.background, 0.4)
+        mix(colour, palette.background, FADE_FACE_MIX)
     } else {
         colour
     };
@@ -192,6 +212,23 @@ impl StyleContext<'_> {
         }
     }
 
+    /// The style of an element without one of its own: unfaded, marked
+    /// for the shaders to fade while others are highlighted (the frame
+    /// uniform's `fade`), so fading never rewrites every element's style.
+    fn plain_style(&self, element: ElementRef) -> StyleVertex {
+        let mut style = self.gpu_style(element, &ElementStyle::default());
+        style.extra[3] = 255;
+        style
+    }
+
+    /// An element's style: its own, or [`Self::plain_style`].
+    fn style_of(&self, element: ElementRef, styles: &SceneStyles) -> StyleVertex {
+        match styles.elements.get(&element) {
+            Some(style) => self.gpu_style(element, style),
+            None => self.plain_style(element),
+        }
+    }
+
     fn gpu_style(&self, element: ElementRef, style: &ElementStyle) -> StyleVertex {
         match element.kind {
             ElementKind::Face => face_style(style, self.palette),
@@ -216,10 +253,9 @@ impl StyleContext<'_> {
 
     /// Every element's GPU style.
     pub fn build_all(&self, styles: &SceneStyles, id: u64) -> StyleUpload {
-        let base = styles.base();
         let all = |kind: ElementKind| {
             let mut out: Vec<StyleVertex> = (0..self.count(kind) as u32)
-                .map(|id| self.gpu_style(ElementRef::new(kind, id), &base))
+                .map(|id| self.plain_style(ElementRef::new(kind, id)))
                 .collect();
             let first = ElementRef::new(kind, 0);
             let last = ElementRef::new(kind, u32::MAX);
@@ -243,8 +279,8 @@ impl StyleContext<'_> {
         }
     }
 
-    /// Patches for the elements whose look differs between `before` and
-    /// `styles`, which must fade alike: their base looks are equal.
+    /// Patches for the elements whose own style differs between `before`
+    /// and `styles`; fading the others is the frame uniform's.
     pub fn build_patches(
         &self,
         before: &BTreeMap<ElementRef, ElementStyle>,
@@ -262,7 +298,7 @@ impl StyleContext<'_> {
             if index >= self.count(kind) {
                 continue;
             }
-            let style = self.gpu_style(element, &styles.get(element));
+            let style = self.style_of(element, styles);
             match kind {
                 ElementKind::Vertex => runs[0].push((element.id, vec![style])),
                 ElementKind::Edge => runs[1].push((element.id, vec![style])),

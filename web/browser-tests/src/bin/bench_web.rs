@@ -244,6 +244,10 @@ async fn main() -> anyhow::Result<()> {
             "window.edgewise.select('edge', 1000)",
         ),
         (
+            "torus-200k: select another edge",
+            "window.edgewise.select('edge', 5000)",
+        ),
+        (
             "torus-200k: convert to winged-edge",
             "window.edgewise.setStructure('winged')",
         ),

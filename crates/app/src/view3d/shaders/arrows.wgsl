@@ -11,11 +11,12 @@ fn vs_arrow(
     @location(1) normal_kind: f32,
     @location(2) start: vec3<f32>,
     @location(3) end: vec3<f32>,
-    @location(4) colour: vec4<f32>,
+    @location(4) style_colour: vec4<f32>,
     // x: emphasis (highlighted), y: 1 to keep the ends where they are,
-    // z: extra thickness (1 + 40 z; the axes).
+    // z: extra thickness (1 + 40 z; the axes), w: no style of its own.
     @location(5) extra: vec4<f32>,
 ) -> LitOut {
+    let colour = plain_line(style_colour, extra);
     var out: LitOut;
     out.colour = colour;
     out.world = start;

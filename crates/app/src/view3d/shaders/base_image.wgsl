@@ -1,5 +1,8 @@
 // The coarse level of detail's base image, copied over the view: one
-// triangle covers the viewport, and each pixel takes its texel.
+// triangle covers the viewport, and each pixel takes its texel. The image
+// is drawn unfaded; while plain elements fade, the copy fades it as a
+// whole, which fades each line and face as drawing them faded would
+// (style.rs's FADE_FACE_ALPHA). Used after common.wgsl.
 
 @group(1) @binding(0) var base_image: texture_2d<f32>;
 
@@ -23,5 +26,8 @@ fn vs_base_image(@builtin(vertex_index) index: u32) -> CopyOut {
 fn fs_base_image(in: CopyOut) -> @location(0) vec4<f32> {
     let size = vec2<f32>(textureDimensions(base_image));
     let texel = vec2<i32>(clamp(in.uv * size, vec2<f32>(0.0), size - 1.0));
-    return textureLoad(base_image, texel, 0);
+    let image = textureLoad(base_image, texel, 0);
+    let fade = frame.fade.x * frame.fade.y;
+    let background = to_target(frame.background.rgb, image.a).rgb;
+    return vec4<f32>(mix(image.rgb, background, fade), image.a);
 }

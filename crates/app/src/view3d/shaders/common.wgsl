@@ -21,6 +21,10 @@ struct Frame {
     // face's alpha is its opacity).
     coarse_line: vec4<f32>,
     coarse_face: vec4<f32>,
+    // x: 1 while elements without a style of their own fade (others are
+    // highlighted); y: how far their lines move to the background; z: what
+    // their faces keep of their opacity; w: how far faces move.
+    fade: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
@@ -81,6 +85,20 @@ fn fade_small(colour: vec3<f32>, size: f32, full: f32, highlighted: f32) -> vec3
     let keep = clamp(size / full, 0.0, 1.0);
     let amount = (1.0 - keep) * 0.8 * (1.0 - step(0.5, highlighted));
     return mix(colour, frame.background.rgb, amount);
+}
+
+// An element without a style of its own (`extra.w`) fades while others
+// are highlighted, as style.rs fades it: the same styles serve both, so a
+// first selection does not rewrite every element's style.
+fn plain_line(colour: vec4<f32>, extra: vec4<f32>) -> vec4<f32> {
+    let amount = frame.fade.x * frame.fade.y * step(0.5, extra.w);
+    return vec4<f32>(mix(colour.rgb, frame.background.rgb, amount), colour.a);
+}
+
+fn plain_face(colour: vec4<f32>, extra: vec4<f32>) -> vec4<f32> {
+    let on = frame.fade.x * step(0.5, extra.w);
+    let rgb = mix(colour.rgb, frame.background.rgb, frame.fade.w * on);
+    return vec4<f32>(rgb, colour.a * mix(1.0, frame.fade.z, on));
 }
 
 // A position no triangle can be rasterised at (outside the depth range).

@@ -19,7 +19,7 @@ fn vs_face(
     var out: FaceOut;
     out.clip = frame.clip_from_world * vec4<f32>(position, 1.0);
     out.world = position;
-    out.colour = colour;
+    out.colour = plain_face(colour, extra);
     out.highlighted = extra.x;
     return out;
 }

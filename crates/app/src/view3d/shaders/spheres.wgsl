@@ -4,10 +4,11 @@
 fn vs_sphere(
     @location(0) unit: vec3<f32>,
     @location(1) center: vec3<f32>,
-    @location(2) colour: vec4<f32>,
-    // x: emphasis (highlighted), others unused.
+    @location(2) style_colour: vec4<f32>,
+    // x: emphasis (highlighted), w: no style of its own; others unused.
     @location(3) extra: vec4<f32>,
 ) -> LitOut {
+    let colour = plain_line(style_colour, extra);
     let pixel = pixel_size(center);
     // At least about a pixel, and a highlighted sphere at least four, so it
     // stays visible on a dense mesh.
