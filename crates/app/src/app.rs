@@ -384,17 +384,27 @@ impl EdgewiseApp {
         let Some(document) = &self.tab().document else {
             return;
         };
+        // Every press counts: a slow frame may gather several (a held key).
         let (up, down) = ctx.input(|i| {
-            let plain = !i.modifiers.any();
-            (
-                plain && i.key_pressed(egui::Key::ArrowUp),
-                plain && i.key_pressed(egui::Key::ArrowDown),
-            )
+            if i.modifiers.any() {
+                (0, 0)
+            } else {
+                (
+                    i.num_presses(egui::Key::ArrowUp),
+                    i.num_presses(egui::Key::ArrowDown),
+                )
+            }
         });
-        if (up || down) && !self.tab().run.is_active() {
+        if up != down && !self.tab().run.is_active() {
             let selected = document.selection();
-            let next = table_neighbour(document.mesh(), selected, down);
-            if next.is_some() && next != selected {
+            let mut next = selected;
+            for _ in 0..up.abs_diff(down) {
+                match table_neighbour(document.mesh(), next, down > up) {
+                    Some(row) => next = Some(row),
+                    None => break,
+                }
+            }
+            if next != selected {
                 self.issue(Command::Select(next));
             }
             return;

@@ -4,7 +4,7 @@
 
 mod support;
 
-use edgewise_app::{Argument, EmbedEvent, preferred_height};
+use edgewise_app::{EmbedEvent, preferred_height};
 use edgewise_core::schema::{ElementKind, ElementRef};
 
 fn names(events: &[EmbedEvent]) -> Vec<&'static str> {
@@ -49,14 +49,7 @@ fn each_change_is_told_once() {
         }]
     );
 
-    harness
-        .state_mut()
-        .run_algorithm(
-            "vertexAdjacentEdge",
-            &[("v".to_owned(), Argument::Number(1.0))],
-        )
-        .expect("runs");
-    harness.run();
+    support::run_vertex_adjacent_edge(&mut harness, 1);
     harness.state_mut().trace_step(2).expect("steps");
     harness.run();
     let events = harness.state_mut().take_embed_events();

@@ -4,7 +4,6 @@
 
 mod support;
 
-use edgewise_app::Argument;
 use edgewise_app::command::Command;
 use edgewise_core::mesh::{Structure, operations::Operation};
 use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
@@ -136,6 +135,18 @@ fn arrows_walk_the_selection_along_its_table_over_deleted_rows() {
     press(&mut harness, egui::Key::ArrowUp);
     press(&mut harness, egui::Key::ArrowUp);
     assert_eq!(selection(&harness), Some(edge(0)), "the first row stays");
+    // A slow frame gathers a held key's presses: each counts.
+    for _ in 0..3 {
+        harness.key_press(egui::Key::ArrowDown);
+    }
+    harness.run();
+    assert_eq!(
+        selection(&harness),
+        Some(edge(3)),
+        "three presses, three rows"
+    );
+    harness.state_mut().select(Some(edge(0))).expect("selects");
+    harness.run();
 
     let last = ElementRef::new(ElementKind::Vertex, 5);
     harness.state_mut().select(Some(last)).expect("selects");
@@ -173,14 +184,7 @@ fn arrows_walk_the_selection_along_its_table_over_deleted_rows() {
     assert_eq!(walked, live, "↓ visits every live edge, in order, once");
 
     // During a run, → steps and ↓ leaves the selection alone.
-    harness
-        .state_mut()
-        .run_algorithm(
-            "vertexAdjacentEdge",
-            &[("v".to_owned(), Argument::Number(1.0))],
-        )
-        .expect("runs");
-    harness.run();
+    support::run_vertex_adjacent_edge(&mut harness, 1);
     let before = selection(&harness);
     press(&mut harness, egui::Key::ArrowDown);
     assert_eq!(selection(&harness), before);

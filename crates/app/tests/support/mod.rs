@@ -58,6 +58,12 @@ pub fn harness_tracing(
     v: u32,
 ) -> Harness<'static, EdgewiseApp> {
     let mut harness = harness_with(sample, structure);
+    run_vertex_adjacent_edge(&mut harness, v);
+    harness
+}
+
+/// Starts vertexAdjacentEdge from vertex `v` and runs a frame.
+pub fn run_vertex_adjacent_edge(harness: &mut AppHarness, v: u32) {
     harness
         .state_mut()
         .run_algorithm(
@@ -66,7 +72,6 @@ pub fn harness_tracing(
         )
         .expect("vertexAdjacentEdge runs");
     harness.run();
-    harness
 }
 
 /// A sample file of meshes/, loaded natively as `structure`.
