@@ -8,6 +8,7 @@
 //! - [`QUERIES`]: each entry returns a value (`state`, `algorithms`,
 //!   `shareUrl`) or, for `exportMesh` and `exportImage`, a Promise of one.
 
+use base64::Engine as _;
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
 use edgewise_core::{
@@ -634,32 +635,15 @@ pub(super) fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue
     let object = js_sys::Object::new();
     js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
     let (key, value) = if binary {
-        ("base64", base64(&saved.bytes))
+        // Standard base64 with padding, so binary files cross the JSON
+        // boundary.
+        (
+            "base64",
+            base64::engine::general_purpose::STANDARD.encode(&saved.bytes),
+        )
     } else {
         ("text", String::from_utf8_lossy(&saved.bytes).into_owned())
     };
     js_sys::Reflect::set(&object, &key.into(), &value.into())?;
     Ok(object.into())
-}
-
-/// Standard base64 with padding, so binary files cross the JSON boundary.
-fn base64(bytes: &[u8]) -> String {
-    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
-    for chunk in bytes.chunks(3) {
-        let b = [
-            chunk[0],
-            chunk.get(1).copied().unwrap_or(0),
-            chunk.get(2).copied().unwrap_or(0),
-        ];
-        let n = u32::from(b[0]) << 16 | u32::from(b[1]) << 8 | u32::from(b[2]);
-        for i in 0..4 {
-            if i <= chunk.len() {
-                out.push(char::from(ALPHABET[(n >> (18 - 6 * i)) as usize & 63]));
-            } else {
-                out.push('=');
-            }
-        }
-    }
-    out
 }
