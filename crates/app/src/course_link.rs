@@ -169,7 +169,21 @@ pub struct CourseLink {
     pub code_size: Option<f32>,
 }
 
+/// Splits a URL, or just its `?…#…` part, into what `location.search`
+/// and `location.hash` give (without the `?` and `#`).
+pub fn split_url(url: &str) -> (&str, &str) {
+    let (rest, fragment) = url.split_once('#').unwrap_or((url, ""));
+    let search = rest.split_once('?').map_or("", |(_, query)| query);
+    (search, fragment)
+}
+
 impl CourseLink {
+    /// [`Self::parse`] of a whole URL, or of its `?…#…` part.
+    pub fn parse_url(url: &str) -> (Self, Vec<String>) {
+        let (search, fragment) = split_url(url);
+        Self::parse(search, fragment)
+    }
+
     /// Reads a link from `location.search` and `location.hash` (the leading
     /// `?` and `#` are optional). Returns the link and one message for each
     /// part that was ignored.

@@ -2,7 +2,7 @@
 //! scripted course material. The app itself draws them, without a window,
 //! so a handout made here is the same file as the one its Save menu makes.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use edgewise_app::command::Command as AppCommand;
 use edgewise_app::course_link::{CourseLink, MeshSource};
@@ -72,14 +72,6 @@ fn parse_size(text: &str) -> Result<(f32, f32), Failure> {
             SIDE.0, SIDE.1
         ))
     })
-}
-
-/// Splits a course link (a whole URL, or its `?…` and `#…` parts) into
-/// its query and fragment.
-fn split_link(link: &str) -> (&str, &str) {
-    let (before, fragment) = link.split_once('#').unwrap_or((link, ""));
-    let query = before.split_once('?').map_or("", |(_, query)| query);
-    (query, fragment)
 }
 
 /// Draws what `request` asks for and writes it.
@@ -223,14 +215,8 @@ fn open_link(
     meshfile: Option<&Path>,
     structure: Option<Structure>,
 ) -> Result<(), Failure> {
-    let (query, fragment) = split_link(link);
-    let (mut parsed, messages) = CourseLink::parse(query, fragment);
-    if !messages.is_empty() {
-        for message in &messages {
-            eprintln!("--link: {message}");
-        }
-        return Err(Failure::Input);
-    }
+    let (mut parsed, messages) = CourseLink::parse_url(link);
+    link_refused(&messages)?;
     if structure.is_some() {
         parsed.structure = structure;
     }
@@ -244,14 +230,10 @@ fn open_link(
                 bytes: Ok(read_bytes(path)?),
             })
         }
-        (Some(MeshSource::Path(path)), None) => {
-            let local = PathBuf::from(path);
-            Some(FetchedMesh {
-                name: path.clone(),
-                bytes: std::fs::read(&local)
-                    .map_err(|error| format!("cannot read the file: {error}")),
-            })
-        }
+        (Some(MeshSource::Path(path)), None) => Some(FetchedMesh {
+            name: path.clone(),
+            bytes: std::fs::read(path).map_err(|error| format!("cannot read the file: {error}")),
+        }),
         (Some(_), Some(path)) => {
             return Err(usage(format!(
                 "{}: the link carries its own mesh; give the file or the link's mesh, not both",
@@ -265,13 +247,17 @@ fn open_link(
             ));
         }
     };
-    let messages = app.apply_course_link(&parsed, Vec::new(), fetched);
+    link_refused(&app.apply_course_link(&parsed, Vec::new(), fetched))
+}
+
+/// Reports each message about the link; any is a refusal.
+fn link_refused(messages: &[String]) -> Result<(), Failure> {
+    for message in messages {
+        eprintln!("--link: {message}");
+    }
     if messages.is_empty() {
         Ok(())
     } else {
-        for message in &messages {
-            eprintln!("--link: {message}");
-        }
         Err(Failure::Input)
     }
 }

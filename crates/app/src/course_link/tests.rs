@@ -10,16 +10,8 @@ mod golden;
 
 const BASE: &str = "https://example.org/edgewise/index.html";
 
-/// Splits a URL into what `location.search` and `location.hash` give.
-fn split(url: &str) -> (&str, &str) {
-    let (rest, fragment) = url.split_once('#').unwrap_or((url, ""));
-    let search = rest.split_once('?').map_or("", |(_, q)| q);
-    (search, fragment)
-}
-
 fn parse_url(url: &str) -> (CourseLink, Vec<String>) {
-    let (search, fragment) = split(url);
-    CourseLink::parse(search, fragment)
+    CourseLink::parse_url(url)
 }
 
 fn full_link() -> CourseLink {
@@ -105,7 +97,7 @@ fn inline_mesh_and_algorithm_travel_in_the_fragment() {
         ..CourseLink::default()
     };
     let url = link.to_url(BASE);
-    let (search, fragment) = split(&url);
+    let (search, fragment) = split_url(&url);
     assert_eq!(search, "algorithm=mine");
     assert!(fragment.starts_with("mesh="), "{fragment}");
     assert!(fragment.contains("&format=obj&alg="), "{fragment}");

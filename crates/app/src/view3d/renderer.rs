@@ -212,12 +212,18 @@ pub struct ViewCallback {
 }
 
 impl ViewCallback {
+    /// The frame uniform for a target that is sRGB or not.
+    fn frame_for(&self, srgb: bool) -> FrameUniform {
+        let mut frame = self.frame;
+        frame.params[0] = if srgb { 1.0 } else { 0.0 };
+        frame
+    }
+
     /// What the coarse base image must show this frame, if one is used:
     /// only behind see-through faces, which hide nothing.
     fn base_key(&self, srgb: bool) -> Option<BaseKey> {
         (self.flags.coarse && self.flags.base_image && !self.flags.solid_faces).then(|| {
-            let mut frame = self.frame;
-            frame.params[0] = if srgb { 1.0 } else { 0.0 };
+            let mut frame = self.frame_for(srgb);
             // Drawn unfaded; the copy fades it.
             frame.fade[0] = 0.0;
             BaseKey {
@@ -281,9 +287,7 @@ impl CallbackTrait for ViewCallback {
             view.axes.write_styles(device, queue, &self.axes_styles);
         }
 
-        let mut frame = self.frame;
-        frame.params[0] = if srgb { 1.0 } else { 0.0 };
-        view.frame.write(queue, &frame);
+        view.frame.write(queue, &self.frame_for(srgb));
 
         // The base image, drawn in this encoder before egui's pass (and
         // after the uniform write above, which the queue applies first).
@@ -291,13 +295,11 @@ impl CallbackTrait for ViewCallback {
             && view.geometry_id == self.geometry_id
         {
             let coarse = &renderers.coarse;
-            if !view.base_image.is_current(&key) {
-                view.base_image_frame.write(queue, &key.frame);
-            }
             let (frame_group, buffers) = (&view.base_image_frame, &view.coarse);
             let drawn =
                 view.base_image
                     .update(device, egui_encoder, &renderers.base_image, key, |pass| {
+                        frame_group.write(queue, &key.frame);
                         frame_group.bind(pass);
                         coarse.draw_lines(pass, buffers);
                         coarse.draw_faces(pass, buffers, false);
@@ -339,15 +341,16 @@ impl CallbackTrait for ViewCallback {
             .is_some_and(|key| view.base_image.is_current(&key));
 
         // Opaque first: spheres, arrows (or lines), axes, orientation marks.
-        if from_image {
-            renderers.base_image.draw(pass, &view.base_image);
-            self.uploaded
-                .base_image_copied
-                .fetch_add(1, Ordering::Relaxed);
-            renderers.spheres.draw(pass, &view.full_spheres);
-            renderers.arrows.draw(pass, &view.full_arrows);
-        } else if self.flags.coarse {
-            renderers.coarse.draw_lines(pass, &view.coarse);
+        // The base image holds the coarse lines and faces.
+        if self.flags.coarse {
+            if from_image {
+                renderers.base_image.draw(pass, &view.base_image);
+                self.uploaded
+                    .base_image_copied
+                    .fetch_add(1, Ordering::Relaxed);
+            } else {
+                renderers.coarse.draw_lines(pass, &view.coarse);
+            }
             renderers.spheres.draw(pass, &view.full_spheres);
             renderers.arrows.draw(pass, &view.full_arrows);
         } else {
@@ -363,10 +366,10 @@ impl CallbackTrait for ViewCallback {
         // Faces last: see-through ones test depth against everything opaque
         // without hiding what is behind them.
         let solid = self.flags.solid_faces;
-        if from_image {
-            renderers.faces.draw(pass, &view.full_faces, solid);
-        } else if self.flags.coarse {
-            renderers.coarse.draw_faces(pass, &view.coarse, solid);
+        if self.flags.coarse {
+            if !from_image {
+                renderers.coarse.draw_faces(pass, &view.coarse, solid);
+            }
             renderers.faces.draw(pass, &view.full_faces, solid);
         } else {
             renderers.faces.draw(pass, &view.faces, solid);
