@@ -7,7 +7,7 @@
 
 use edgewise_core::mesh::{Mesh, VertexId};
 use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
-use egui::RichText;
+use egui::{RichText, emath::GuiRounding as _};
 use egui_extras::TableBuilder;
 
 use crate::{paint::Paint, selection::Role};
@@ -100,7 +100,8 @@ pub fn table_ui(
 
     let mut table = TableBuilder::new(ui)
         .id_salt(kind)
-        .striped(true)
+        // Stripes come from `RowBand`, one per row rather than one per cell.
+        .striped(false)
         .resizable(true)
         // Fill the panel: a table that shrank to its rows would shrink the panel too.
         .auto_shrink(false)
@@ -141,19 +142,13 @@ pub fn table_ui(
                 let mut clicked_link = None;
                 for (i, cell) in cells.into_iter().enumerate() {
                     row.col(|ui| {
-                        if let Some(colour) = row_colour {
-                            ui.painter().rect_filled(
-                                ui.max_rect().expand2(egui::vec2(4.0, 1.0)),
-                                0.0,
-                                colour.gamma_multiply(0.28),
-                            );
-                        }
-                        if previewed == Some(element) {
-                            // Top and bottom lines across the row's cells.
-                            let r = ui.max_rect().expand2(egui::vec2(4.0, 1.0));
-                            let painter = ui.painter();
-                            painter.hline(r.x_range(), r.top(), preview_stroke);
-                            painter.hline(r.x_range(), r.bottom(), preview_stroke);
+                        if i == 0 {
+                            let band = RowBand {
+                                striped: id % 2 == 0,
+                                colour: row_colour,
+                                outline: (previewed == Some(element)).then_some(preview_stroke),
+                            };
+                            band.paint(ui);
                         }
                         let dim = derived.get(i).copied().unwrap_or_default();
                         match cell {
@@ -260,6 +255,48 @@ pub fn table_ui(
                 }
             });
         });
+}
+
+/// A row's background across the table's whole width: the stripe of every
+/// other row, its colour in the selection or the trace, and the outline of
+/// the element the 3D view previews.
+///
+/// Painted once per row as plain quads, without anti-aliased edges (rows
+/// lie on whole pixels). Under a software renderer every shape costs:
+/// egui_extras' stripes, a feathered rectangle per cell, made the cube's
+/// orbit about a tenth slower.
+struct RowBand {
+    striped: bool,
+    colour: Option<egui::Color32>,
+    outline: Option<egui::Stroke>,
+}
+
+impl RowBand {
+    /// Paints the band behind the row whose first cell is `ui`.
+    fn paint(&self, ui: &egui::Ui) {
+        let cell = ui.max_rect();
+        let gap = ui.spacing().item_spacing.y * 0.5;
+        let rect = egui::Rect::from_x_y_ranges(
+            ui.clip_rect().x_range(),
+            (cell.top() - gap)..=(cell.bottom() + gap),
+        )
+        .round_to_pixels(ui.pixels_per_point());
+        let mut quads = egui::Mesh::default();
+        if self.striped {
+            quads.add_colored_rect(rect, ui.visuals().faint_bg_color);
+        }
+        if let Some(colour) = self.colour {
+            quads.add_colored_rect(rect, colour.gamma_multiply(0.28));
+        }
+        let painter = ui.painter();
+        if !quads.is_empty() {
+            painter.add(egui::Shape::mesh(quads));
+        }
+        if let Some(stroke) = self.outline {
+            painter.hline(rect.x_range(), rect.top(), stroke);
+            painter.hline(rect.x_range(), rect.bottom(), stroke);
+        }
+    }
 }
 
 /// Starts typing into a stored reference cell on a double-click.
