@@ -1,9 +1,11 @@
 //! `cargo xtask bench-web`: the served release build in headless Chromium,
-//! driven through `window.edgewise` and pointer events, beside a bare WebGL2
-//! page drawing the same torus (web/bench/baseline.html). Prints one table.
+//! driven through `window.edgewise` and pointer events, beside two bare
+//! WebGL2 pages: the same torus (web/bench/baseline.html), and an empty
+//! frame presented as wgpu presents (web/bench/present.html). Prints one
+//! table.
 //!
 //! Environment (set by the xtask): `EDGEWISE_URL` (the app),
-//! `EDGEWISE_BASELINE_URL` (the baseline page), `EDGEWISE_DIST` (dist/, for
+//! `EDGEWISE_BASELINE_URL` (web/bench/, the bare pages), `EDGEWISE_DIST` (dist/, for
 //! the transfer sizes), `EDGEWISE_CHROMIUM` and `EDGEWISE_CHROMEDRIVER`.
 
 use std::io::Write as _;
@@ -88,6 +90,35 @@ fn orbit(seconds: f64) -> String {
     )
 }
 
+/// Frames per second of a bare page in web/bench/ that counts its frames
+/// in `window.baseline.frames`, over [`ORBIT_SECONDS`].
+async fn page_fps(base_url: &str, page: &str, window_size: (u32, u32)) -> anyhow::Result<Value> {
+    let browser = Browser::launch_with(LaunchOptions {
+        window_size,
+        base_url: Some(base_url.to_owned()),
+        ..LaunchOptions::default()
+    })
+    .await?;
+    browser.goto(page).await?;
+    browser
+        .wait_for(
+            "window.baseline && window.baseline.frames > 3",
+            Duration::from_secs(120),
+        )
+        .await?;
+    let rate = browser
+        .eval_async(&format!(
+            "(async () => {{
+               const before = window.baseline.frames, start = performance.now();
+               await new Promise((r) => setTimeout(r, {ORBIT_SECONDS} * 1000));
+               return (window.baseline.frames - before) / ((performance.now() - start) / 1000);
+             }})()"
+        ))
+        .await?;
+    browser.close().await?;
+    Ok(rate)
+}
+
 struct Row {
     what: String,
     app: String,
@@ -148,30 +179,16 @@ async fn main() -> anyhow::Result<()> {
     let window_size = (1280, 800);
     let mut rows = Vec::new();
 
-    // The baseline first: its frame rate on torus-200k.
-    let baseline = Browser::launch_with(LaunchOptions {
-        window_size,
-        base_url: Some(baseline_url),
-        ..LaunchOptions::default()
-    })
-    .await?;
-    baseline.goto("baseline.html").await?;
-    baseline
-        .wait_for(
-            "window.baseline && window.baseline.frames > 3",
-            Duration::from_secs(120),
-        )
-        .await?;
-    let baseline_fps = baseline
-        .eval_async(&format!(
-            "(async () => {{
-               const before = window.baseline.frames, start = performance.now();
-               await new Promise((r) => setTimeout(r, {ORBIT_SECONDS} * 1000));
-               return (window.baseline.frames - before) / ((performance.now() - start) / 1000);
-             }})()"
-        ))
-        .await?;
-    baseline.close().await?;
+    // The bare pages first: the torus in plain WebGL2, and an empty frame
+    // presented as wgpu presents on WebGL2.
+    let baseline_fps = page_fps(&baseline_url, "baseline.html", window_size).await?;
+    let floor_fps = page_fps(&baseline_url, "present.html", window_size).await?;
+    rows.push(row(
+        "an empty frame, presented as wgpu does",
+        String::new(),
+        &fps(&floor_fps),
+        "web/bench/present.html: the most any frame of the app reaches here".to_owned(),
+    ));
 
     let app = Browser::launch_with(LaunchOptions {
         window_size,
