@@ -105,6 +105,9 @@ pub fn table_ui(
         .resizable(true)
         // Fill the panel: a table that shrank to its rows would shrink the panel too.
         .auto_shrink(false)
+        // Jump to the row a step or selection names: each frame of a smooth
+        // scroll costs a whole repaint, several times a step's own.
+        .animate_scrolling(false)
         .cell_layout(egui::Layout::left_to_right(egui::Align::Center));
     if let Some(row) = scroll_to {
         table = table.scroll_to_row(row as usize, None);

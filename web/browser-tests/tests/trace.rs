@@ -204,3 +204,36 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// A step repaints a few frames and then nothing: the tables and the code
+/// jump to their row and line. A smooth scroll took seven frames a step,
+/// each a whole repaint, which a slow machine pays for every key press.
+#[tokio::test]
+async fn a_step_repaints_a_few_frames_then_rests() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("?sample=cube&structure=half").await?;
+    browser
+        .eval_async("window.edgewise.run('vertexStar', { v: 0 })")
+        .await?;
+    for step in 1..=4 {
+        let frames = browser
+            .eval_async(
+                "(async () => {
+                   const settle = () => new Promise((r) => setTimeout(r, 1500));
+                   await settle();
+                   const before = window.edgewise.state().frames;
+                   await window.edgewise.step(1);
+                   await settle();
+                   return window.edgewise.state().frames - before;
+                 })()",
+            )
+            .await?;
+        let frames = frames.as_u64().unwrap_or(u64::MAX);
+        assert!(
+            (1..=3).contains(&frames),
+            "step {step} repainted {frames} frames"
+        );
+    }
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}

@@ -326,7 +326,12 @@ impl Algorithms {
                             ),
                         );
                         if needs_scroll {
-                            ui.scroll_to_rect(rect, Some(Align::Center));
+                            // At once, as the tables do (`tables::table_ui`).
+                            ui.scroll_to_rect_animation(
+                                rect,
+                                Some(Align::Center),
+                                egui::style::ScrollAnimation::none(),
+                            );
                             scrolled = true;
                         }
                     }
