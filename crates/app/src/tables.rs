@@ -147,7 +147,7 @@ pub fn table_ui(
                     row.col(|ui| {
                         if i == 0 {
                             let band = RowBand {
-                                striped: id % 2 == 0,
+                                striped: id.is_multiple_of(2),
                                 colour: row_colour,
                                 outline: (previewed == Some(element)).then_some(preview_stroke),
                             };
@@ -266,7 +266,7 @@ pub fn table_ui(
 ///
 /// Painted once per row as plain quads, without anti-aliased edges (rows
 /// lie on whole pixels). Under a software renderer every shape costs:
-/// egui_extras' stripes, a feathered rectangle per cell, made the cube's
+/// `egui_extras` stripes, a feathered rectangle per cell, made the cube's
 /// orbit about a tenth slower.
 struct RowBand {
     striped: bool,
