@@ -436,6 +436,18 @@ fn a_dense_mesh_far_away_is_drawn_coarse_with_its_highlights_in_full() {
     let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
     close.save("torus_80k_close.png");
     assert!(!view.coarse(), "close up, arrows and spheres return");
+
+    // The arrows, spheres and faces, uploaded only now, draw what a view
+    // that was never coarse draws.
+    let mut direct_view = View3d::new(Some(&rs));
+    direct_view.set_geometry(geometry.clone(), false);
+    direct_view.set_camera(view.camera());
+    let (direct, _) = harness.show(&mut direct_view, &styles, &options, Vec::new());
+    assert!(!direct_view.coarse());
+    assert!(
+        close.pixels == direct.pixels,
+        "detail uploaded on the way in draws differently"
+    );
 }
 
 /// A selection changing on a big mesh patches the styles of the elements it

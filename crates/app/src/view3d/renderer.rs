@@ -168,6 +168,10 @@ struct ViewBuffers {
     full_arrows: ArrowBuffers,
     full_faces: FaceBuffers,
     coarse: CoarseBuffers,
+    /// Arrows, spheres and faces of the current geometry not yet uploaded:
+    /// only full detail draws them, so a dense mesh seen from afar uploads
+    /// them when first drawn so (most of torus-200k's 39 MB).
+    detail: Option<Arc<GeometryUpload>>,
     base_image: BaseImage,
     /// The frame uniform the base image is drawn with: unfaded.
     base_image_frame: FrameBindGroup,
@@ -188,6 +192,7 @@ impl ViewBuffers {
             full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
+            detail: None,
             base_image: BaseImage::default(),
             base_image_frame: FrameBindGroup::new(device, frame_layout),
         }
@@ -258,13 +263,18 @@ impl CallbackTrait for ViewCallback {
         if let Some(geometry) = &self.geometry
             && geometry.id != view.geometry_id
         {
+            view.marks.replace_marks(device, &geometry.marks);
+            view.coarse.replace(device, &geometry.coarse);
+            view.detail = Some(Arc::clone(geometry));
+            view.geometry_id = geometry.id;
+            self.uploaded.geometry.store(geometry.id, Ordering::Release);
+        }
+        if !self.flags.coarse
+            && let Some(geometry) = view.detail.take()
+        {
             view.spheres.replace_elements(device, &geometry.spheres);
             view.arrows.replace_elements(device, &geometry.arrows);
             view.faces.replace_elements(device, &geometry.faces);
-            view.marks.replace_marks(device, &geometry.marks);
-            view.coarse.replace(device, &geometry.coarse);
-            view.geometry_id = geometry.id;
-            self.uploaded.geometry.store(geometry.id, Ordering::Release);
         }
         // Patches apply only over the styles they were made against (the
         // view sends everything when it cannot know which those are).
