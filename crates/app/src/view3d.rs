@@ -354,6 +354,11 @@ impl Preparation {
         self.done == Self::SLICES
     }
 
+    /// Whether every slice is made.
+    pub fn is_done(&self) -> bool {
+        self.done == Self::SLICES
+    }
+
     /// The share of the slices made, from 0 to 1.
     pub fn progress(&self) -> f32 {
         self.done as f32 / Self::SLICES as f32

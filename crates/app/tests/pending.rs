@@ -47,6 +47,12 @@ fn a_large_mesh_opens_a_slice_per_frame_and_the_old_one_stays_meanwhile() {
     );
     let job = harness.state().pending_job();
     assert!(job.is_none());
+    // The statistics and the rule check are worked out in a frame before
+    // the mesh shows, and are the new mesh's.
+    let stats = state.stats.expect("statistics");
+    assert_eq!((stats.vertices, stats.faces), (316 * 316, 316 * 316 * 2));
+    assert_eq!((stats.euler, stats.genus), (0, vec![Some(1)]));
+    assert!(!state.diagnosis, "a sound mesh is not diagnosed");
 
     // Converting is sliced the same way, and undo gives the half-edge back.
     harness
@@ -57,7 +63,10 @@ fn a_large_mesh_opens_a_slice_per_frame_and_the_old_one_stays_meanwhile() {
     let id = harness.state().pending_job().expect("a conversion job");
     harness.run();
     assert_eq!(harness.state().job_outcome(id), Some(Ok(())));
-    assert_eq!(harness.state().state().structure, Some("winged"));
+    let state = harness.state().state();
+    assert_eq!(state.structure, Some("winged"));
+    let stats = state.stats.expect("statistics");
+    assert_eq!(stats.edges, 316 * 316 * 3, "the winged-edge mesh's edges");
     harness.state_mut().execute(Command::Undo).expect("undoes");
     assert_eq!(harness.state().state().structure, Some("half"));
 }

@@ -11,6 +11,7 @@ use super::EdgewiseApp;
 use crate::document::Document;
 use crate::history::Kind;
 use crate::view3d::{MeshGeometry, Preparation};
+use edgewise_core::mesh::{Issue, MeshStats};
 
 /// Meshes with more faces than this are prepared in slices across frames; below
 /// it, all of the work takes a few frames' time.
@@ -41,9 +42,39 @@ pub(crate) struct PendingMesh {
     document: Document,
     preparation: Preparation,
     commit: Commit,
+    /// Worked out in a frame of its own once the slices are done.
+    checked: Option<Checked>,
+}
+
+/// What a pending mesh's panels need, worked out before it is shown.
+struct Checked {
+    /// A load's broken records (a conversion's mesh is checked already).
+    broken: Option<Vec<Issue>>,
+    stats: MeshStats,
 }
 
 impl PendingMesh {
+    /// This frame's share of the work, begun at `start`: slices while they
+    /// fit in [`SLICE_BUDGET`], then the rule check and statistics in a
+    /// frame of their own. True once the mesh can be shown, which is left
+    /// to a frame that made nothing else, since that frame also draws the
+    /// new mesh whole.
+    fn advance(&mut self, start: web_time::Instant) -> bool {
+        if !self.preparation.is_done() {
+            while !self.preparation.step() && start.elapsed() < SLICE_BUDGET {}
+            return false;
+        }
+        if self.checked.is_none() {
+            let mesh = self.document.mesh();
+            self.checked = Some(Checked {
+                broken: matches!(self.commit, Commit::Open { .. }).then(|| mesh.validate()),
+                stats: mesh.live_stats(),
+            });
+            return false;
+        }
+        true
+    }
+
     /// From 0 to 1.
     pub(crate) fn progress(&self) -> f32 {
         self.preparation.progress()
@@ -85,6 +116,7 @@ impl EdgewiseApp {
             preparation: Preparation::new(geometry, tab.view.has_gpu()),
             document,
             commit,
+            checked: None,
         };
         if large {
             if let Some(replaced) = tab.pending.replace(pending) {
@@ -123,11 +155,9 @@ impl EdgewiseApp {
             let Some(pending) = &mut self.tabs[index].pending else {
                 continue;
             };
-            let mut ready = pending.preparation.step();
-            while !ready && start.elapsed() < SLICE_BUDGET {
-                ready = pending.preparation.step();
-            }
-            if ready && let Some(pending) = self.tabs[index].pending.take() {
+            if pending.advance(start)
+                && let Some(pending) = self.tabs[index].pending.take()
+            {
                 self.commit_pending(index, pending);
             }
             ctx.request_repaint();
@@ -162,7 +192,9 @@ impl EdgewiseApp {
             document,
             preparation,
             commit,
+            checked,
         } = pending;
+        let (broken, stats) = checked.map_or((None, None), |c| (c.broken, Some(c.stats)));
         let tab = &mut self.tabs[index];
         let outcome = match commit {
             Commit::Open { frame, merge } => {
@@ -171,7 +203,10 @@ impl EdgewiseApp {
                 let entry = format!("open {}", document.name);
                 let before = tab.document.replace(document);
                 tab.history.record(entry, Kind::Load, before, merge);
-                tab.rediagnose();
+                match broken {
+                    Some(broken) => tab.diagnose_with(broken),
+                    None => tab.rediagnose(),
+                }
                 tab.diagnosable = None;
                 tab.renumbering = None;
                 tab.error = None;
@@ -192,6 +227,9 @@ impl EdgewiseApp {
             }
         };
         if outcome.is_none() {
+            if let Some(stats) = stats {
+                tab.seed_stats(stats);
+            }
             tab.run.mesh_changed();
             tab.paint_key = None;
         }

@@ -127,6 +127,14 @@ impl Tab {
         cache.as_ref().map(|(_, stats)| stats.clone())
     }
 
+    /// Fills [`Self::stats`]'s cache for the shown mesh with statistics
+    /// worked out beforehand (a large mesh's, in a frame before it shows).
+    pub(crate) fn seed_stats(&mut self, stats: MeshStats) {
+        if let Some(document) = &self.document {
+            *self.stats.borrow_mut() = Some((document.mesh_id(), stats));
+        }
+    }
+
     /// `mesh` (the document's, or the one before a trace) as polygons, when
     /// building from them gives back exactly its tables, so a link can
     /// carry them instead of the tables; worked out once per mesh.
@@ -186,11 +194,18 @@ impl Tab {
     /// Checks every rule of the mesh after it changed by hand: diagnosis
     /// lasts while any record breaks one.
     pub(crate) fn rediagnose(&mut self) {
-        self.broken = self
+        let broken = self
             .document
             .as_ref()
             .map(|d| d.mesh().validate())
             .unwrap_or_default();
+        self.diagnose_with(broken);
+    }
+
+    /// [`Self::rediagnose`] with the rules already checked: `broken` are
+    /// the current mesh's broken records.
+    pub(crate) fn diagnose_with(&mut self, broken: Vec<Issue>) {
+        self.broken = broken;
         let was = std::mem::replace(&mut self.diagnosis, !self.broken.is_empty());
         if was && !self.diagnosis {
             log::info!("the tables validate: diagnosis is over");
