@@ -434,13 +434,13 @@ fn encode_bytes(bytes: &[u8]) -> String {
 /// Reverses [`encode_payload`] within the size limits; `name` is the
 /// fragment parameter, for the message.
 pub fn decode_payload(name: &str, payload: &str) -> Result<String, String> {
-    let bytes = decode_bytes(name, payload)?;
+    let bytes = decode_bytes(name, "text", payload)?;
     String::from_utf8(bytes).map_err(|_| format!("#{name}: the uncompressed text is not UTF-8"))
 }
 
 /// `#poly=`'s polygons, refused with the place where they go wrong.
 fn decode_polygons(payload: &str) -> Result<Polygons, String> {
-    let bytes = decode_bytes("poly", payload)?;
+    let bytes = decode_bytes("poly", "polygons", payload)?;
     compact::decode(&bytes).map_err(|err| {
         format!(
             "#poly: the polygons are damaged ({err}); the link may have been changed or cut \
@@ -449,11 +449,12 @@ fn decode_polygons(payload: &str) -> Result<Polygons, String> {
     })
 }
 
-/// Reverses [`encode_bytes`] within the size limits.
-fn decode_bytes(name: &str, payload: &str) -> Result<Vec<u8>, String> {
+/// Reverses [`encode_bytes`] within the size limits; `what` the payload
+/// holds ("text", "polygons"), for the message.
+fn decode_bytes(name: &str, what: &str, payload: &str) -> Result<Vec<u8>, String> {
     if payload.is_empty() {
         return Err(format!(
-            "#{name}= is empty; expected compressed text, as the Share dialog writes it"
+            "#{name}= is empty; expected compressed {what}, as the Share dialog writes it"
         ));
     }
     if payload.len() > MAX_PAYLOAD_CHARS {
