@@ -75,9 +75,11 @@ impl PendingMesh {
         true
     }
 
-    /// From 0 to 1.
+    /// From 0 to 1: the slices, then the checks as one step more.
     pub(crate) fn progress(&self) -> f32 {
-        self.preparation.progress()
+        let slices = Preparation::SLICES as f32;
+        let checked = if self.checked.is_some() { 1.0 } else { 0.0 };
+        (self.preparation.progress() * slices + checked) / (slices + 1.0)
     }
 }
 
