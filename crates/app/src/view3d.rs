@@ -351,7 +351,7 @@ impl Preparation {
             _ => {}
         }
         self.done = (self.done + 1).min(Self::SLICES);
-        self.done == Self::SLICES
+        self.is_done()
     }
 
     /// Whether every slice is made.
