@@ -236,10 +236,22 @@ pub struct ViewOptions {
     /// frame, to compare the two.
     #[serde(skip, default = "on")]
     pub base_image: bool,
+    /// How many lines and triangles a frame draws of a new mesh's base
+    /// image (see `base_image.rs`).
+    #[serde(skip, default = "base_image_part")]
+    pub base_image_part: u32,
 }
 
 fn on() -> bool {
     true
+}
+
+/// About 55 ms of drawing a frame under `SwiftShader`: torus-200k's 300k
+/// lines and 200k triangles take four frames.
+const BASE_IMAGE_PART: u32 = 100_000;
+
+fn base_image_part() -> u32 {
+    BASE_IMAGE_PART
 }
 
 impl Default for ViewOptions {
@@ -256,6 +268,7 @@ impl Default for ViewOptions {
             boundary: None,
             backdrop_cleared: false,
             base_image: true,
+            base_image_part: BASE_IMAGE_PART,
         }
     }
 }
@@ -972,6 +985,7 @@ impl View3d {
                 solid_faces: options.solid_faces,
                 coarse: self.coarse,
                 base_image: options.base_image,
+                base_image_part: options.base_image_part,
             },
             uploaded: gpu.uploaded.clone(),
             // As `egui_wgpu` rounds the callback's rect to pixels.
@@ -979,6 +993,7 @@ impl View3d {
                 pixel_span(rect.min.x, rect.max.x, pixels_per_point),
                 pixel_span(rect.min.y, rect.max.y, pixels_per_point),
             ],
+            repaint: painter.ctx().clone(),
         };
         painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
     }

@@ -427,21 +427,47 @@ fn a_dense_mesh_far_away_is_drawn_coarse_with_its_highlights_in_full() {
         .count();
     assert!(drawn > 2000, "only {drawn} sampled pixels drawn");
 
-    view.set_camera(Camera {
+    // A selection moving while coarse patches styles that full detail has
+    // not drawn yet; they are written with the arrows when it first does.
+    // The new highlights lie in the close-up below.
+    let close_camera = Camera {
         target: [1.35, 0.0, 0.0],
         yaw: 1.2,
         pitch: 0.3,
         distance: 0.4,
-    });
+    };
+    let mut direct_view = View3d::new(Some(&rs));
+    direct_view.set_geometry(geometry.clone(), false);
+    direct_view.set_camera(close_camera);
+    harness.show(&mut direct_view, &styles, &options, Vec::new());
+    let middle = Rect::from_center_size(harness.screen().center(), Vec2::splat(200.0));
+    let in_close_up = |kind, count: usize| {
+        (0..u32::try_from(count).unwrap_or(u32::MAX))
+            .find(|&id| {
+                direct_view
+                    .screen_position(ElementRef::new(kind, id))
+                    .is_some_and(|at| middle.contains(at))
+            })
+            .expect("an element in the close-up")
+    };
+    let edge = in_close_up(ElementKind::Edge, geometry.edges.len());
+    let face = in_close_up(ElementKind::Face, geometry.faces.len());
+    styles.generation += 1;
+    styles
+        .elements
+        .remove(&ElementRef::new(ElementKind::Edge, 0));
+    entry(&mut styles, ElementKind::Edge, edge).colour = Some(YELLOW);
+    entry(&mut styles, ElementKind::Face, face).colour = Some(LIGHT_BLUE);
+    harness.show(&mut view, &styles, &options, Vec::new());
+    assert!(view.styles_patched() && view.coarse());
+
+    view.set_camera(close_camera);
     let (close, _) = harness.show(&mut view, &styles, &options, Vec::new());
     close.save("torus_80k_close.png");
     assert!(!view.coarse(), "close up, arrows and spheres return");
 
-    // The arrows, spheres and faces, uploaded only now, draw what a view
-    // that was never coarse draws.
-    let mut direct_view = View3d::new(Some(&rs));
-    direct_view.set_geometry(geometry.clone(), false);
-    direct_view.set_camera(view.camera());
+    // The arrows, spheres and faces, uploaded only now with their styles,
+    // draw what a view that was never coarse draws.
     let (direct, _) = harness.show(&mut direct_view, &styles, &options, Vec::new());
     assert!(!direct_view.coarse());
     assert!(
@@ -619,4 +645,81 @@ fn the_coarse_base_image_draws_what_drawing_directly_does() {
     };
     harness.show(&mut view, &stepped, &solid, Vec::new());
     assert_eq!(view.base_image_counts(), Some([2, 6]), "solid faces hide");
+}
+
+/// A new mesh's base image is drawn a part a frame, each frame asking for
+/// the next, and the parts make the picture drawing it whole does; a turn
+/// of the camera then draws it whole at once.
+#[test]
+fn a_new_mesh_s_base_image_is_drawn_in_parts_that_make_the_whole() {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [480, 360]);
+    // 43,200 lines and 28,800 triangles: eight parts of 10,000.
+    let geometry = geometry(&generate::torus(120, 120), Structure::HalfEdge);
+    let styles = styles_for(&geometry);
+    let by_parts = ViewOptions {
+        base_image_part: 10_000,
+        ..ViewOptions::default()
+    };
+    let whole = ViewOptions {
+        base_image_part: u32::MAX,
+        ..ViewOptions::default()
+    };
+    let mut reference = View3d::new(Some(&rs));
+    reference.set_geometry(geometry.clone(), true);
+    let first = harness.frame(Vec::new(), |ui| {
+        reference.ui(ui, &styles, &whole);
+    });
+    assert!(reference.coarse());
+    assert_eq!(reference.base_image_counts(), Some([1, 1]), "drawn at once");
+
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry, true);
+    let mut pictures = Vec::new();
+    let mut asked_again = Vec::new();
+    while view
+        .base_image_counts()
+        .is_some_and(|[drawn, _]| drawn == 0)
+        && pictures.len() < 20
+    {
+        pictures.push(harness.frame(Vec::new(), |ui| {
+            view.ui(ui, &styles, &by_parts);
+        }));
+        asked_again.push(harness.ctx.has_requested_repaint());
+    }
+    // The first frame uploads the mesh and draws none of it.
+    assert_eq!(pictures.len(), 9, "a frame, then eight draw the image");
+    assert_eq!(view.base_image_counts(), Some([1, 9]), "each copies it");
+    assert!(
+        asked_again[..8].iter().all(|asked| *asked),
+        "each part asks for the next frame: {asked_again:?}"
+    );
+    let [empty, partial, .., last] = pictures.as_slice() else {
+        unreachable!("nine pictures");
+    };
+    assert_ne!(
+        empty.pixels, partial.pixels,
+        "the second frame draws a part"
+    );
+    assert_ne!(partial.pixels, last.pixels, "and only a part");
+    if last.pixels != first.pixels {
+        last.save("base_image_parts.png");
+        first.save("base_image_whole.png");
+    }
+    assert!(
+        last.pixels == first.pixels,
+        "the parts make the whole, pixel for pixel"
+    );
+
+    // The same mesh seen from elsewhere is drawn whole, in one frame.
+    let mut camera = view.camera();
+    camera.yaw += 0.3;
+    view.set_camera(camera);
+    harness.frame(Vec::new(), |ui| {
+        view.ui(ui, &styles, &by_parts);
+    });
+    assert_eq!(view.base_image_counts(), Some([2, 10]));
 }

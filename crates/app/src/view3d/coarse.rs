@@ -11,6 +11,8 @@
 //! step never touches these buffers. Highlighted elements are drawn again
 //! in full on top (see `StyleUpload::full_*`).
 
+use std::ops::Range;
+
 use super::gpu::{IndexData, PipelineFactory, PipelineSpec, VertexData};
 use super::scene::Scene;
 
@@ -19,6 +21,9 @@ const SHADER: &str = concat!(
     include_str!("shaders/faces.wgsl"),
     include_str!("shaders/coarse.wgsl")
 );
+
+/// Every index of a buffer.
+const ALL: Range<u32> = 0..u32::MAX;
 
 /// The coarse geometry: the mesh's vertices, one line per edge (a half-edge
 /// and its pair share one), and the faces' triangles.
@@ -116,7 +121,7 @@ impl CoarseRenderer {
     }
 
     pub fn draw_lines(&self, pass: &mut wgpu::RenderPass<'static>, buffers: &CoarseBuffers) {
-        Self::draw(pass, &self.lines, buffers, buffers.lines.as_ref());
+        Self::draw(pass, &self.lines, buffers, buffers.lines.as_ref(), ALL);
     }
 
     pub fn draw_faces(
@@ -130,25 +135,51 @@ impl CoarseRenderer {
         } else {
             &self.transparent_faces
         };
-        Self::draw(pass, pipeline, buffers, buffers.triangles.as_ref());
+        Self::draw(pass, pipeline, buffers, buffers.triangles.as_ref(), ALL);
     }
 
+    /// Draws `part` of the lines-then-see-through-faces sequence that
+    /// [`CoarseBuffers::primitive_count`] counts: drawn part by part in
+    /// order, it gives what drawing the lines and then the faces does.
+    pub fn draw_part(
+        &self,
+        pass: &mut wgpu::RenderPass<'static>,
+        buffers: &CoarseBuffers,
+        part: Range<u32>,
+    ) {
+        let lines = buffers.line_count();
+        let in_lines = part.start.min(lines)..part.end.min(lines);
+        let in_faces = part.start.max(lines) - lines..part.end.max(lines) - lines;
+        if !in_lines.is_empty() {
+            let indices = in_lines.start * 2..in_lines.end * 2;
+            Self::draw(pass, &self.lines, buffers, buffers.lines.as_ref(), indices);
+        }
+        if !in_faces.is_empty() {
+            let indices = in_faces.start * 3..in_faces.end * 3;
+            let triangles = buffers.triangles.as_ref();
+            Self::draw(pass, &self.transparent_faces, buffers, triangles, indices);
+        }
+    }
+
+    /// Draws the indices in `range` (cut to those there are).
     fn draw(
         pass: &mut wgpu::RenderPass<'static>,
         pipeline: &wgpu::RenderPipeline,
         buffers: &CoarseBuffers,
         indices: Option<&IndexData>,
+        range: Range<u32>,
     ) {
         let (Some(positions), Some(indices)) = (&buffers.positions, indices) else {
             return;
         };
-        if positions.count == 0 || indices.count == 0 {
+        let (start, end) = (range.start, range.end.min(indices.count));
+        if positions.count == 0 || start >= end {
             return;
         }
         pass.set_pipeline(pipeline);
         pass.set_vertex_buffer(0, positions.buffer.slice(..));
         pass.set_index_buffer(indices.buffer.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..indices.count, 0, 0..1);
+        pass.draw_indexed(start..end, 0, 0..1);
     }
 }
 
@@ -161,6 +192,17 @@ pub struct CoarseBuffers {
 }
 
 impl CoarseBuffers {
+    fn line_count(&self) -> u32 {
+        self.lines.as_ref().map_or(0, |l| l.count / 2)
+    }
+
+    /// How many lines and triangles there are, in the order
+    /// [`CoarseRenderer::draw_part`] draws them.
+    pub fn primitive_count(&self) -> u32 {
+        let triangles = self.triangles.as_ref().map_or(0, |t| t.count / 3);
+        self.line_count().saturating_add(triangles)
+    }
+
     /// Replaces the buffers with a new mesh's.
     pub fn replace(&mut self, device: &wgpu::Device, geometry: &CoarseGeometry) {
         self.positions = Some(VertexData::new(

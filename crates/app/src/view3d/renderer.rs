@@ -9,7 +9,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use eframe::egui_wgpu::{CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
 
 use super::arrows::{ArrowBuffers, ArrowInstance, ArrowRenderer};
-use super::base_image::{BaseImage, BaseImageRenderer, BaseKey};
+use super::base_image::{self, BaseImage, BaseImageRenderer, BaseKey};
 use super::coarse::{CoarseBuffers, CoarseGeometry, CoarseRenderer};
 use super::faces::{FaceBuffers, FaceRenderer};
 use super::gpu::{
@@ -80,6 +80,16 @@ pub struct StyleUpload {
     pub full_faces: (Vec<[f32; 3]>, Vec<StyleVertex>),
 }
 
+impl StyleUpload {
+    /// Writes the styles of the arrows, spheres and faces drawn in full
+    /// detail.
+    fn write_detail(&self, view: &mut ViewBuffers, device: &wgpu::Device, queue: &wgpu::Queue) {
+        self.vertices.write(&mut view.spheres, device, queue);
+        self.edges.write(&mut view.arrows, device, queue);
+        self.faces.write(&mut view.faces, device, queue);
+    }
+}
+
 /// Tells the view which uploads the GPU side has taken, so it can drop its
 /// CPU copies.
 #[derive(Default)]
@@ -103,6 +113,9 @@ pub struct DrawFlags {
     pub coarse: bool,
     /// The coarse level of detail may be copied from its base image.
     pub base_image: bool,
+    /// How many lines and triangles a frame draws of a new mesh's base
+    /// image.
+    pub base_image_part: u32,
 }
 
 /// Every drawable's renderer, shared by all views, and each view's buffers;
@@ -162,7 +175,7 @@ struct ViewBuffers {
     spheres: SphereBuffers,
     arrows: ArrowBuffers,
     faces: FaceBuffers,
-    marks: OrientationBuffers,
+    mark_buffers: OrientationBuffers,
     axes: ArrowBuffers,
     full_spheres: SphereBuffers,
     full_arrows: ArrowBuffers,
@@ -172,6 +185,11 @@ struct ViewBuffers {
     /// only full detail draws them, so a dense mesh seen from afar uploads
     /// them when first drawn so (most of torus-200k's 39 MB).
     detail: Option<Arc<GeometryUpload>>,
+    /// The style uploads for those arrows, spheres and faces since they
+    /// were last written whole, kept with them and written after them.
+    detail_styles: Vec<Arc<StyleUpload>>,
+    /// The orientation marks not yet uploaded, likewise until first shown.
+    marks: Option<Arc<GeometryUpload>>,
     base_image: BaseImage,
     /// The frame uniform the base image is drawn with: unfaded.
     base_image_frame: FrameBindGroup,
@@ -186,13 +204,15 @@ impl ViewBuffers {
             spheres: SphereBuffers::new("view3d spheres", "view3d vertex styles"),
             arrows: ArrowBuffers::new("view3d arrows", "view3d edge styles"),
             faces: FaceBuffers::new("view3d faces", "view3d face styles"),
-            marks: OrientationBuffers::default(),
+            mark_buffers: OrientationBuffers::default(),
             axes: ArrowBuffers::new("view3d axes", "view3d axes styles"),
             full_spheres: SphereBuffers::new("view3d full spheres", "view3d full sphere styles"),
             full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
             detail: None,
+            detail_styles: Vec::new(),
+            marks: None,
             base_image: BaseImage::default(),
             base_image_frame: FrameBindGroup::new(device, frame_layout),
         }
@@ -214,6 +234,8 @@ pub struct ViewCallback {
     pub uploaded: Arc<UploadState>,
     /// The view's size in pixels, as `egui_wgpu` sets the viewport.
     pub viewport_px: [u32; 2],
+    /// Asked for another frame while the base image is drawn in parts.
+    pub repaint: egui::Context,
 }
 
 impl ViewCallback {
@@ -263,11 +285,16 @@ impl CallbackTrait for ViewCallback {
         if let Some(geometry) = &self.geometry
             && geometry.id != view.geometry_id
         {
-            view.marks.replace_marks(device, &geometry.marks);
             view.coarse.replace(device, &geometry.coarse);
             view.detail = Some(Arc::clone(geometry));
+            view.marks = Some(Arc::clone(geometry));
             view.geometry_id = geometry.id;
             self.uploaded.geometry.store(geometry.id, Ordering::Release);
+        }
+        if self.flags.orientation
+            && let Some(geometry) = view.marks.take()
+        {
+            view.mark_buffers.replace_marks(device, &geometry.marks);
         }
         if !self.flags.coarse
             && let Some(geometry) = view.detail.take()
@@ -275,6 +302,9 @@ impl CallbackTrait for ViewCallback {
             view.spheres.replace_elements(device, &geometry.spheres);
             view.arrows.replace_elements(device, &geometry.arrows);
             view.faces.replace_elements(device, &geometry.faces);
+            for styles in std::mem::take(&mut view.detail_styles) {
+                styles.write_detail(view, device, queue);
+            }
         }
         // Patches apply only over the styles they were made against (the
         // view sends everything when it cannot know which those are).
@@ -282,9 +312,14 @@ impl CallbackTrait for ViewCallback {
             && styles.id != view.styles_id
             && styles.patches.is_none_or(|base| base == view.styles_id)
         {
-            styles.vertices.write(&mut view.spheres, device, queue);
-            styles.edges.write(&mut view.arrows, device, queue);
-            styles.faces.write(&mut view.faces, device, queue);
+            if view.detail.is_some() {
+                if styles.patches.is_none() {
+                    view.detail_styles.clear();
+                }
+                view.detail_styles.push(Arc::clone(styles));
+            } else {
+                styles.write_detail(view, device, queue);
+            }
             view.full_spheres
                 .replace(device, queue, &styles.full_spheres);
             view.full_arrows.replace(device, queue, &styles.full_arrows);
@@ -306,18 +341,27 @@ impl CallbackTrait for ViewCallback {
         {
             let coarse = &renderers.coarse;
             let (frame_group, buffers) = (&view.base_image_frame, &view.coarse);
-            let drawn =
-                view.base_image
-                    .update(device, egui_encoder, &renderers.base_image, key, |pass| {
-                        frame_group.write(queue, &key.frame);
-                        frame_group.bind(pass);
-                        coarse.draw_lines(pass, buffers);
-                        coarse.draw_faces(pass, buffers, false);
-                    });
-            if drawn {
-                self.uploaded
-                    .base_image_drawn
-                    .fetch_add(1, Ordering::Relaxed);
+            let update = view.base_image.update(
+                device,
+                egui_encoder,
+                &renderers.base_image,
+                key,
+                buffers.primitive_count(),
+                self.flags.base_image_part,
+                |pass, part| {
+                    frame_group.write(queue, &key.frame);
+                    frame_group.bind(pass);
+                    coarse.draw_part(pass, buffers, part);
+                },
+            );
+            match update {
+                base_image::Update::Kept => {}
+                base_image::Update::Part => self.repaint.request_repaint(),
+                base_image::Update::Finished => {
+                    self.uploaded
+                        .base_image_drawn
+                        .fetch_add(1, Ordering::Relaxed);
+                }
             }
         }
         Vec::new()
@@ -371,7 +415,7 @@ impl CallbackTrait for ViewCallback {
             renderers.arrows.draw(pass, &view.axes);
         }
         if self.flags.orientation {
-            renderers.orientation.draw(pass, &view.marks);
+            renderers.orientation.draw(pass, &view.mark_buffers);
         }
         // Faces last: see-through ones test depth against everything opaque
         // without hiding what is behind them.
