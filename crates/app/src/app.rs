@@ -88,7 +88,7 @@ pub struct EdgewiseApp {
     /// This frame's panels, for "What am I looking at?".
     screen_parts: Vec<first_visit::Part>,
     /// What the screen readers' copy was last built for.
-    reader_key: readers::ReaderKey,
+    reader_copy: readers::ReaderCopy,
     embed_observed: embed_events::Observed,
     /// Height of the panels above and below the view this frame, for the
     /// height an embedding page is asked for.
@@ -167,7 +167,7 @@ impl EdgewiseApp {
             explaining: false,
             explain_shown_once: false,
             screen_parts: Vec::new(),
-            reader_key: None,
+            reader_copy: readers::ReaderCopy::default(),
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
             embed_events: Vec::new(),

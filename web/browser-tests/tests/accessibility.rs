@@ -77,6 +77,29 @@ async fn the_accessibility_tree_holds_the_tables_and_announces_steps() -> anyhow
     // The live region (role status) reads out the message line.
     assert!(has(&nodes, "status", ""), "a live region");
 
+    // Another selection changes only the role cells that change (half-edge
+    // 3 is now the successor): the tables stay
+    // the same nodes (rebuilt, 900 rows cost Chromium about 0.1 s).
+    let moved = browser
+        .eval_async(
+            "(async () => { \
+               const tables = document.getElementById('edgewise_a11y_tables'); \
+               tables.querySelector('table').__kept = true; \
+               await window.edgewise.select('edge', 5); \
+               await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))); \
+               const role = (id) => document.getElementById('edgewise_a11y_role_' + id).textContent; \
+               return [tables.querySelector('table').__kept === true, role('e3'), role('e5')]; \
+             })()",
+        )
+        .await?;
+    assert_eq!(
+        moved,
+        serde_json::json!([true, "successor edge", "selected"]),
+        "{moved}"
+    );
+    let nodes = ax_nodes_with(&browser, "StaticText", "Half-edge 5 selected").await?;
+    assert!(has(&nodes, "cell", "selected"), "the new row says so");
+
     // A trace: each step's message replaces the live region's text.
     browser
         .eval_async("window.edgewise.run('vertexAdjacentEdge', { v: 1 }).then(() => window.edgewise.step(1))")

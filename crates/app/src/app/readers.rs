@@ -1,15 +1,22 @@
 //! Keeps the page's copy for screen readers ([`crate::accessible`]) in step
-//! with the app: rebuilt when the mesh, the selection or the step changes.
+//! with the app: rebuilt when the mesh changes, and only the role cells
+//! that change when the selection or the step does.
+
+use std::collections::BTreeMap;
+
+use edgewise_core::schema::ElementRef;
 
 use super::EdgewiseApp;
 use crate::{accessible, platform};
 
-/// What the copy was last built for: mesh id, selection and trace step.
-pub(crate) type ReaderKey = Option<(
-    u64,
-    Option<edgewise_core::schema::ElementRef>,
-    Option<usize>,
-)>;
+/// What the page's copy was last built for.
+#[derive(Default)]
+pub(crate) struct ReaderCopy {
+    /// Mesh id, selection and trace step.
+    key: Option<(u64, Option<ElementRef>, Option<usize>)>,
+    /// The role cells' words.
+    roles: BTreeMap<ElementRef, String>,
+}
 
 impl EdgewiseApp {
     pub(super) fn mirror_for_readers(&mut self) {
@@ -24,16 +31,26 @@ impl EdgewiseApp {
                 tab.run.session().map(crate::algorithm::TraceSession::step),
             )
         });
-        if key == self.reader_key {
+        if key == self.reader_copy.key {
             return;
         }
-        self.reader_key = key;
-        let tables = self
-            .tab()
-            .document
-            .as_ref()
-            .map(|document| accessible::tables_html(document.mesh(), &self.state().highlights));
+        let same_mesh =
+            matches!((key, self.reader_copy.key), (Some(now), Some(before)) if now.0 == before.0);
+        self.reader_copy.key = key;
         let message = self.message_text(None);
-        platform::show_to_readers(tables.as_deref(), message.as_deref());
+        let highlights = &self.state().highlights;
+        let roles = accessible::role_words(highlights);
+        if same_mesh {
+            let changes = accessible::role_changes(&self.reader_copy.roles, &roles);
+            platform::change_for_readers(&changes, message.as_deref());
+        } else {
+            let tables = self
+                .tab()
+                .document
+                .as_ref()
+                .map(|document| accessible::tables_html(document.mesh(), highlights));
+            platform::show_to_readers(tables.as_deref(), message.as_deref());
+        }
+        self.reader_copy.roles = roles;
     }
 }

@@ -299,3 +299,20 @@ pub fn show_to_readers(tables: Option<&str>, message: Option<&str>) {
         element.set_text_content(message);
     }
 }
+
+/// Changes the words of some role cells of the page's copy for screen
+/// readers (by HTML id, from [`crate::accessible::role_changes`]) and its
+/// message.
+pub fn change_for_readers(cells: &[(String, String)], message: Option<&str>) {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    for (id, words) in cells {
+        if let Some(cell) = document.get_element_by_id(id) {
+            cell.set_text_content(Some(words));
+        }
+    }
+    if let Some(element) = document.get_element_by_id("edgewise_a11y_live") {
+        element.set_text_content(message);
+    }
+}

@@ -128,3 +128,5 @@ pub fn deliver_events(_events: &mut Vec<crate::app::embed_events::EmbedEvent>) {
 pub const READER_COPY: bool = false;
 
 pub fn show_to_readers(_tables: Option<&str>, _message: Option<&str>) {}
+
+pub fn change_for_readers(_cells: &[(String, String)], _message: Option<&str>) {}
