@@ -19,8 +19,11 @@ pub(crate) const LARGE_FACES: usize = 50_000;
 
 /// A frame makes slices until it has spent this long on them, so a fast
 /// machine shows a large mesh in a frame or two and a slow one keeps
-/// painting between slices.
-const SLICE_BUDGET: std::time::Duration = std::time::Duration::from_millis(100);
+/// painting between slices. The last slice a frame starts may run past it
+/// (torus-200k's largest takes about 60 ms in Chromium), and a frame under
+/// `SwiftShader` costs up to 100 ms more, so this keeps every frame well
+/// inside the quarter second a page may freeze.
+const SLICE_BUDGET: std::time::Duration = std::time::Duration::from_millis(40);
 
 /// How many finished jobs are remembered for the JavaScript API to collect.
 const JOBS_REMEMBERED: usize = 16;
