@@ -19,34 +19,60 @@ use serde_json::{Value, json};
 /// How long each orbit is measured.
 const ORBIT_SECONDS: f64 = 4.0;
 
-/// Installed before any page script: when `window.edgewise` appears, and
-/// the time of every animation frame, so the longest gap between two (the
-/// page frozen) can be found for any interval.
+/// Installed before any page script: when `window.edgewise` appears, the
+/// time of every animation frame, so the longest gap between two (the page
+/// frozen) can be found for any interval, and every long task (over 50 ms)
+/// on the main thread.
 const PROBE: &str = "
-  window.__bench = { readyAt: null, frameTimes: [] };
+  window.__bench = { readyAt: null, frameTimes: [], longTasks: [] };
   const poll = setInterval(() => {
     if (window.edgewise) { window.__bench.readyAt = performance.now(); clearInterval(poll); }
   }, 5);
   const tick = (t) => { window.__bench.frameTimes.push(t); requestAnimationFrame(tick); };
   requestAnimationFrame(tick);
+  new PerformanceObserver((list) => {
+    for (const task of list.getEntries()) window.__bench.longTasks.push([task.startTime, task.duration]);
+  }).observe({ type: 'longtask' });
 ";
 
-/// Times an awaited API call in the page, up to the next painted frame,
-/// in milliseconds; also the longest time meanwhile that the page painted
-/// no frame (the longest freeze).
+/// Times an awaited API call in the page up to the next painted frame, in
+/// milliseconds; then waits for the app's last frame of it (a large mesh
+/// goes on drawing for some frames after its promise settles) and gives
+/// the longest time meanwhile that the page painted no frame (the longest
+/// freeze), the longest task, and the time to that last frame.
 fn timed(call: &str) -> String {
     format!(
         "(async () => {{
            const start = performance.now();
            await {call};
            await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-           const end = performance.now();
+           const shown = performance.now();
+           const frames = () => window.edgewise.state().frames;
+           let seen = frames(), end = shown, quiet = 0;
+           while (quiet < 3 && performance.now() - start < 10000) {{
+             await new Promise((r) => requestAnimationFrame(r));
+             const now = frames();
+             if (now !== seen) {{ seen = now; end = performance.now(); quiet = 0; }} else quiet += 1;
+           }}
            const times = [start, ...window.__bench.frameTimes.filter((t) => t > start && t <= end), end];
            let longest = 0;
            for (let i = 1; i < times.length; i++) longest = Math.max(longest, times[i] - times[i - 1]);
+           const tasks = window.__bench.longTasks.filter(([t]) => t >= start - 1 && t <= end);
+           const longestTask = Math.max(0, ...tasks.map(([, d]) => d));
            window.__bench.frameTimes = [];
-           return [end - start, longest];
+           window.__bench.longTasks = [];
+           return [shown - start, longest, longestTask, end - start];
          }})()"
+    )
+}
+
+/// The note of a [`timed`] call: its longest freeze and longest task.
+fn freezes(timed: &Value) -> String {
+    format!(
+        "longest freeze {}, longest task {}; last frame at {}",
+        ms(&timed[1]),
+        ms(&timed[2]),
+        ms(&timed[3])
     )
 }
 
@@ -226,7 +252,7 @@ async fn main() -> anyhow::Result<()> {
                 "torus-200k: load (half-edge)",
                 ms(&loaded[0]),
                 "",
-                format!("longest freeze {}", ms(&loaded[1])),
+                freezes(&loaded),
             ));
         }
         let orbited = app.eval_async(&orbit(ORBIT_SECONDS)).await?;
@@ -276,12 +302,7 @@ async fn main() -> anyhow::Result<()> {
         ("torus-200k: another step", "window.edgewise.step(1)"),
     ] {
         let taken = app.eval_async(&timed(call)).await?;
-        rows.push(row(
-            what,
-            ms(&taken[0]),
-            "",
-            format!("longest freeze {}", ms(&taken[1])),
-        ));
+        rows.push(row(what, ms(&taken[0]), "", freezes(&taken)));
     }
     app.close().await?;
 
