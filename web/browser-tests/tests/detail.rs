@@ -1,7 +1,8 @@
 //! The level of detail in the browser: icosphere-20k seen whole, its edges
 //! a few pixels long, is drawn coarse (edges as lines, no vertex spheres,
-//! the selection in full); the cube in full. (Zooming across the switch is
-//! covered by the render test `a_dense_mesh_far_away_is_drawn_coarse_…`.)
+//! the selection in full); the cube in full; torus-200k, new, draws its
+//! base image a part a frame. (Zooming across the switch is covered by the
+//! render test `a_dense_mesh_far_away_is_drawn_coarse_…`.)
 
 use std::time::Duration;
 
@@ -79,6 +80,75 @@ async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyho
         "the cube in full"
     );
     browser.screenshot("detail-cube-full").await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+/// A large new mesh draws its base image a part a frame, from the frame
+/// after the one that shows it: the page paints between the parts, each
+/// shows more of the mesh, and the last makes the image that is then kept.
+#[tokio::test]
+async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(Duration::from_secs(180)).await?;
+    browser.open("").await?;
+    browser
+        .eval_async("window.edgewise.loadSample('cube', { structure: 'half' })")
+        .await?;
+    settle(&browser).await?;
+    let [drawn, copied] = base_image(&browser).await?;
+    let in_parts = browser
+        .canvas_when(
+            "window.edgewise.loadSample('torus-200k', { structure: 'half' });",
+            &format!(
+                "(() => {{ const s = window.edgewise.state(); \
+                 return s.mesh === 'torus-200k' && s.baseImage[0] === {drawn} \
+                 && s.baseImage[1] >= {copied} + 2; }})()"
+            ),
+            "detail-torus-in-parts",
+        )
+        .await?;
+    browser
+        .wait_for(
+            &format!("window.edgewise.state().baseImage[0] === {drawn} + 1"),
+            Duration::from_secs(60),
+        )
+        .await?;
+    let [_, copied_when_drawn] = base_image(&browser).await?;
+    assert!(
+        copied_when_drawn >= copied + 4,
+        "the part drawn so far was shown in {} frames",
+        copied_when_drawn - copied
+    );
+    settle(&browser).await?;
+    // Read in a frame the app draws (a selection's), as the canvas keeps
+    // no picture between frames.
+    let whole = browser
+        .canvas_when(
+            "window.edgewise.select('vertex', 0);",
+            "window.edgewise.state().selection !== null",
+            "detail-torus-whole",
+        )
+        .await?;
+    // The torus lies round the view's middle, left of the welcome card:
+    // count the pixels drawn there.
+    let backdrop = whole.pixel(5, 300);
+    let drawn_in = |shot: &edgewise_browser_tests::Screenshot| {
+        (60..320)
+            .flat_map(|y| (450..850).map(move |x| (x, y)))
+            .filter(|&(x, y)| {
+                let pixel = shot.pixel(x, y);
+                (0..3).any(|c| pixel[c].abs_diff(backdrop[c]) > 2)
+            })
+            .count()
+    };
+    let (partly, wholly) = (drawn_in(&in_parts), drawn_in(&whole));
+    assert!(
+        partly > 1_000 && partly * 10 < wholly * 9,
+        "the first part draws some of the torus ({partly} pixels), the whole more ({wholly})"
+    );
+    let [drawn_after, _] = base_image(&browser).await?;
+    assert_eq!(drawn_after, drawn + 1, "then kept");
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
