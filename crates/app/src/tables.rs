@@ -97,6 +97,9 @@ pub fn table_ui(
     headers.push("labels");
     derived.push(false);
     let rows = mesh.count(kind);
+    let drawn_id = ui.make_persistent_id(("edgewise drawn rows", kind));
+    let drawn = ui.data(|d| d.get_temp::<DrawnRows>(drawn_id));
+    let pitch = ROW_HEIGHT + ui.spacing().item_spacing.y;
 
     let mut table = TableBuilder::new(ui)
         .id_salt(kind)
@@ -110,8 +113,18 @@ pub fn table_ui(
         .animate_scrolling(false)
         .cell_layout(egui::Layout::left_to_right(egui::Align::Center));
     if let Some(row) = scroll_to {
-        table = table.scroll_to_row(row as usize, None);
+        table = match drawn.map(|d| d.jump_to(row as usize, rows, pitch)) {
+            Some(Jump::Stay) => table,
+            Some(Jump::Offset(offset)) => table.vertical_scroll_offset(offset),
+            Some(Jump::AfterLayout) | None => table.scroll_to_row(row as usize, None),
+        };
     }
+    let mut drawn_now = DrawnRows {
+        first: usize::MAX,
+        last: 0,
+        height: 0.0,
+        rows,
+    };
     for (i, _) in headers.iter().enumerate() {
         table = table.column(if i + 1 == headers.len() {
             egui_extras::Column::remainder().at_least(60.0)
@@ -129,11 +142,14 @@ pub fn table_ui(
             }
         })
         .body(|mut body| {
+            drawn_now.height = body.ui_mut().clip_rect().height();
             let editing = body
                 .ui_mut()
                 .data(|d| d.get_temp::<CellEdit>(cell_edit_id()))
                 .and_then(|edit| edit.cell);
             body.rows(ROW_HEIGHT, rows, |mut row| {
+                drawn_now.first = drawn_now.first.min(row.index());
+                drawn_now.last = drawn_now.last.max(row.index());
                 let id = row.index() as u32;
                 let element = ElementRef { kind, id };
                 let row_colour = paint.colour_of(element);
@@ -258,6 +274,53 @@ pub fn table_ui(
                 }
             });
         });
+    if drawn_now.first <= drawn_now.last {
+        ui.data_mut(|d| d.insert_temp(drawn_id, drawn_now));
+    }
+}
+
+/// The rows a table drew last frame, and the height it showed them in. A
+/// row to show is scrolled to with an offset set before the rows are laid
+/// out, so it shows in the same frame: `egui_extras`'s `scroll_to_row`
+/// scrolls after them, and the row appears a frame (a whole repaint) later.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct DrawnRows {
+    first: usize,
+    last: usize,
+    height: f32,
+    /// The table's rows then.
+    rows: usize,
+}
+
+/// How a table brings a row into view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Jump {
+    /// It was drawn whole last frame.
+    Stay,
+    /// To this scroll offset, which centres it.
+    Offset(f32),
+    /// `egui_extras`'s way: near the end, and in a table whose rows just
+    /// changed, where an offset past what egui last measured would make it
+    /// spring back over many frames.
+    AfterLayout,
+}
+
+impl DrawnRows {
+    /// How to show `row` of `rows`, `pitch` apart. `egui_extras` draws from
+    /// the row cut off at the top to one past the row cut off at the
+    /// bottom.
+    fn jump_to(self, row: usize, rows: usize, pitch: f32) -> Jump {
+        let whole = self.first + 1..=self.last.saturating_sub(2);
+        if whole.contains(&row) || (self.first == 0 && row == 0) {
+            return Jump::Stay;
+        }
+        let centred = (row as f32 + 0.5) * pitch - self.height / 2.0;
+        if rows != self.rows || (row as f32 + 1.0) * pitch + self.height > rows as f32 * pitch {
+            Jump::AfterLayout
+        } else {
+            Jump::Offset(centred.max(0.0))
+        }
+    }
 }
 
 /// A row's background across the table's whole width: the stripe of every
@@ -420,4 +483,55 @@ fn written_cell_ui(
 
 fn coordinate(value: f32) -> Cell {
     Cell::Text(format!("{value:.3}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{DrawnRows, Jump};
+
+    #[test]
+    fn a_row_drawn_whole_stays_and_another_is_centred_before_the_end() {
+        // Rows 10 to 31 drawn: 10 cut off at the top, 30 at the bottom, 31
+        // past the end; 440 points, 20 rows of 22, fill the table.
+        let drawn = DrawnRows {
+            first: 10,
+            last: 31,
+            height: 440.0,
+            rows: 1000,
+        };
+        let pitch = 22.0;
+        assert_eq!(drawn.jump_to(11, 1000, pitch), Jump::Stay);
+        assert_eq!(drawn.jump_to(29, 1000, pitch), Jump::Stay);
+        for row in [10, 30, 500, 978] {
+            let Jump::Offset(offset) = drawn.jump_to(row, 1000, pitch) else {
+                panic!("row {row} is jumped to");
+            };
+            let middle = offset + 220.0;
+            assert!(
+                (middle - (row as f32 + 0.5) * pitch).abs() < 0.01,
+                "row {row} centred: offset {offset}"
+            );
+        }
+        assert_eq!(
+            drawn.jump_to(2, 1000, pitch),
+            Jump::Offset(0.0),
+            "not above the top"
+        );
+        assert_eq!(
+            drawn.jump_to(990, 1000, pitch),
+            Jump::AfterLayout,
+            "nor past the end"
+        );
+        let top = DrawnRows {
+            first: 0,
+            last: 21,
+            height: 440.0,
+            rows: 1000,
+        };
+        assert_eq!(
+            top.jump_to(0, 1000, pitch),
+            Jump::Stay,
+            "the first row at the top"
+        );
+    }
 }
