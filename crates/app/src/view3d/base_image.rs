@@ -15,11 +15,11 @@
 //! behind them, are always drawn directly.
 //!
 //! A large new mesh's first image is drawn over several frames, a part of
-//! its lines and faces each after a first frame that only uploads, so that showing a large mesh does not freeze the
-//! page for the whole drawing (about 220 ms for torus-200k under
-//! `SwiftShader`); until done, the part drawn so far is copied. Later images
-//! (a turn of the camera, a resize) are drawn whole, as the user is
-//! watching them follow the pointer.
+//! its lines and faces in each after a first frame that only uploads, so
+//! that showing a large mesh does not freeze the page for the whole drawing
+//! (about 220 ms for torus-200k under `SwiftShader`); until done, the part
+//! drawn so far is copied. Later images (a turn of the camera, a resize)
+//! are drawn whole, as the user is watching them follow the pointer.
 
 use super::gpu::{FrameUniform, depth_format};
 

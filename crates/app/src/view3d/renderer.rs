@@ -186,7 +186,8 @@ struct ViewBuffers {
     /// them when first drawn so (most of torus-200k's 39 MB).
     detail: Option<Arc<GeometryUpload>>,
     /// The style uploads for those arrows, spheres and faces since they
-    /// were last written whole, kept with them and written after them.
+    /// were last written whole, kept with them and written after them (a
+    /// trace stepped while coarse adds a small patch a step).
     detail_styles: Vec<Arc<StyleUpload>>,
     /// The orientation marks not yet uploaded, likewise until first shown.
     marks: Option<Arc<GeometryUpload>>,
@@ -286,6 +287,8 @@ impl CallbackTrait for ViewCallback {
             && geometry.id != view.geometry_id
         {
             view.coarse.replace(device, &geometry.coarse);
+            // Styles kept for the last mesh's arrows would not fit these.
+            view.detail_styles.clear();
             view.detail = Some(Arc::clone(geometry));
             view.marks = Some(Arc::clone(geometry));
             view.geometry_id = geometry.id;
