@@ -561,18 +561,27 @@ fn patched_styles_draw_what_whole_styles_draw() {
     }
 }
 
+/// A torus of 14,400 vertices in a 480×360 view, which sees it whole and
+/// coarse, and its plain styles; None without a wgpu adapter.
+fn coarse_torus() -> Option<(RenderState, Harness, MeshGeometry, SceneStyles)> {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return None;
+    };
+    let harness = Harness::new(rs.clone(), [480, 360]);
+    let geometry = geometry(&generate::torus(120, 120), Structure::HalfEdge);
+    let styles = styles_for(&geometry);
+    Some((rs, harness, geometry, styles))
+}
+
 /// The coarse level of detail copied from its base image looks as drawing
 /// it directly does; a step or selection then keeps the image, and a turn
 /// of the camera draws it again.
 #[test]
 fn the_coarse_base_image_draws_what_drawing_directly_does() {
-    let Some(rs) = support::gpu::render_state() else {
-        eprintln!("no wgpu adapter: skipped");
+    let Some((rs, harness, geometry, styles)) = coarse_torus() else {
         return;
     };
-    let harness = Harness::new(rs.clone(), [480, 360]);
-    let geometry = geometry(&generate::torus(120, 120), Structure::HalfEdge);
-    let styles = styles_for(&geometry);
     let from_image = ViewOptions::default();
     let direct = ViewOptions {
         base_image: false,
@@ -652,14 +661,10 @@ fn the_coarse_base_image_draws_what_drawing_directly_does() {
 /// of the camera then draws it whole at once.
 #[test]
 fn a_new_mesh_s_base_image_is_drawn_in_parts_that_make_the_whole() {
-    let Some(rs) = support::gpu::render_state() else {
-        eprintln!("no wgpu adapter: skipped");
+    // 43,200 lines and 28,800 triangles: eight parts of 10,000.
+    let Some((rs, harness, geometry, styles)) = coarse_torus() else {
         return;
     };
-    let harness = Harness::new(rs.clone(), [480, 360]);
-    // 43,200 lines and 28,800 triangles: eight parts of 10,000.
-    let geometry = geometry(&generate::torus(120, 120), Structure::HalfEdge);
-    let styles = styles_for(&geometry);
     let by_parts = ViewOptions {
         base_image_part: 10_000,
         ..ViewOptions::default()
