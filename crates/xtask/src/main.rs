@@ -1,8 +1,9 @@
 //! Edgewise's build tool, run as `cargo xtask <command>`.
 //!
-//! - `serve [--port N]` builds the app for the browser into dist/ and serves it.
+//! - `serve [--port N] [--profiling]` builds the app for the browser into
+//!   dist/ and serves it.
 //! - `test` runs everything CI checks.
-//! - `build-web [--dev]` only builds dist/.
+//! - `build-web [--dev | --profiling]` only builds dist/.
 //! - `browser-test` builds dist/ and runs only the browser tests.
 //! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
 //!   `fuzz --make-seeds` rebuilds the seed corpus in fuzz/seeds/.
@@ -33,6 +34,9 @@ enum Command {
         /// The port to serve on.
         #[arg(long, default_value_t = 8080)]
         port: u16,
+        /// Keep the functions' names (no wasm-opt), for a browser profiler.
+        #[arg(long)]
+        profiling: bool,
     },
     /// Run everything CI checks: formatting, clippy (native and wasm32), native
     /// tests, the wasm build, and the browser tests in headless Chromium.
@@ -40,8 +44,11 @@ enum Command {
     /// Build the app for the browser into dist/ without serving it.
     BuildWeb {
         /// An unoptimised build, quicker to compile.
-        #[arg(long)]
+        #[arg(long, conflicts_with = "profiling")]
         dev: bool,
+        /// Keep the functions' names (no wasm-opt), for a browser profiler.
+        #[arg(long)]
+        profiling: bool,
     },
     /// Build dist/ and run only the browser tests.
     BrowserTest,
@@ -80,16 +87,16 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
     std::env::set_current_dir(&root)
         .with_context(|| format!("cannot enter the workspace at {}", root.display()))?;
     match cli.command {
-        Command::Serve { port } => {
-            let dist = web_build::build(&root, web_build::Profile::Release)?;
+        Command::Serve { port, profiling } => {
+            let dist = web_build::build(&root, web_build::Profile::release(profiling))?;
             serve::serve_forever(&dist, port)
         }
         Command::Test => test::run_all(&root),
-        Command::BuildWeb { dev } => {
+        Command::BuildWeb { dev, profiling } => {
             let profile = if dev {
                 web_build::Profile::Dev
             } else {
-                web_build::Profile::Release
+                web_build::Profile::release(profiling)
             };
             web_build::build(&root, profile).map(|_| ())
         }

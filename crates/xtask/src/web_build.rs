@@ -12,13 +12,25 @@ use crate::{process, toolchain::WasmToolchain};
 pub enum Profile {
     Dev,
     Release,
+    /// Release code with its function names kept (no wasm-opt, which strips
+    /// them), so that a browser's CPU profile names each function.
+    Profiling,
 }
 
 impl Profile {
+    /// The release build, or the profiling one.
+    pub fn release(profiling: bool) -> Self {
+        if profiling {
+            Self::Profiling
+        } else {
+            Self::Release
+        }
+    }
+
     fn dir_name(self) -> &'static str {
         match self {
             Self::Dev => "debug",
-            Self::Release => "web",
+            Self::Release | Self::Profiling => "web",
         }
     }
 }
@@ -36,7 +48,7 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
 
     let mut cmd = toolchain.cargo("build", &target_dir);
     cmd.args(["--locked", "--package", APP_PACKAGE, "--bin", APP_PACKAGE]);
-    if profile == Profile::Release {
+    if profile != Profile::Dev {
         // Cargo.toml's `web` profile: release, with LTO, optimised for size.
         cmd.args(["--profile", "web"]);
     }
