@@ -246,8 +246,9 @@ fn on() -> bool {
     true
 }
 
-/// About 55 ms of drawing a frame under `SwiftShader`: torus-200k's 300k
-/// lines and 200k triangles take four frames.
+/// Under `SwiftShader` a frame drawing a part of 125k took 150 to 200 ms in
+/// all; 100k keeps such frames well under a quarter second, and
+/// torus-200k's 300k lines and 200k triangles take five.
 const BASE_IMAGE_PART: u32 = 100_000;
 
 fn base_image_part() -> u32 {

@@ -140,9 +140,8 @@ pub enum Update {
 #[derive(Default)]
 pub struct BaseImage {
     drawn_for: Option<BaseKey>,
-    /// How many of the image's primitives are drawn, of how many.
+    /// How many of the image's primitives are drawn.
     drawn: u32,
-    total: u32,
     /// The mesh of the last image begun: another draws part by part.
     geometry_id: Option<u64>,
     target: Option<Target>,
@@ -180,7 +179,7 @@ impl BaseImage {
         draw: impl FnOnce(&mut wgpu::RenderPass<'static>, std::ops::Range<u32>),
     ) -> Update {
         let continuing = self.is_current(&key);
-        if continuing && self.drawn >= self.total {
+        if continuing && self.drawn >= total {
             return Update::Kept;
         }
         let [width, height] = key.size;
@@ -247,7 +246,6 @@ impl BaseImage {
         drop(pass);
         self.drawn_for = Some(key);
         self.drawn = end;
-        self.total = total;
         self.geometry_id = Some(key.geometry_id);
         if finished {
             Update::Finished
