@@ -295,9 +295,7 @@ pub fn show_to_readers(tables: Option<&str>, message: Option<&str>) {
     if let Some(element) = document.get_element_by_id("edgewise_a11y_tables") {
         element.set_inner_html(tables.unwrap_or("<p>No mesh is open.</p>"));
     }
-    if let Some(element) = document.get_element_by_id("edgewise_a11y_live") {
-        element.set_text_content(message);
-    }
+    set_text_of(&document, "edgewise_a11y_live", message);
 }
 
 /// Changes the words of some role cells of the page's copy for screen
@@ -308,11 +306,14 @@ pub fn change_for_readers(cells: &[(String, String)], message: Option<&str>) {
         return;
     };
     for (id, words) in cells {
-        if let Some(cell) = document.get_element_by_id(id) {
-            cell.set_text_content(Some(words));
-        }
+        set_text_of(&document, id, Some(words));
     }
-    if let Some(element) = document.get_element_by_id("edgewise_a11y_live") {
-        element.set_text_content(message);
+    set_text_of(&document, "edgewise_a11y_live", message);
+}
+
+/// Sets the text of the page's element `id`, where the page has one.
+fn set_text_of(document: &web_sys::Document, id: &str, text: Option<&str>) {
+    if let Some(element) = document.get_element_by_id(id) {
+        element.set_text_content(text);
     }
 }
