@@ -113,6 +113,21 @@ impl Browser {
         })
     }
 
+    /// Launches a browser on the app with `sample` open as a half-edge
+    /// mesh, its scripts allowed three minutes: under `SwiftShader` a large
+    /// mesh's frames are slow.
+    pub async fn launch_on_sample(sample: &str) -> anyhow::Result<Self> {
+        let browser = Self::launch().await?;
+        browser.set_script_timeout(Duration::from_secs(180)).await?;
+        browser.open("").await?;
+        browser
+            .eval_async(&format!(
+                "window.edgewise.loadSample('{sample}', {{ structure: 'half' }})"
+            ))
+            .await?;
+        Ok(browser)
+    }
+
     /// The URL of the served app, ending in '/'.
     pub fn base_url(&self) -> &str {
         &self.base_url

@@ -78,8 +78,8 @@ async fn the_accessibility_tree_holds_the_tables_and_announces_steps() -> anyhow
     assert!(has(&nodes, "status", ""), "a live region");
 
     // Another selection changes only the role cells that change (half-edge
-    // 3 is now the successor): the tables stay
-    // the same nodes (rebuilt, 900 rows cost Chromium about 0.1 s).
+    // 3 is now the successor): the tables stay the same nodes (rebuilt, 900
+    // rows cost Chromium about 0.1 s).
     let moved = browser
         .eval_async(
             "(async () => { \

@@ -28,12 +28,7 @@ async fn base_image(browser: &Browser) -> anyhow::Result<[u64; 2]> {
 
 #[tokio::test]
 async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyhow::Result<()> {
-    let browser = Browser::launch().await?;
-    browser.set_script_timeout(Duration::from_secs(180)).await?;
-    browser.open("").await?;
-    browser
-        .eval_async("window.edgewise.loadSample('icosphere-20k', { structure: 'half' })")
-        .await?;
+    let browser = Browser::launch_on_sample("icosphere-20k").await?;
     browser
         .eval_async("window.edgewise.select('vertex', 0)")
         .await?;
@@ -89,12 +84,7 @@ async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyho
 /// shows more of the mesh, and the last makes the image that is then kept.
 #[tokio::test]
 async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::Result<()> {
-    let browser = Browser::launch().await?;
-    browser.set_script_timeout(Duration::from_secs(180)).await?;
-    browser.open("").await?;
-    browser
-        .eval_async("window.edgewise.loadSample('cube', { structure: 'half' })")
-        .await?;
+    let browser = Browser::launch_on_sample("cube").await?;
     settle(&browser).await?;
     let [drawn, copied] = base_image(&browser).await?;
     let in_parts = browser

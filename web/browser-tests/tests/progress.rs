@@ -2,8 +2,6 @@
 //! progress bar with Cancel, and the old mesh stays until the new one is
 //! ready (or for good, after Cancel, from the API or the Esc key).
 
-use std::time::Duration;
-
 use edgewise_browser_tests::Browser;
 
 /// Starts loading torus-200k without waiting for it: `window.__load` settles
@@ -15,12 +13,7 @@ const START_LOAD: &str = "window.__load = window.edgewise \
 
 #[tokio::test]
 async fn a_large_mesh_shows_progress_and_cancel_keeps_the_old_one() -> anyhow::Result<()> {
-    let browser = Browser::launch().await?;
-    browser.set_script_timeout(Duration::from_secs(180)).await?;
-    browser.open("").await?;
-    browser
-        .eval_async("window.edgewise.loadSample('cube', { structure: 'half' })")
-        .await?;
+    let browser = Browser::launch_on_sample("cube").await?;
 
     // Cancelled from the API, before any frame: the promise says why.
     let job = browser
