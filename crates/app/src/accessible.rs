@@ -94,12 +94,11 @@ fn text_table(mesh: &Mesh, kind: ElementKind, title: &'static str, max_rows: usi
 }
 
 /// The three tables of `mesh` as HTML, with each highlighted row's roles
-/// (`highlights`, as `state().highlights` lists them) in a last column.
-pub fn tables_html(mesh: &Mesh, highlights: &[HighlightState]) -> String {
-    let roles = role_words(highlights);
+/// ([`role_words`]) in a last column.
+pub fn tables_html(mesh: &Mesh, roles: &BTreeMap<ElementRef, String>) -> String {
     let mut html = String::new();
     for table in text_tables(mesh, MAX_ROWS) {
-        table_html(&mut html, mesh, &table, &roles);
+        table_html(&mut html, mesh, &table, roles);
     }
     html
 }
@@ -220,7 +219,7 @@ mod tests {
             role: "selected".to_owned(),
             colour: "#ff0000".to_owned(),
         }];
-        let html = tables_html(&mesh, &highlights);
+        let html = tables_html(&mesh, &role_words(&highlights));
         assert_eq!(html.matches("<table>").count(), 3);
         assert!(html.contains("<caption>Faces: 4 rows</caption>"), "{html}");
         assert!(
@@ -246,7 +245,7 @@ mod tests {
     fn a_large_mesh_is_mirrored_in_part_and_says_so() {
         let (mesh, _) =
             Mesh::build(&generate::grid(30, 30), Structure::WingedEdge).expect("builds");
-        let html = tables_html(&mesh, &[]);
+        let html = tables_html(&mesh, &BTreeMap::new());
         assert!(
             html.contains("Faces: 900 rows, the first 300 here"),
             "{}",

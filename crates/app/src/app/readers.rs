@@ -38,8 +38,7 @@ impl EdgewiseApp {
             matches!((key, self.reader_copy.key), (Some(now), Some(before)) if now.0 == before.0);
         self.reader_copy.key = key;
         let message = self.message_text(None);
-        let highlights = &self.state().highlights;
-        let roles = accessible::role_words(highlights);
+        let roles = accessible::role_words(&self.state().highlights);
         if same_mesh {
             let changes = accessible::role_changes(&self.reader_copy.roles, &roles);
             platform::change_for_readers(&changes, message.as_deref());
@@ -48,7 +47,7 @@ impl EdgewiseApp {
                 .tab()
                 .document
                 .as_ref()
-                .map(|document| accessible::tables_html(document.mesh(), highlights));
+                .map(|document| accessible::tables_html(document.mesh(), &roles));
             platform::show_to_readers(tables.as_deref(), message.as_deref());
         }
         self.reader_copy.roles = roles;
