@@ -492,6 +492,7 @@ impl EdgewiseApp {
             coarse_view: self.tab().view.coarse(),
             styles_patched: self.tab().view.styles_patched(),
             base_image: self.tab().view.base_image_counts(),
+            motion_proxy: self.tab().view.motion_proxy_frames(),
             welcome: self.tour.as_ref().map(|tour| tour.done),
             job: self
                 .tab()

@@ -66,6 +66,11 @@ pub struct AppState {
     /// null without a GPU.
     #[serde(rename = "baseImage")]
     pub base_image: Option<[u64; 2]>,
+    /// How many frames drew a large mesh's motion proxy (a simplified copy
+    /// of its lines and faces, while the camera moves) in place of the
+    /// mesh; null without a GPU.
+    #[serde(rename = "motionProxy")]
+    pub motion_proxy: Option<u64>,
     /// A large mesh being opened or converted a slice per frame, or null.
     pub job: Option<JobState>,
     /// The first-visit hint's three things to try, each true once done, or

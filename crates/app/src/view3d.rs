@@ -23,6 +23,7 @@ mod coarse;
 mod faces;
 mod gpu;
 mod labels;
+mod motion_proxy;
 mod orientation;
 mod picking;
 mod renderer;
@@ -240,6 +241,10 @@ pub struct ViewOptions {
     /// image (see `base_image.rs`).
     #[serde(skip, default = "base_image_part")]
     pub base_image_part: u32,
+    /// Draw a large mesh's motion proxy while the camera moves
+    /// (`motion_proxy.rs`); off draws the mesh itself, to compare the two.
+    #[serde(skip, default = "on")]
+    pub motion_proxy: bool,
 }
 
 fn on() -> bool {
@@ -254,6 +259,12 @@ const BASE_IMAGE_PART: u32 = 100_000;
 fn base_image_part() -> u32 {
     BASE_IMAGE_PART
 }
+
+/// How long, in seconds, the camera must rest before a mesh drawn from its
+/// motion proxy is drawn whole again: longer than the gap between two
+/// frames of a drag on a slow machine, so that a drag does not redraw the
+/// whole mesh between two moves.
+const MOTION_SETTLE: f64 = 0.3;
 
 impl Default for ViewOptions {
     fn default() -> Self {
@@ -270,6 +281,7 @@ impl Default for ViewOptions {
             backdrop_cleared: false,
             base_image: true,
             base_image_part: BASE_IMAGE_PART,
+            motion_proxy: true,
         }
     }
 }
@@ -323,7 +335,7 @@ impl GpuLink {
 }
 
 /// A mesh's view geometry made a slice at a time: the scene, each picking
-/// hierarchy, then the GPU arrays. Run one slice per frame, a large mesh
+/// hierarchy, the GPU arrays, then the motion proxy. Run one slice per frame, a large mesh
 /// never freezes the page; [`View3d::show_prepared`] then shows it.
 pub struct Preparation {
     geometry: Option<MeshGeometry>,
@@ -336,7 +348,7 @@ pub struct Preparation {
 
 impl Preparation {
     /// How many slices there are.
-    pub const SLICES: usize = 5;
+    pub const SLICES: usize = 6;
 
     /// Geometry to prepare; `with_gpu` says whether GPU arrays are wanted
     /// ([`View3d::has_gpu`]).
@@ -362,6 +374,11 @@ impl Preparation {
             (2, Some(scene)) => self.accel.build(scene, ElementKind::Edge),
             (3, Some(scene)) => self.accel.build(scene, ElementKind::Face),
             (4, Some(scene)) if self.with_gpu => self.upload = Some(Self::upload(scene)),
+            (5, _) => {
+                if let Some(upload) = &mut self.upload {
+                    upload.proxy = motion_proxy::proxy(&upload.coarse);
+                }
+            }
             _ => {}
         }
         self.done = (self.done + 1).min(Self::SLICES);
@@ -378,7 +395,8 @@ impl Preparation {
         self.done as f32 / Self::SLICES as f32
     }
 
-    /// The GPU arrays of a scene (their id is set when shown).
+    /// The GPU arrays of a scene (their id is set when shown), but for
+    /// the motion proxy, a slice of its own.
     fn upload(scene: &Scene) -> GeometryUpload {
         GeometryUpload {
             id: 0,
@@ -387,6 +405,7 @@ impl Preparation {
             faces: faces::corners(scene),
             marks: orientation::instances(scene),
             coarse: coarse::geometry(scene),
+            proxy: None,
         }
     }
 }
@@ -425,6 +444,8 @@ pub struct View3d {
     last_aspect: f32,
     /// Whether the last frame drew the coarse level of detail.
     coarse: bool,
+    /// When the pointer or keys last moved the camera (egui's clock).
+    camera_moved_at: Option<f64>,
     /// Where the view was drawn last, for [`Self::screen_position`].
     last_viewport: Option<Rect>,
     frame_pending: bool,
@@ -462,6 +483,7 @@ impl View3d {
             patched: false,
             last_aspect: 1.5,
             coarse: false,
+            camera_moved_at: None,
             last_viewport: None,
             frame_pending: false,
             hover: None,
@@ -498,10 +520,11 @@ impl View3d {
         self.highlighted.clear();
         self.hover = None;
         if let Some(gpu) = &mut self.gpu {
-            let mut upload = prepared
-                .upload
-                .take()
-                .unwrap_or_else(|| Preparation::upload(&self.scene));
+            let mut upload = prepared.upload.take().unwrap_or_else(|| {
+                let mut upload = Preparation::upload(&self.scene);
+                upload.proxy = motion_proxy::proxy(&upload.coarse);
+                upload
+            });
             upload.id = self.geometry_id;
             gpu.geometry = Some(Arc::new(upload));
             gpu.styles = None;
@@ -584,6 +607,13 @@ impl View3d {
             uploaded.base_image_drawn.load(Ordering::Relaxed),
             uploaded.base_image_copied.load(Ordering::Relaxed),
         ])
+    }
+
+    /// How many frames drew the motion proxy in place of the mesh's coarse
+    /// lines and faces; `None` without a GPU.
+    pub fn motion_proxy_frames(&self) -> Option<u64> {
+        let uploaded = &self.gpu.as_ref()?.uploaded;
+        Some(uploaded.proxy_drawn.load(Ordering::Relaxed))
     }
 
     /// Whether the mesh's edges are so small on screen, and so many, that
@@ -698,7 +728,12 @@ impl View3d {
             return ViewResponse::default();
         }
         let palette = self.place(rect, styles, options);
+        let camera = self.camera;
         self.handle_camera_input(ui, &response, rect);
+        let now = ui.input(|i| i.time);
+        if self.camera != camera {
+            self.camera_moved_at = Some(now);
+        }
 
         let transforms = self.transforms(rect);
         self.coarse = self.is_small_on_screen(&transforms);
@@ -764,7 +799,8 @@ impl View3d {
         if !options.backdrop_cleared {
             painter.rect_filled(rect, 0.0, palette.background);
         }
-        self.add_callback(&painter, rect, &transforms, options, &palette);
+        let moving = self.is_moving(ui.ctx(), now);
+        self.add_callback(&painter, rect, &transforms, options, &palette, moving);
         let overlay = labels::Overlay {
             painter: &painter,
             transforms: &transforms,
@@ -785,6 +821,19 @@ impl View3d {
             overlay.paint_axis_letters();
         }
         view_response
+    }
+
+    /// Whether the camera moved within the last [`MOTION_SETTLE`] seconds;
+    /// if so, asks for a frame when that time is up, to draw the mesh whole.
+    fn is_moving(&self, ctx: &egui::Context, now: f64) -> bool {
+        let Some(moved_at) = self.camera_moved_at else {
+            return false;
+        };
+        let left = moved_at + MOTION_SETTLE - now;
+        if left > 0.0 {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(left));
+        }
+        left > 0.0
     }
 
     fn handle_camera_input(&mut self, ui: &egui::Ui, response: &egui::Response, rect: Rect) {
@@ -925,6 +974,7 @@ impl View3d {
         transforms: &ViewTransforms,
         options: &ViewOptions,
         palette: &Palette,
+        moving: bool,
     ) {
         let Some(gpu) = &mut self.gpu else {
             return;
@@ -987,6 +1037,7 @@ impl View3d {
                 coarse: self.coarse,
                 base_image: options.base_image,
                 base_image_part: options.base_image_part,
+                moving: moving && options.motion_proxy,
             },
             uploaded: gpu.uploaded.clone(),
             // As `egui_wgpu` rounds the callback's rect to pixels.

@@ -728,3 +728,134 @@ fn a_new_mesh_s_base_image_is_drawn_in_parts_that_make_the_whole() {
     });
     assert_eq!(view.base_image_counts(), Some([2, 10]));
 }
+
+/// `-` pressed: the keyboard's step of the camera away from the mesh.
+fn minus_key() -> egui::Event {
+    egui::Event::Key {
+        key: egui::Key::Minus,
+        physical_key: None,
+        pressed: true,
+        repeat: false,
+        modifiers: egui::Modifiers::NONE,
+    }
+}
+
+/// The pixels of `image` that are not its top-left pixel's colour (the
+/// background).
+fn drawn_mask(image: &Image) -> Vec<bool> {
+    let background = image.pixel(0, 0);
+    image.pixels.chunks(4).map(|p| p != background).collect()
+}
+
+/// Frames of `view` until its base image has been drawn whole `count`
+/// times in all, each frame's picture; at most 60.
+fn frames_until_drawn(
+    harness: &Harness,
+    view: &mut View3d,
+    styles: &SceneStyles,
+    options: &ViewOptions,
+    count: u64,
+) -> Vec<Image> {
+    let mut pictures = Vec::new();
+    while view
+        .base_image_counts()
+        .is_some_and(|[drawn, _]| drawn < count)
+        && pictures.len() < 60
+    {
+        pictures.push(harness.frame(Vec::new(), |ui| {
+            view.ui(ui, styles, options);
+        }));
+    }
+    pictures
+}
+
+/// While the camera moves, a large mesh is drawn from its motion proxy, the
+/// same shape from far fewer lines and faces, and its base image waits;
+/// once the camera has rested for a while, the image is drawn a part a
+/// frame behind the proxy, and then shows exactly what a view that never
+/// drew the proxy shows.
+#[test]
+fn a_large_mesh_is_drawn_from_its_motion_proxy_while_the_camera_moves() {
+    let Some(rs) = support::gpu::render_state() else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let harness = Harness::new(rs.clone(), [480, 360]);
+    // 120k lines and 80k triangles: more than a proxy is made for, and
+    // four parts of 50k.
+    let geometry = geometry(&generate::torus(200, 200), Structure::HalfEdge);
+    let styles = styles_for(&geometry);
+    let options = ViewOptions {
+        base_image_part: 50_000,
+        ..ViewOptions::default()
+    };
+    let mut view = View3d::new(Some(&rs));
+    view.set_geometry(geometry.clone(), true);
+    frames_until_drawn(&harness, &mut view, &styles, &options, 1);
+    assert!(view.coarse());
+    assert_eq!(view.motion_proxy_frames(), Some(0), "a camera at rest");
+    assert_eq!(view.base_image_counts(), Some([1, 5]));
+
+    let moving = harness.frame(vec![minus_key()], |ui| {
+        view.ui(ui, &styles, &options);
+    });
+    assert_eq!(
+        view.motion_proxy_frames(),
+        Some(1),
+        "the step draws the proxy"
+    );
+    assert_eq!(
+        view.base_image_counts(),
+        Some([1, 5]),
+        "and the image waits"
+    );
+
+    // The same camera, never moved: the mesh itself.
+    let itself = ViewOptions {
+        motion_proxy: false,
+        base_image_part: u32::MAX,
+        ..options.clone()
+    };
+    let mut reference = View3d::new(Some(&rs));
+    reference.set_geometry(geometry, true);
+    reference.set_camera(view.camera());
+    let (whole, _) = harness.show(&mut reference, &styles, &itself, Vec::new());
+    assert_eq!(reference.motion_proxy_frames(), Some(0));
+    assert_eq!(reference.base_image_counts(), Some([1, 2]));
+    assert_ne!(moving.pixels, whole.pixels, "the proxy is not the mesh");
+    // But it covers what the mesh covers, to a pixel or two at the edges.
+    let (a, b) = (drawn_mask(&moving), drawn_mask(&whole));
+    let both = a.iter().zip(&b).filter(|(x, y)| **x && **y).count();
+    let either = a.iter().zip(&b).filter(|(x, y)| **x || **y).count();
+    moving.save("motion_proxy.png");
+    whole.save("motion_proxy_rested.png");
+    assert!(
+        both as f64 > 0.9 * either as f64,
+        "the proxy covers {both} of the {either} pixels either covers"
+    );
+
+    // egui's clock runs 1/60 s a frame here: the camera rests after 0.3 s,
+    // about 18 frames, and the image is then drawn in four.
+    let pictures = frames_until_drawn(&harness, &mut view, &styles, &options, 2);
+    let proxy_frames = view.motion_proxy_frames().unwrap_or(0);
+    assert!(
+        (18..=24).contains(&proxy_frames),
+        "{proxy_frames} frames drew the proxy"
+    );
+    let [.., behind, last] = pictures.as_slice() else {
+        panic!("{} frames", pictures.len());
+    };
+    assert!(
+        behind.pixels == moving.pixels,
+        "the proxy shows until the image is done"
+    );
+    assert!(
+        last.pixels == whole.pixels,
+        "then the mesh, as if never moved"
+    );
+    assert_eq!(
+        view.base_image_counts().map(|[drawn, _]| drawn),
+        Some(2),
+        "drawn once more"
+    );
+}

@@ -19,7 +19,10 @@
 //! that showing a large mesh does not freeze the page for the whole drawing
 //! (about 220 ms for torus-200k under `SwiftShader`); until done, the part
 //! drawn so far is copied. Later images (a turn of the camera, a resize)
-//! are drawn whole, as the user is watching them follow the pointer.
+//! are drawn whole, as the user is watching them follow the pointer;
+//! except that a mesh with a motion proxy (`motion_proxy.rs`), drawn from
+//! its proxy while the camera moves, draws its image in parts behind the
+//! proxy once the camera rests, and shows it when done.
 
 use super::gpu::{FrameUniform, depth_format};
 
@@ -164,7 +167,9 @@ impl BaseImage {
     /// draws the given range of the image's `total` primitives (in an
     /// order where parts drawn one after the other give the whole). A new
     /// mesh of more than `part` primitives is drawn `part` a frame, from
-    /// the frame after the first; any other image whole.
+    /// the frame after the first, and so is an image drawn `behind` what
+    /// shows meanwhile (the motion proxy), from the first; any other image
+    /// whole.
     /// The image is current afterwards unless the view is too large for a
     /// texture (the mesh is then drawn directly).
     #[expect(clippy::too_many_arguments, reason = "one call site, each distinct")]
@@ -176,6 +181,7 @@ impl BaseImage {
         key: BaseKey,
         total: u32,
         part: u32,
+        behind: bool,
         draw: impl FnOnce(&mut wgpu::RenderPass<'static>, std::ops::Range<u32>),
     ) -> Update {
         let continuing = self.is_current(&key);
@@ -194,7 +200,7 @@ impl BaseImage {
             return Update::Kept;
         };
         let start = if continuing { self.drawn } else { 0 };
-        let end = if continuing {
+        let end = if continuing || behind {
             start.saturating_add(part.max(1)).min(total)
         } else if self.geometry_id == Some(key.geometry_id) || total <= part {
             total

@@ -29,6 +29,9 @@ pub struct GeometryUpload {
     pub faces: Vec<[f32; 3]>,
     pub marks: Vec<MarkInstance>,
     pub coarse: CoarseGeometry,
+    /// The coarse geometry simplified, drawn while the camera moves
+    /// (`motion_proxy.rs`); none for a mesh small enough to draw itself.
+    pub proxy: Option<CoarseGeometry>,
 }
 
 /// New styles for some or all elements of one drawable.
@@ -100,6 +103,9 @@ pub struct UploadState {
     /// screen in place of drawing the mesh.
     pub base_image_drawn: AtomicU64,
     pub base_image_copied: AtomicU64,
+    /// How many frames drew the motion proxy in place of the coarse lines
+    /// and faces.
+    pub proxy_drawn: AtomicU64,
 }
 
 /// What to draw this frame besides the mesh.
@@ -116,6 +122,9 @@ pub struct DrawFlags {
     /// How many lines and triangles a frame draws of a new mesh's base
     /// image.
     pub base_image_part: u32,
+    /// The camera is moving: a mesh with a motion proxy draws that in
+    /// place of its coarse lines and faces.
+    pub moving: bool,
 }
 
 /// Every drawable's renderer, shared by all views, and each view's buffers;
@@ -181,6 +190,11 @@ struct ViewBuffers {
     full_arrows: ArrowBuffers,
     full_faces: FaceBuffers,
     coarse: CoarseBuffers,
+    /// The motion proxy's lines and faces; empty for a small mesh.
+    proxy: CoarseBuffers,
+    /// The camera has rested after moving, and the base image is drawn a
+    /// part a frame behind the proxy, which shows until it is done.
+    refining: bool,
     /// Arrows, spheres and faces of the current geometry not yet uploaded:
     /// only full detail draws them, so a dense mesh seen from afar uploads
     /// them when first drawn so (most of torus-200k's 39 MB).
@@ -211,6 +225,8 @@ impl ViewBuffers {
             full_arrows: ArrowBuffers::new("view3d full arrows", "view3d full arrow styles"),
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
+            proxy: CoarseBuffers::default(),
+            refining: false,
             detail: None,
             detail_styles: Vec::new(),
             marks: None,
@@ -245,6 +261,19 @@ impl ViewCallback {
         let mut frame = self.frame;
         frame.params[0] = if srgb { 1.0 } else { 0.0 };
         frame
+    }
+
+    /// Whether the moving camera draws `view`'s motion proxy.
+    fn moves_with_proxy(&self, view: &ViewBuffers) -> bool {
+        self.flags.coarse && self.flags.moving && view.proxy.primitive_count() > 0
+    }
+
+    /// Whether this frame draws `view`'s motion proxy in place of its
+    /// coarse lines and faces: while the camera moves, and then until the
+    /// base image is drawn again.
+    fn draws_proxy(&self, view: &ViewBuffers) -> bool {
+        self.moves_with_proxy(view)
+            || (view.refining && self.flags.coarse && view.proxy.primitive_count() > 0)
     }
 
     /// What the coarse base image must show this frame, if one is used:
@@ -287,6 +316,10 @@ impl CallbackTrait for ViewCallback {
             && geometry.id != view.geometry_id
         {
             view.coarse.replace(device, &geometry.coarse);
+            view.proxy = CoarseBuffers::default();
+            if let Some(proxy) = &geometry.proxy {
+                view.proxy.replace(device, proxy);
+            }
             // Styles kept for the last mesh's arrows would not fit these.
             view.detail_styles.clear();
             view.detail = Some(Arc::clone(geometry));
@@ -338,8 +371,13 @@ impl CallbackTrait for ViewCallback {
         view.frame.write(queue, &self.frame_for(srgb));
 
         // The base image, drawn in this encoder before egui's pass (and
-        // after the uniform write above, which the queue applies first).
-        if let Some(key) = self.base_key(srgb)
+        // after the uniform write above, which the queue applies first);
+        // while the camera moves with a proxy, it waits, and is then drawn
+        // behind the proxy.
+        let base_key = self.base_key(srgb);
+        if self.moves_with_proxy(view) {
+            view.refining = base_key.is_some();
+        } else if let Some(key) = base_key
             && view.geometry_id == self.geometry_id
         {
             let coarse = &renderers.coarse;
@@ -351,6 +389,7 @@ impl CallbackTrait for ViewCallback {
                 key,
                 buffers.primitive_count(),
                 self.flags.base_image_part,
+                view.refining,
                 |pass, part| {
                     frame_group.write(queue, &key.frame);
                     frame_group.bind(pass);
@@ -366,6 +405,9 @@ impl CallbackTrait for ViewCallback {
                         .fetch_add(1, Ordering::Relaxed);
                 }
             }
+            view.refining &= update == base_image::Update::Part;
+        } else {
+            view.refining = false;
         }
         Vec::new()
     }
@@ -395,7 +437,15 @@ impl CallbackTrait for ViewCallback {
                 [i64::from(key.size[0]), i64::from(key.size[1])]
                     == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
             })
-            .is_some_and(|key| view.base_image.is_current(&key));
+            .is_some_and(|key| view.base_image.is_current(&key))
+            && !self.draws_proxy(view);
+
+        let coarse = if self.draws_proxy(view) {
+            self.uploaded.proxy_drawn.fetch_add(1, Ordering::Relaxed);
+            &view.proxy
+        } else {
+            &view.coarse
+        };
 
         // Opaque first: spheres, arrows (or lines), axes, orientation marks.
         // The base image holds the coarse lines and faces.
@@ -406,7 +456,7 @@ impl CallbackTrait for ViewCallback {
                     .base_image_copied
                     .fetch_add(1, Ordering::Relaxed);
             } else {
-                renderers.coarse.draw_lines(pass, &view.coarse);
+                renderers.coarse.draw_lines(pass, coarse);
             }
             renderers.spheres.draw(pass, &view.full_spheres);
             renderers.arrows.draw(pass, &view.full_arrows);
@@ -425,7 +475,7 @@ impl CallbackTrait for ViewCallback {
         let solid = self.flags.solid_faces;
         if self.flags.coarse {
             if !from_image {
-                renderers.coarse.draw_faces(pass, &view.coarse, solid);
+                renderers.coarse.draw_faces(pass, coarse, solid);
             }
             renderers.faces.draw(pass, &view.full_faces, solid);
         } else {
