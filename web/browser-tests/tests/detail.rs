@@ -1,8 +1,9 @@
 //! The level of detail in the browser: icosphere-20k seen whole, its edges
 //! a few pixels long, is drawn coarse (edges as lines, no vertex spheres,
 //! the selection in full); the cube in full; torus-200k, new, draws its
-//! base image a part a frame. (Zooming across the switch is covered by the
-//! render test `a_dense_mesh_far_away_is_drawn_coarse_…`.)
+//! base image a part a frame, and turns with its motion proxy. (Zooming
+//! across the switch is covered by the render test
+//! `a_dense_mesh_far_away_is_drawn_coarse_…`.)
 
 use std::time::Duration;
 
@@ -139,6 +140,114 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::
     );
     let [drawn_after, _] = base_image(&browser).await?;
     assert_eq!(drawn_after, drawn + 1, "then kept");
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+/// Statements that press the mouse in the middle of `canvas` (declared by
+/// [`Browser::canvas_when`]) and drag it left and right, a pointer move per
+/// animation frame, until `window.__release` is set; the mouse is then
+/// released.
+const DRAG: &str = "
+  const r = canvas.getBoundingClientRect();
+  const y = r.top + r.height * 0.4;
+  let x = r.left + r.width * 0.4, step = 4;
+  const fire = (type, buttons) => {
+    const init = { clientX: x, clientY: y, bubbles: true, cancelable: true,
+                   pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons };
+    canvas.dispatchEvent(new PointerEvent('pointer' + type, init));
+    canvas.dispatchEvent(new MouseEvent('mouse' + type, init));
+  };
+  window.__release = false;
+  fire('move', 0);
+  fire('down', 1);
+  (async () => {
+    while (!window.__release) {
+      await new Promise((r) => requestAnimationFrame(r));
+      x += step;
+      if (Math.abs(x - (r.left + r.width * 0.4)) > 80) step = -step;
+      fire('move', 1);
+    }
+    fire('up', 0);
+  })();
+";
+
+/// `state().motionProxy`: how many frames drew the motion proxy.
+async fn proxy_frames(browser: &Browser) -> anyhow::Result<u64> {
+    Ok(browser.state().await?["motionProxy"].as_u64().unwrap_or(0))
+}
+
+/// A drag on torus-200k turns the camera with the torus drawn from its
+/// motion proxy, each frame; released, the view rests, draws the torus's
+/// base image behind the proxy, and then shows the torus itself again.
+#[tokio::test]
+async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
+-> anyhow::Result<()> {
+    let browser = Browser::launch_on_sample("torus-200k").await?;
+    browser
+        .wait_for(
+            "window.edgewise.state().baseImage[0] >= 1",
+            Duration::from_secs(60),
+        )
+        .await?;
+    settle(&browser).await?;
+    let [drawn, _] = base_image(&browser).await?;
+    assert_eq!(proxy_frames(&browser).await?, 0, "not moved yet");
+
+    let moving = browser
+        .canvas_when(
+            DRAG,
+            "window.edgewise.state().motionProxy >= 3",
+            "detail-torus-moving",
+        )
+        .await?;
+    let [drawn_moving, _] = base_image(&browser).await?;
+    assert_eq!(drawn_moving, drawn, "no base image while the camera moves");
+    browser
+        .eval("window.__release = true; return null;")
+        .await?;
+    browser
+        .wait_for(
+            &format!("window.edgewise.state().baseImage[0] === {drawn} + 1"),
+            Duration::from_secs(60),
+        )
+        .await?;
+    settle(&browser).await?;
+    let proxied = proxy_frames(&browser).await?;
+    settle(&browser).await?;
+    assert_eq!(proxy_frames(&browser).await?, proxied, "at rest, no proxy");
+    // Read in a frame the app draws (a selection's), as the canvas keeps
+    // no picture between frames.
+    let rested = browser
+        .canvas_when(
+            "window.edgewise.select('vertex', 0);",
+            "window.edgewise.state().selection !== null",
+            "detail-torus-rested",
+        )
+        .await?;
+    assert_eq!(
+        proxy_frames(&browser).await?,
+        proxied,
+        "a selection copies the image"
+    );
+
+    // Both pictures show the torus over about the same pixels, but not the
+    // same picture: the proxy has far fewer lines.
+    let backdrop = rested.pixel(5, 300);
+    let drawn_in = |shot: &edgewise_browser_tests::Screenshot| {
+        (60..320)
+            .flat_map(|y| (450..850).map(move |x| (x, y)))
+            .filter(|&(x, y)| {
+                let pixel = shot.pixel(x, y);
+                (0..3).any(|c| pixel[c].abs_diff(backdrop[c]) > 2)
+            })
+            .count()
+    };
+    let (proxy_pixels, mesh_pixels) = (drawn_in(&moving), drawn_in(&rested));
+    assert!(
+        mesh_pixels > 10_000 && proxy_pixels.abs_diff(mesh_pixels) * 5 < mesh_pixels,
+        "the proxy covers {proxy_pixels} pixels, the mesh {mesh_pixels}"
+    );
     browser.assert_no_console_errors().await?;
     browser.close().await
 }

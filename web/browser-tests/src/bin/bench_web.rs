@@ -19,6 +19,10 @@ use serde_json::{Value, json};
 /// How long each orbit is measured.
 const ORBIT_SECONDS: f64 = 4.0;
 
+/// How long after its last frame the app is taken to be at rest: longer
+/// than the view waits for a moved camera to rest (`MOTION_SETTLE`).
+const REST_MS: u32 = 1000;
+
 /// Installed before any page script: when `window.edgewise` appears, the
 /// time of every animation frame, so the longest gap between two (the page
 /// frozen) can be found for any interval, and every long task (over 50 ms)
@@ -78,7 +82,10 @@ fn freezes(timed: &Value) -> String {
 
 /// Drags across the middle of the canvas for `seconds`, one pointer move
 /// per animation frame, and counts the app's frames meanwhile; also the
-/// mean time a frame took on the main thread (`state().frameCpuMs`).
+/// mean time a frame took on the main thread (`state().frameCpuMs`), the
+/// share of frames drawn from the motion proxy, and, after the release,
+/// when the app drew its last frame (the view rested: no frame for
+/// [`REST_MS`]) and the longest task until then.
 fn orbit(seconds: f64) -> String {
     format!(
         "(async () => {{
@@ -96,6 +103,7 @@ fn orbit(seconds: f64) -> String {
            fire('move', x, 0);
            fire('down', x, 1);
            const before = window.edgewise.state().frames;
+           const proxyBefore = window.edgewise.state().motionProxy || 0;
            const start = performance.now();
            let step = 3, cpu = 0, samples = 0, seen = before;
            while (performance.now() - start < {seconds} * 1000) {{
@@ -110,8 +118,19 @@ fn orbit(seconds: f64) -> String {
            }}
            const frames = window.edgewise.state().frames - before;
            const secs = (performance.now() - start) / 1000;
+           const proxied = (window.edgewise.state().motionProxy || 0) - proxyBefore;
            fire('up', x, 0);
-           return [frames / secs, samples ? cpu / samples : null];
+           const up = performance.now();
+           let last = up, lastFrame = window.edgewise.state().frames;
+           while (performance.now() - last < {REST_MS} && performance.now() - up < 20000) {{
+             await new Promise((r) => requestAnimationFrame(r));
+             const now = window.edgewise.state().frames;
+             if (now !== lastFrame) {{ lastFrame = now; last = performance.now(); }}
+           }}
+           const tasks = window.__bench.longTasks.filter(([t]) => t >= up - 1 && t <= last);
+           const longestTask = Math.max(0, ...tasks.map(([, d]) => d));
+           return [frames / secs, samples ? cpu / samples : null, proxied / Math.max(frames, 1),
+                   last - up, longestTask];
          }})()"
     )
 }
@@ -263,11 +282,23 @@ async fn main() -> anyhow::Result<()> {
         } else {
             String::new()
         };
+        let proxied = orbited[2].as_f64().unwrap_or(0.0);
+        let proxy_note = if proxied > 0.0 {
+            format!(
+                "; {:.0}% of frames from the motion proxy; at rest {} after the release \
+                 (longest task {})",
+                proxied * 100.0,
+                ms(&orbited[3]),
+                ms(&orbited[4])
+            )
+        } else {
+            String::new()
+        };
         rows.push(row(
             &format!("orbit {sample}"),
             fps(&rate),
             &baseline_cell,
-            format!("main thread {} a frame", ms(&orbited[1])),
+            format!("main thread {} a frame{proxy_note}", ms(&orbited[1])),
         ));
     }
     if let (Some(app_fps), Some(base)) = (torus_fps.as_f64(), baseline_fps.as_f64())
