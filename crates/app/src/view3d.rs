@@ -1037,7 +1037,8 @@ impl View3d {
                 coarse: self.coarse,
                 base_image: options.base_image,
                 base_image_part: options.base_image_part,
-                moving: moving && options.motion_proxy,
+                motion_proxy: options.motion_proxy,
+                moving,
             },
             uploaded: gpu.uploaded.clone(),
             // As `egui_wgpu` rounds the callback's rect to pixels.

@@ -769,11 +769,12 @@ fn frames_until_drawn(
     pictures
 }
 
-/// While the camera moves, a large mesh is drawn from its motion proxy, the
-/// same shape from far fewer lines and faces, and its base image waits;
-/// once the camera has rested for a while, the image is drawn a part a
-/// frame behind the proxy, and then shows exactly what a view that never
-/// drew the proxy shows.
+/// A large mesh is drawn from its motion proxy, the same shape from far
+/// fewer lines and faces, while its new base image is drawn a part a frame,
+/// and while the camera moves (the image waits); once the camera has
+/// rested for a while, the image is drawn again behind the proxy, and then
+/// shows exactly what a view that never drew the proxy shows. A resize
+/// draws the image behind the proxy too.
 #[test]
 fn a_large_mesh_is_drawn_from_its_motion_proxy_while_the_camera_moves() {
     let Some(rs) = support::gpu::render_state() else {
@@ -791,22 +792,27 @@ fn a_large_mesh_is_drawn_from_its_motion_proxy_while_the_camera_moves() {
     };
     let mut view = View3d::new(Some(&rs));
     view.set_geometry(geometry.clone(), true);
-    frames_until_drawn(&harness, &mut view, &styles, &options, 1);
+    let loading = frames_until_drawn(&harness, &mut view, &styles, &options, 1);
     assert!(view.coarse());
-    assert_eq!(view.motion_proxy_frames(), Some(0), "a camera at rest");
-    assert_eq!(view.base_image_counts(), Some([1, 5]));
+    assert_eq!(loading.len(), 5, "a frame uploads, four draw the image");
+    assert_eq!(
+        view.motion_proxy_frames(),
+        Some(4),
+        "the proxy shows until the last part"
+    );
+    assert_eq!(view.base_image_counts(), Some([1, 1]), "then the image");
 
     let moving = harness.frame(vec![minus_key()], |ui| {
         view.ui(ui, &styles, &options);
     });
     assert_eq!(
         view.motion_proxy_frames(),
-        Some(1),
+        Some(5),
         "the step draws the proxy"
     );
     assert_eq!(
         view.base_image_counts(),
-        Some([1, 5]),
+        Some([1, 1]),
         "and the image waits"
     );
 
@@ -837,10 +843,10 @@ fn a_large_mesh_is_drawn_from_its_motion_proxy_while_the_camera_moves() {
     // egui's clock runs 1/60 s a frame here: the camera rests after 0.3 s,
     // about 18 frames, and the image is then drawn in four.
     let pictures = frames_until_drawn(&harness, &mut view, &styles, &options, 2);
-    let proxy_frames = view.motion_proxy_frames().unwrap_or(0);
+    let proxy_frames = view.motion_proxy_frames().unwrap_or(0) - 4;
     assert!(
         (18..=24).contains(&proxy_frames),
-        "{proxy_frames} frames drew the proxy"
+        "{proxy_frames} frames drew the proxy since the step"
     );
     let [.., behind, last] = pictures.as_slice() else {
         panic!("{} frames", pictures.len());
@@ -857,5 +863,23 @@ fn a_large_mesh_is_drawn_from_its_motion_proxy_while_the_camera_moves() {
         view.base_image_counts().map(|[drawn, _]| drawn),
         Some(2),
         "drawn once more"
+    );
+
+    // A smaller view, as when a panel opens beside it, draws its image
+    // behind the proxy too, from its first frame.
+    let before = view.motion_proxy_frames().unwrap_or(0);
+    let mut resized = Vec::new();
+    while view.base_image_counts().is_some_and(|[drawn, _]| drawn < 3) && resized.len() < 10 {
+        resized.push(harness.frame(Vec::new(), |ui| {
+            ui.allocate_ui(Vec2::new(400.0, 300.0), |ui| {
+                view.ui(ui, &styles, &options);
+            });
+        }));
+    }
+    assert_eq!(resized.len(), 4, "four parts");
+    assert_eq!(
+        view.motion_proxy_frames(),
+        Some(before + 3),
+        "the proxy shows until the last"
     );
 }

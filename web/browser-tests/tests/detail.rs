@@ -1,8 +1,8 @@
 //! The level of detail in the browser: icosphere-20k seen whole, its edges
 //! a few pixels long, is drawn coarse (edges as lines, no vertex spheres,
 //! the selection in full); the cube in full; torus-200k, new, draws its
-//! base image a part a frame, and turns with its motion proxy. (Zooming
-//! across the switch is covered by the render test
+//! base image a part a frame behind its motion proxy, and turns with it.
+//! (Zooming across the switch is covered by the render test
 //! `a_dense_mesh_far_away_is_drawn_coarse_…`.)
 
 use std::time::Duration;
@@ -81,20 +81,23 @@ async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyho
 }
 
 /// A large new mesh draws its base image a part a frame, from the frame
-/// after the one that shows it: the page paints between the parts, each
-/// shows more of the mesh, and the last makes the image that is then kept.
+/// after the one that shows it, behind its motion proxy: the page paints
+/// between the parts, the proxy shows the whole torus meanwhile, and the
+/// finished image then takes its place and is kept.
 #[tokio::test]
-async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::Result<()> {
+async fn a_large_new_mesh_draws_its_base_image_over_several_frames_behind_its_proxy()
+-> anyhow::Result<()> {
     let browser = Browser::launch_on_sample("cube").await?;
     settle(&browser).await?;
-    let [drawn, copied] = base_image(&browser).await?;
+    let [drawn, _] = base_image(&browser).await?;
+    let proxied = proxy_frames(&browser).await?;
     let in_parts = browser
         .canvas_when(
             "window.edgewise.loadSample('torus-200k', { structure: 'half' });",
             &format!(
                 "(() => {{ const s = window.edgewise.state(); \
                  return s.mesh === 'torus-200k' && s.baseImage[0] === {drawn} \
-                 && s.baseImage[1] >= {copied} + 2; }})()"
+                 && s.motionProxy >= {proxied} + 2; }})()"
             ),
             "detail-torus-in-parts",
         )
@@ -105,11 +108,10 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::
             Duration::from_secs(60),
         )
         .await?;
-    let [_, copied_when_drawn] = base_image(&browser).await?;
+    let proxied_while_drawn = proxy_frames(&browser).await? - proxied;
     assert!(
-        copied_when_drawn >= copied + 4,
-        "the part drawn so far was shown in {} frames",
-        copied_when_drawn - copied
+        proxied_while_drawn >= 4,
+        "the proxy showed in {proxied_while_drawn} frames while the image was drawn"
     );
     settle(&browser).await?;
     // Read in a frame the app draws (a selection's), as the canvas keeps
@@ -121,27 +123,33 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames() -> anyhow::
             "detail-torus-whole",
         )
         .await?;
-    // The torus lies round the view's middle, left of the welcome card:
-    // count the pixels drawn there.
-    let backdrop = whole.pixel(5, 300);
-    let drawn_in = |shot: &edgewise_browser_tests::Screenshot| {
-        (60..320)
-            .flat_map(|y| (450..850).map(move |x| (x, y)))
-            .filter(|&(x, y)| {
-                let pixel = shot.pixel(x, y);
-                (0..3).any(|c| pixel[c].abs_diff(backdrop[c]) > 2)
-            })
-            .count()
-    };
-    let (partly, wholly) = (drawn_in(&in_parts), drawn_in(&whole));
+    let (partly, wholly) = (drawn_in_middle(&in_parts), drawn_in_middle(&whole));
     assert!(
-        partly > 1_000 && partly * 10 < wholly * 9,
-        "the first part draws some of the torus ({partly} pixels), the whole more ({wholly})"
+        wholly > 10_000 && partly.abs_diff(wholly) * 5 < wholly,
+        "while drawn, the proxy covers {partly} pixels, the torus {wholly}"
     );
     let [drawn_after, _] = base_image(&browser).await?;
     assert_eq!(drawn_after, drawn + 1, "then kept");
+    assert_eq!(
+        proxy_frames(&browser).await?,
+        proxied + proxied_while_drawn,
+        "and copied, not the proxy"
+    );
     browser.assert_no_console_errors().await?;
     browser.close().await
+}
+
+/// How many pixels of the view's middle, where the torus lies left of the
+/// welcome card, differ from the backdrop beside the view.
+fn drawn_in_middle(shot: &edgewise_browser_tests::Screenshot) -> usize {
+    let backdrop = shot.pixel(5, 300);
+    (60..320)
+        .flat_map(|y| (450..850).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let pixel = shot.pixel(x, y);
+            (0..3).any(|c| pixel[c].abs_diff(backdrop[c]) > 2)
+        })
+        .count()
 }
 
 /// Statements that press the mouse in the middle of `canvas` (declared by
@@ -192,12 +200,14 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
         .await?;
     settle(&browser).await?;
     let [drawn, _] = base_image(&browser).await?;
-    assert_eq!(proxy_frames(&browser).await?, 0, "not moved yet");
+    let at_rest = proxy_frames(&browser).await?;
+    settle(&browser).await?;
+    assert_eq!(proxy_frames(&browser).await?, at_rest, "not moved yet");
 
     let moving = browser
         .canvas_when(
             DRAG,
-            "window.edgewise.state().motionProxy >= 3",
+            &format!("window.edgewise.state().motionProxy >= {at_rest} + 3"),
             "detail-torus-moving",
         )
         .await?;
@@ -231,19 +241,8 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
         "a selection copies the image"
     );
 
-    // Both pictures show the torus over about the same pixels, but not the
-    // same picture: the proxy has far fewer lines.
-    let backdrop = rested.pixel(5, 300);
-    let drawn_in = |shot: &edgewise_browser_tests::Screenshot| {
-        (60..320)
-            .flat_map(|y| (450..850).map(move |x| (x, y)))
-            .filter(|&(x, y)| {
-                let pixel = shot.pixel(x, y);
-                (0..3).any(|c| pixel[c].abs_diff(backdrop[c]) > 2)
-            })
-            .count()
-    };
-    let (proxy_pixels, mesh_pixels) = (drawn_in(&moving), drawn_in(&rested));
+    // Both pictures show the torus over about the same pixels.
+    let (proxy_pixels, mesh_pixels) = (drawn_in_middle(&moving), drawn_in_middle(&rested));
     assert!(
         mesh_pixels > 10_000 && proxy_pixels.abs_diff(mesh_pixels) * 5 < mesh_pixels,
         "the proxy covers {proxy_pixels} pixels, the mesh {mesh_pixels}"

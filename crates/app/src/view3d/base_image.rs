@@ -19,10 +19,11 @@
 //! that showing a large mesh does not freeze the page for the whole drawing
 //! (about 220 ms for torus-200k under `SwiftShader`); until done, the part
 //! drawn so far is copied. Later images (a turn of the camera, a resize)
-//! are drawn whole, as the user is watching them follow the pointer;
-//! except that a mesh with a motion proxy (`motion_proxy.rs`), drawn from
-//! its proxy while the camera moves, draws its image in parts behind the
-//! proxy once the camera rests, and shows it when done.
+//! are drawn whole, as the user is watching them follow the pointer.
+//! A mesh with a motion proxy (`motion_proxy.rs`) draws every image in
+//! parts behind the proxy, which shows until the image is done: a new
+//! mesh's, a resized view's, and, once the camera rests, a turned one's
+//! (while the camera moves, the proxy is drawn and the image waits).
 
 use super::gpu::{FrameUniform, depth_format};
 
@@ -200,14 +201,17 @@ impl BaseImage {
             return Update::Kept;
         };
         let start = if continuing { self.drawn } else { 0 };
-        let end = if continuing || behind {
-            start.saturating_add(part.max(1)).min(total)
-        } else if self.geometry_id == Some(key.geometry_id) || total <= part {
-            total
-        } else {
+        let part = part.max(1);
+        let end = if continuing {
+            start.saturating_add(part).min(total)
+        } else if self.geometry_id != Some(key.geometry_id) && total > part {
             // A new large mesh's first frame uploads its buffers; the
             // parts begin in the next.
             0
+        } else if behind {
+            part.min(total)
+        } else {
+            total
         };
         let finished = end >= total;
         // A later part draws over the earlier ones, against their depth.

@@ -122,8 +122,10 @@ pub struct DrawFlags {
     /// How many lines and triangles a frame draws of a new mesh's base
     /// image.
     pub base_image_part: u32,
-    /// The camera is moving: a mesh with a motion proxy draws that in
-    /// place of its coarse lines and faces.
+    /// A large mesh's motion proxy stands in for its coarse lines and
+    /// faces while the camera moves and while the base image is drawn.
+    pub motion_proxy: bool,
+    /// The camera is moving.
     pub moving: bool,
 }
 
@@ -192,8 +194,9 @@ struct ViewBuffers {
     coarse: CoarseBuffers,
     /// The motion proxy's lines and faces; empty for a small mesh.
     proxy: CoarseBuffers,
-    /// The camera has rested after moving, and the base image is drawn a
-    /// part a frame behind the proxy, which shows until it is done.
+    /// The base image is drawn a part a frame behind the motion proxy,
+    /// which shows until it is done: after the camera moved, the view's
+    /// size changed, or a new mesh.
     refining: bool,
     /// Arrows, spheres and faces of the current geometry not yet uploaded:
     /// only full detail draws them, so a dense mesh seen from afar uploads
@@ -263,17 +266,16 @@ impl ViewCallback {
         frame
     }
 
-    /// Whether the moving camera draws `view`'s motion proxy.
-    fn moves_with_proxy(&self, view: &ViewBuffers) -> bool {
-        self.flags.coarse && self.flags.moving && view.proxy.primitive_count() > 0
+    /// Whether `view`'s coarse level of detail has a motion proxy to use.
+    fn has_proxy(&self, view: &ViewBuffers) -> bool {
+        self.flags.coarse && self.flags.motion_proxy && view.proxy.primitive_count() > 0
     }
 
     /// Whether this frame draws `view`'s motion proxy in place of its
     /// coarse lines and faces: while the camera moves, and then until the
     /// base image is drawn again.
     fn draws_proxy(&self, view: &ViewBuffers) -> bool {
-        self.moves_with_proxy(view)
-            || (view.refining && self.flags.coarse && view.proxy.primitive_count() > 0)
+        self.has_proxy(view) && (self.flags.moving || view.refining)
     }
 
     /// What the coarse base image must show this frame, if one is used:
@@ -371,15 +373,16 @@ impl CallbackTrait for ViewCallback {
         view.frame.write(queue, &self.frame_for(srgb));
 
         // The base image, drawn in this encoder before egui's pass (and
-        // after the uniform write above, which the queue applies first);
-        // while the camera moves with a proxy, it waits, and is then drawn
-        // behind the proxy.
+        // after the uniform write above, which the queue applies first).
+        // A mesh with a proxy draws any new image behind it, a part a
+        // frame; while the camera moves, the image waits.
         let base_key = self.base_key(srgb);
-        if self.moves_with_proxy(view) {
+        if self.has_proxy(view) && self.flags.moving {
             view.refining = base_key.is_some();
         } else if let Some(key) = base_key
             && view.geometry_id == self.geometry_id
         {
+            view.refining |= self.has_proxy(view) && !view.base_image.is_current(&key);
             let coarse = &renderers.coarse;
             let (frame_group, buffers) = (&view.base_image_frame, &view.coarse);
             let update = view.base_image.update(
