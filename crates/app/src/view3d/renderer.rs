@@ -198,6 +198,10 @@ struct ViewBuffers {
     /// which shows until it is done: after the camera moved, the view's
     /// size changed, or a new mesh.
     refining: bool,
+    /// The geometry was uploaded this frame: a large mesh's first frame
+    /// takes its buffers and draws no lines or faces, not even its proxy,
+    /// so that showing it costs no more than it must.
+    uploading: bool,
     /// Arrows, spheres and faces of the current geometry not yet uploaded:
     /// only full detail draws them, so a dense mesh seen from afar uploads
     /// them when first drawn so (most of torus-200k's 39 MB).
@@ -230,6 +234,7 @@ impl ViewBuffers {
             coarse: CoarseBuffers::default(),
             proxy: CoarseBuffers::default(),
             refining: false,
+            uploading: false,
             detail: None,
             detail_styles: Vec::new(),
             marks: None,
@@ -314,9 +319,11 @@ impl CallbackTrait for ViewCallback {
             .or_insert_with(|| ViewBuffers::new(device, frame_layout));
 
         // Uploads are skipped by id: each is taken once, then only drawn.
+        view.uploading = false;
         if let Some(geometry) = &self.geometry
             && geometry.id != view.geometry_id
         {
+            view.uploading = true;
             view.coarse.replace(device, &geometry.coarse);
             view.proxy = CoarseBuffers::default();
             if let Some(proxy) = &geometry.proxy {
@@ -443,7 +450,9 @@ impl CallbackTrait for ViewCallback {
             .is_some_and(|key| view.base_image.is_current(&key))
             && !self.draws_proxy(view);
 
-        let coarse = if self.draws_proxy(view) {
+        let coarse = if view.uploading && self.draws_proxy(view) {
+            &CoarseBuffers::EMPTY
+        } else if self.draws_proxy(view) {
             self.uploaded.proxy_drawn.fetch_add(1, Ordering::Relaxed);
             &view.proxy
         } else {
