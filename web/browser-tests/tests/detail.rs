@@ -102,27 +102,14 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames_behind_its_pr
             "detail-torus-in-parts",
         )
         .await?;
-    browser
-        .wait_for(
-            &format!("window.edgewise.state().baseImage[0] === {drawn} + 1"),
-            Duration::from_secs(60),
-        )
-        .await?;
+    until_base_image_drawn(&browser, drawn + 1).await?;
     let proxied_while_drawn = proxy_frames(&browser).await? - proxied;
     assert!(
         proxied_while_drawn >= 4,
         "the proxy showed in {proxied_while_drawn} frames while the image was drawn"
     );
     settle(&browser).await?;
-    // Read in a frame the app draws (a selection's), as the canvas keeps
-    // no picture between frames.
-    let whole = browser
-        .canvas_when(
-            "window.edgewise.select('vertex', 0);",
-            "window.edgewise.state().selection !== null",
-            "detail-torus-whole",
-        )
-        .await?;
+    let whole = canvas_on_selection(&browser, "detail-torus-whole").await?;
     let (partly, wholly) = (drawn_in_middle(&in_parts), drawn_in_middle(&whole));
     assert!(
         wholly > 10_000 && partly.abs_diff(wholly) * 5 < wholly,
@@ -137,6 +124,31 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames_behind_its_pr
     );
     browser.assert_no_console_errors().await?;
     browser.close().await
+}
+
+/// Waits until the base image has been drawn whole `count` times in all.
+async fn until_base_image_drawn(browser: &Browser, count: u64) -> anyhow::Result<()> {
+    browser
+        .wait_for(
+            &format!("window.edgewise.state().baseImage[0] >= {count}"),
+            Duration::from_secs(60),
+        )
+        .await
+}
+
+/// Selects vertex 0 and reads the canvas in the frame that shows it (the
+/// canvas keeps no picture between frames), saved as `name`.
+async fn canvas_on_selection(
+    browser: &Browser,
+    name: &str,
+) -> anyhow::Result<edgewise_browser_tests::Screenshot> {
+    browser
+        .canvas_when(
+            "window.edgewise.select('vertex', 0);",
+            "window.edgewise.state().selection !== null",
+            name,
+        )
+        .await
 }
 
 /// How many pixels of the view's middle, where the torus lies left of the
@@ -192,12 +204,7 @@ async fn proxy_frames(browser: &Browser) -> anyhow::Result<u64> {
 async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
 -> anyhow::Result<()> {
     let browser = Browser::launch_on_sample("torus-200k").await?;
-    browser
-        .wait_for(
-            "window.edgewise.state().baseImage[0] >= 1",
-            Duration::from_secs(60),
-        )
-        .await?;
+    until_base_image_drawn(&browser, 1).await?;
     settle(&browser).await?;
     let [drawn, _] = base_image(&browser).await?;
     let at_rest = proxy_frames(&browser).await?;
@@ -216,25 +223,12 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
     browser
         .eval("window.__release = true; return null;")
         .await?;
-    browser
-        .wait_for(
-            &format!("window.edgewise.state().baseImage[0] === {drawn} + 1"),
-            Duration::from_secs(60),
-        )
-        .await?;
+    until_base_image_drawn(&browser, drawn + 1).await?;
     settle(&browser).await?;
     let proxied = proxy_frames(&browser).await?;
     settle(&browser).await?;
     assert_eq!(proxy_frames(&browser).await?, proxied, "at rest, no proxy");
-    // Read in a frame the app draws (a selection's), as the canvas keeps
-    // no picture between frames.
-    let rested = browser
-        .canvas_when(
-            "window.edgewise.select('vertex', 0);",
-            "window.edgewise.state().selection !== null",
-            "detail-torus-rested",
-        )
-        .await?;
+    let rested = canvas_on_selection(&browser, "detail-torus-rested").await?;
     assert_eq!(
         proxy_frames(&browser).await?,
         proxied,
