@@ -335,8 +335,9 @@ impl GpuLink {
 }
 
 /// A mesh's view geometry made a slice at a time: the scene, each picking
-/// hierarchy, the GPU arrays, then the motion proxy. Run one slice per frame, a large mesh
-/// never freezes the page; [`View3d::show_prepared`] then shows it.
+/// hierarchy, the GPU arrays, then the motion proxy. Run one slice per
+/// frame, a large mesh never freezes the page; [`View3d::show_prepared`]
+/// then shows it.
 pub struct Preparation {
     geometry: Option<MeshGeometry>,
     scene: Option<Scene>,
