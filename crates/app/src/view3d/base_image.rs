@@ -164,6 +164,12 @@ impl BaseImage {
         self.drawn_for.as_ref() == Some(key)
     }
 
+    /// Whether the image for `key` is begun but not all of its `total`
+    /// primitives are drawn yet.
+    pub fn is_partial(&self, key: &BaseKey, total: u32) -> bool {
+        self.is_current(key) && self.drawn < total
+    }
+
     /// Draws the image for `key`, or its next part, with `draw`, which
     /// draws the given range of the image's `total` primitives (in an
     /// order where parts drawn one after the other give the whole). A new

@@ -192,13 +192,6 @@ pub struct CoarseBuffers {
 }
 
 impl CoarseBuffers {
-    /// No lines and no faces.
-    pub const EMPTY: Self = Self {
-        positions: None,
-        lines: None,
-        triangles: None,
-    };
-
     fn line_count(&self) -> u32 {
         self.lines.as_ref().map_or(0, |l| l.count / 2)
     }

@@ -194,10 +194,6 @@ struct ViewBuffers {
     coarse: CoarseBuffers,
     /// The motion proxy's lines and faces; empty for a small mesh.
     proxy: CoarseBuffers,
-    /// The base image is drawn a part a frame behind the motion proxy,
-    /// which shows until it is done: after the camera moved, the view's
-    /// size changed, or a new mesh.
-    refining: bool,
     /// The geometry was uploaded this frame: a large mesh's first frame
     /// takes its buffers and draws no lines or faces, not even its proxy,
     /// so that showing it costs no more than it must.
@@ -233,7 +229,6 @@ impl ViewBuffers {
             full_faces: FaceBuffers::new("view3d full faces", "view3d full face styles"),
             coarse: CoarseBuffers::default(),
             proxy: CoarseBuffers::default(),
-            refining: false,
             uploading: false,
             detail: None,
             detail_styles: Vec::new(),
@@ -277,10 +272,16 @@ impl ViewCallback {
     }
 
     /// Whether this frame draws `view`'s motion proxy in place of its
-    /// coarse lines and faces: while the camera moves, and then until the
-    /// base image is drawn again.
-    fn draws_proxy(&self, view: &ViewBuffers) -> bool {
-        self.has_proxy(view) && (self.flags.moving || view.refining)
+    /// coarse lines and faces: while the camera moves, and while the base
+    /// image is drawn a part a frame behind it (after the camera moved, the
+    /// view's size changed, or a new mesh).
+    fn draws_proxy(&self, view: &ViewBuffers, srgb: bool) -> bool {
+        self.has_proxy(view)
+            && (self.flags.moving
+                || self.base_key(srgb).is_some_and(|key| {
+                    view.base_image
+                        .is_partial(&key, view.coarse.primitive_count())
+                }))
     }
 
     /// What the coarse base image must show this frame, if one is used:
@@ -383,13 +384,12 @@ impl CallbackTrait for ViewCallback {
         // after the uniform write above, which the queue applies first).
         // A mesh with a proxy draws any new image behind it, a part a
         // frame; while the camera moves, the image waits.
-        let base_key = self.base_key(srgb);
         if self.has_proxy(view) && self.flags.moving {
-            view.refining = base_key.is_some();
-        } else if let Some(key) = base_key
+            // The image waits.
+        } else if let Some(key) = self.base_key(srgb)
             && view.geometry_id == self.geometry_id
         {
-            view.refining |= self.has_proxy(view) && !view.base_image.is_current(&key);
+            let behind = self.has_proxy(view);
             let coarse = &renderers.coarse;
             let (frame_group, buffers) = (&view.base_image_frame, &view.coarse);
             let update = view.base_image.update(
@@ -399,7 +399,7 @@ impl CallbackTrait for ViewCallback {
                 key,
                 buffers.primitive_count(),
                 self.flags.base_image_part,
-                view.refining,
+                behind,
                 |pass, part| {
                     frame_group.write(queue, &key.frame);
                     frame_group.bind(pass);
@@ -415,9 +415,6 @@ impl CallbackTrait for ViewCallback {
                         .fetch_add(1, Ordering::Relaxed);
                 }
             }
-            view.refining &= update == base_image::Update::Part;
-        } else {
-            view.refining = false;
         }
         Vec::new()
     }
@@ -441,18 +438,19 @@ impl CallbackTrait for ViewCallback {
         }
         view.frame.bind(pass);
         let viewport = info.viewport_in_pixels();
-        let from_image = self
-            .base_key(renderers.srgb_target)
-            .filter(|key| {
-                [i64::from(key.size[0]), i64::from(key.size[1])]
-                    == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
-            })
-            .is_some_and(|key| view.base_image.is_current(&key))
-            && !self.draws_proxy(view);
+        let draws_proxy = self.draws_proxy(view, renderers.srgb_target);
+        let from_image = !draws_proxy
+            && self
+                .base_key(renderers.srgb_target)
+                .filter(|key| {
+                    [i64::from(key.size[0]), i64::from(key.size[1])]
+                        == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
+                })
+                .is_some_and(|key| view.base_image.is_current(&key));
 
-        let coarse = if view.uploading && self.draws_proxy(view) {
-            &CoarseBuffers::EMPTY
-        } else if self.draws_proxy(view) {
+        let coarse = if view.uploading && draws_proxy {
+            &CoarseBuffers::default()
+        } else if draws_proxy {
             self.uploaded.proxy_drawn.fetch_add(1, Ordering::Relaxed);
             &view.proxy
         } else {
