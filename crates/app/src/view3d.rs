@@ -375,9 +375,9 @@ impl Preparation {
             (2, Some(scene)) => self.accel.build(scene, ElementKind::Edge),
             (3, Some(scene)) => self.accel.build(scene, ElementKind::Face),
             (4, Some(scene)) if self.with_gpu => self.upload = Some(Self::upload(scene)),
-            (5, _) => {
+            (5, Some(scene)) => {
                 if let Some(upload) = &mut self.upload {
-                    upload.proxy = motion_proxy::proxy(&upload.coarse);
+                    upload.proxy = motion_proxy::proxy(&upload.coarse, scene.bounds);
                 }
             }
             _ => {}
@@ -523,7 +523,7 @@ impl View3d {
         if let Some(gpu) = &mut self.gpu {
             let mut upload = prepared.upload.take().unwrap_or_else(|| {
                 let mut upload = Preparation::upload(&self.scene);
-                upload.proxy = motion_proxy::proxy(&upload.coarse);
+                upload.proxy = motion_proxy::proxy(&upload.coarse, self.scene.bounds);
                 upload
             });
             upload.id = self.geometry_id;

@@ -15,6 +15,8 @@
 //! several fall in the same cubes). It needs no connectivity, so it takes
 //! whatever the coarse view draws, broken meshes included.
 
+use glam::Vec3;
+
 use super::coarse::CoarseGeometry;
 
 /// Meshes of more than this many coarse lines and triangles get a proxy:
@@ -38,24 +40,23 @@ const ATTEMPTS: usize = 8;
 /// A vertex that is in no cluster (its position is not finite).
 const NONE: u32 = u32::MAX;
 
-/// The proxy of `coarse`, or `None` when it has at most [`PROXY_ABOVE`]
-/// lines and triangles.
-pub fn proxy(coarse: &CoarseGeometry) -> Option<CoarseGeometry> {
-    (primitive_count(coarse) > PROXY_ABOVE).then(|| simplify(coarse, PROXY_PRIMITIVES))
+/// The proxy of `coarse`, whose finite positions lie in `bounds` (the
+/// scene's), or `None` when it has at most [`PROXY_ABOVE`] lines and
+/// triangles.
+pub fn proxy(coarse: &CoarseGeometry, bounds: (Vec3, Vec3)) -> Option<CoarseGeometry> {
+    (primitive_count(coarse) > PROXY_ABOVE).then(|| simplify(coarse, bounds, PROXY_PRIMITIVES))
 }
 
 fn primitive_count(geometry: &CoarseGeometry) -> usize {
     geometry.lines.len() / 2 + geometry.triangles.len() / 3
 }
 
-/// `coarse` clustered on the finest grid that leaves at most about
-/// `target` lines and triangles.
-pub fn simplify(coarse: &CoarseGeometry, target: usize) -> CoarseGeometry {
+/// `coarse`, whose finite positions lie in `bounds`, clustered on the
+/// finest grid that leaves at most about `target` lines and triangles.
+pub fn simplify(coarse: &CoarseGeometry, bounds: (Vec3, Vec3), target: usize) -> CoarseGeometry {
     let target = target.max(1);
-    let Some((min, max)) = bounds(&coarse.positions) else {
-        return CoarseGeometry::default();
-    };
-    let extent = (0..3).map(|a| max[a] - min[a]).fold(0.0_f64, f64::max);
+    let min = bounds.0.to_array().map(f64::from);
+    let extent = f64::from((bounds.1 - bounds.0).max_element());
     // No grid finer than the cell numbers can span.
     let finest = extent / f64::from(CELL_MAX) * 1.01;
     let mut cell = first_cell(coarse, target).max(finest);
@@ -74,21 +75,6 @@ pub fn simplify(coarse: &CoarseGeometry, target: usize) -> CoarseGeometry {
         cell *= (count as f64 / target as f64).sqrt().max(1.1);
     }
     proxy
-}
-
-/// The least and greatest corner of the finite positions.
-fn bounds(positions: &[[f32; 3]]) -> Option<([f64; 3], [f64; 3])> {
-    let mut finite = positions
-        .iter()
-        .filter(|p| p.iter().all(|c| c.is_finite()))
-        .map(|p| p.map(f64::from));
-    let first = finite.next()?;
-    Some(finite.fold((first, first), |(lo, hi), p| {
-        (
-            std::array::from_fn(|a| lo[a].min(p[a])),
-            std::array::from_fn(|a| hi[a].max(p[a])),
-        )
-    }))
 }
 
 /// A first guess at the cell: a surface of area A crosses about 1.3 A / h²
@@ -212,6 +198,18 @@ fn cluster(coarse: &CoarseGeometry, min: [f64; 3], cell: f64) -> CoarseGeometry 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::view3d::MeshGeometry;
+    use crate::view3d::scene::Scene;
+
+    /// The bounds the scene of `geometry`'s positions finds.
+    fn scene_bounds(geometry: &CoarseGeometry) -> (Vec3, Vec3) {
+        let positions = geometry.positions.iter().map(|&p| Vec3::from(p)).collect();
+        Scene::new(MeshGeometry {
+            positions,
+            ..MeshGeometry::default()
+        })
+        .bounds
+    }
 
     /// A grid of `n`×`n` squares in the plane z = 0, each two triangles,
     /// with every square's four sides as lines (shared sides twice, as a
@@ -240,19 +238,20 @@ mod tests {
     fn a_large_mesh_is_cut_to_about_the_target_and_a_small_one_has_no_proxy() {
         let large = grid(300);
         assert!(primitive_count(&large) > PROXY_ABOVE);
-        let proxy = proxy(&large).expect("a proxy for 450k primitives");
+        let proxy = proxy(&large, scene_bounds(&large)).expect("a proxy for 450k primitives");
         let count = primitive_count(&proxy);
         assert!(
             (PROXY_PRIMITIVES / 4..=PROXY_PRIMITIVES).contains(&count),
             "{count} primitives"
         );
-        assert!(super::proxy(&grid(100)).is_none());
+        let small = grid(100);
+        assert!(super::proxy(&small, scene_bounds(&small)).is_none());
     }
 
     #[test]
     fn the_proxy_covers_the_mesh_with_valid_triangles_that_keep_their_winding() {
         let mesh = grid(60);
-        let proxy = simplify(&mesh, 2_000);
+        let proxy = simplify(&mesh, scene_bounds(&mesh), 2_000);
         assert!(primitive_count(&proxy) <= 2_000);
         let count = proxy.positions.len() as u32;
         assert!(
@@ -262,7 +261,7 @@ mod tests {
                 .chain(&proxy.triangles)
                 .all(|&v| v < count)
         );
-        let (min, max) = bounds(&proxy.positions).expect("positions");
+        let (min, max) = scene_bounds(&proxy);
         // Cluster means lie inside the mesh and reach near its corners.
         for a in 0..2 {
             assert!(min[a] >= 0.0 && min[a] < 3.0, "{min:?}");
@@ -270,7 +269,7 @@ mod tests {
         }
         // Every triangle still faces +z, as the grid's do.
         for t in proxy.triangles.chunks_exact(3) {
-            let p = |i: u32| glam::Vec3::from(proxy.positions[i as usize]);
+            let p = |i: u32| Vec3::from(proxy.positions[i as usize]);
             let normal = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
             assert!(normal.z > 0.0, "{t:?} turned over");
         }
@@ -287,7 +286,7 @@ mod tests {
         mesh.positions[0] = [f32::NAN, 0.0, 0.0];
         mesh.lines.extend([999, 1]);
         mesh.triangles.extend([1, 2, 999]);
-        let proxy = simplify(&mesh, 1_000_000);
+        let proxy = simplify(&mesh, scene_bounds(&mesh), 1_000_000);
         // The finest grid keeps every other vertex apart: one fewer in all.
         assert_eq!(proxy.positions.len(), mesh.positions.len() - 1);
         assert!(
@@ -307,11 +306,11 @@ mod tests {
             lines: vec![0, 1],
             triangles: vec![0, 1, 2],
         };
-        let proxy = simplify(&one, 10);
+        let proxy = simplify(&one, scene_bounds(&one), 10);
         assert_eq!(proxy.positions.len(), 1);
         assert!(proxy.lines.is_empty() && proxy.triangles.is_empty());
         assert_eq!(
-            simplify(&CoarseGeometry::default(), 10),
+            simplify(&CoarseGeometry::default(), (Vec3::ZERO, Vec3::ZERO), 10),
             CoarseGeometry::default()
         );
     }
