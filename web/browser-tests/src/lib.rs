@@ -19,6 +19,19 @@ pub mod proxy;
 /// How long the page may take to download, compile and start the wasm.
 const START_TIMEOUT: Duration = Duration::from_secs(120);
 
+/// JavaScript that declares `fireMouse(target, type, x, y, buttons)`: the
+/// pointer event and then the mouse event `type` (`'move'`, `'down'`,
+/// `'up'`) of the primary mouse at client `(x, y)`, with `buttons` held, as
+/// a browser sends them to `target`.
+pub const FIRE_MOUSE: &str = "
+  const fireMouse = (target, type, x, y, buttons) => {
+    const init = { clientX: x, clientY: y, bubbles: true, cancelable: true,
+                   pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons };
+    target.dispatchEvent(new PointerEvent('pointer' + type, init));
+    target.dispatchEvent(new MouseEvent('mouse' + type, init));
+  };
+";
+
 /// Options for launching the browser.
 #[derive(Clone, Debug)]
 pub struct LaunchOptions {

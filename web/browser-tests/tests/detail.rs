@@ -7,7 +7,7 @@
 
 use std::time::Duration;
 
-use edgewise_browser_tests::Browser;
+use edgewise_browser_tests::{Browser, FIRE_MOUSE};
 
 /// Waits a few animation frames, for the view to draw what changed.
 async fn settle(browser: &Browser) -> anyhow::Result<()> {
@@ -167,17 +167,12 @@ fn drawn_in_middle(shot: &edgewise_browser_tests::Screenshot) -> usize {
 /// Statements that press the mouse in the middle of `canvas` (declared by
 /// [`Browser::canvas_when`]) and drag it left and right, a pointer move per
 /// animation frame, until `window.__release` is set; the mouse is then
-/// released.
+/// released. They follow [`FIRE_MOUSE`].
 const DRAG: &str = "
   const r = canvas.getBoundingClientRect();
   const y = r.top + r.height * 0.4;
   let x = r.left + r.width * 0.4, step = 4;
-  const fire = (type, buttons) => {
-    const init = { clientX: x, clientY: y, bubbles: true, cancelable: true,
-                   pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0, buttons };
-    canvas.dispatchEvent(new PointerEvent('pointer' + type, init));
-    canvas.dispatchEvent(new MouseEvent('mouse' + type, init));
-  };
+  const fire = (type, buttons) => fireMouse(canvas, type, x, y, buttons);
   window.__release = false;
   fire('move', 0);
   fire('down', 1);
@@ -213,7 +208,7 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
 
     let moving = browser
         .canvas_when(
-            DRAG,
+            &format!("{FIRE_MOUSE}{DRAG}"),
             &format!("window.edgewise.state().motionProxy >= {at_rest} + 3"),
             "detail-torus-moving",
         )

@@ -13,7 +13,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Context as _;
-use edgewise_browser_tests::{Browser, LaunchOptions};
+use edgewise_browser_tests::{Browser, FIRE_MOUSE, LaunchOptions};
 use serde_json::{Value, json};
 
 /// How long each orbit is measured.
@@ -93,13 +93,8 @@ fn orbit(seconds: f64) -> String {
            const r = canvas.getBoundingClientRect();
            const y = r.top + r.height * 0.4;
            let x = r.left + r.width * 0.3;
-           const fire = (type, x, buttons) => {{
-             const init = {{ clientX: x, clientY: y, bubbles: true, cancelable: true,
-                            pointerId: 1, pointerType: 'mouse', isPrimary: true,
-                            button: 0, buttons }};
-             canvas.dispatchEvent(new PointerEvent('pointer' + type, init));
-             canvas.dispatchEvent(new MouseEvent('mouse' + type, init));
-           }};
+           {FIRE_MOUSE}
+           const fire = (type, x, buttons) => fireMouse(canvas, type, x, y, buttons);
            fire('move', x, 0);
            fire('down', x, 1);
            const before = window.edgewise.state().frames;
