@@ -266,6 +266,11 @@ fn base_image_part() -> u32 {
 /// whole mesh between two moves.
 const MOTION_SETTLE: f64 = 0.3;
 
+/// How far, in points, the base image's copy reaches past the projection
+/// of the mesh's bounding box: its lines are a pixel wide, and rounding to
+/// pixels moves an edge by less than one.
+const MESH_EXTENT_MARGIN: f32 = 2.0;
+
 impl Default for ViewOptions {
     fn default() -> Self {
         Self {
@@ -1047,6 +1052,9 @@ impl View3d {
                 pixel_span(rect.min.x, rect.max.x, pixels_per_point),
                 pixel_span(rect.min.y, rect.max.y, pixels_per_point),
             ],
+            mesh_extent: transforms
+                .screen_rect_of_box(self.scene.bounds)
+                .map(|extent| extent.expand(MESH_EXTENT_MARGIN)),
             repaint: painter.ctx().clone(),
         };
         painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));

@@ -601,13 +601,7 @@ fn the_coarse_base_image_draws_what_drawing_directly_does() {
     );
     // Blending into the image and then over the backdrop rounds to 8 bits
     // twice; no channel may move further than that.
-    let worst = copied
-        .pixels
-        .iter()
-        .zip(&drawn.pixels)
-        .map(|(a, b)| a.abs_diff(*b))
-        .max()
-        .unwrap_or(0);
+    let worst = worst_channel_difference(&copied.pixels, &drawn.pixels);
     if worst > 2 {
         copied.save("base_image_copied.png");
         drawn.save("base_image_drawn.png");
@@ -654,6 +648,30 @@ fn the_coarse_base_image_draws_what_drawing_directly_does() {
     };
     harness.show(&mut view, &stepped, &solid, Vec::new());
     assert_eq!(view.base_image_counts(), Some([2, 6]), "solid faces hide");
+
+    // Off the view's centre, the copy, which covers only the part of the
+    // view the mesh can reach, still misses none of it.
+    camera.target = [0.9, 0.6, 0.0];
+    view.set_camera(camera);
+    let (copied_aside, _) = harness.show(&mut view, &styles, &from_image, Vec::new());
+    assert_eq!(view.base_image_counts(), Some([3, 8]));
+    let (drawn_aside, _) = harness.show(&mut view, &styles, &direct, Vec::new());
+    assert_ne!(drawn_aside.pixels, drawn.pixels, "the mesh moved");
+    let worst = worst_channel_difference(&copied_aside.pixels, &drawn_aside.pixels);
+    if worst > 2 {
+        copied_aside.save("base_image_aside_copied.png");
+        drawn_aside.save("base_image_aside_drawn.png");
+    }
+    assert!(worst <= 2, "aside, a channel differs by {worst}");
+}
+
+/// The largest difference of any channel of any pixel between two images.
+fn worst_channel_difference(a: &[u8], b: &[u8]) -> u8 {
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| a.abs_diff(*b))
+        .max()
+        .unwrap_or(0)
 }
 
 /// A new mesh's base image is drawn a part a frame, each frame asking for

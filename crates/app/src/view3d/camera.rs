@@ -259,6 +259,30 @@ impl ViewTransforms {
         Some((pos, clip.w))
     }
 
+    /// The rectangle on screen (points), within the view, that holds the
+    /// projection of the box between `min` and `max`; `None` where a corner
+    /// lies behind the eye, whose projection has no bound, or is not finite.
+    pub fn screen_rect_of_box(&self, (min, max): (Vec3, Vec3)) -> Option<Rect> {
+        let mut rect = Rect::NOTHING;
+        for corner in 0..8 {
+            let pick = |bit: usize, low: f32, high: f32| {
+                if corner & bit == 0 { low } else { high }
+            };
+            let world = Vec3::new(
+                pick(1, min.x, max.x),
+                pick(2, min.y, max.y),
+                pick(4, min.z, max.z),
+            );
+            let (pos, _) = self.project(world)?;
+            // `Rect::extend_with` would skip a NaN rather than spread it.
+            if !pos.is_finite() {
+                return None;
+            }
+            rect.extend_with(pos);
+        }
+        Some(rect.intersect(self.viewport))
+    }
+
     /// The ray from the eye through a point on screen.
     pub fn ray(&self, screen: Pos2) -> Ray {
         let x = (screen.x - self.viewport.left()) / self.viewport.width().max(1.0) * 2.0 - 1.0;
@@ -326,6 +350,44 @@ mod tests {
         let along = (point - ray.origin).dot(ray.direction);
         let closest = ray.at(along);
         assert!((closest - point).length() < 1e-4, "{closest} vs {point}");
+    }
+
+    #[test]
+    fn a_box_in_front_projects_into_its_screen_rect() {
+        let camera = Camera::default();
+        let t = ViewTransforms::new(camera, viewport(), Vec3::ZERO, 2.0);
+        let (min, max) = (Vec3::new(-0.5, -0.2, -0.3), Vec3::new(0.6, 0.4, 0.2));
+        let rect = t
+            .screen_rect_of_box((min, max))
+            .expect("in front of the eye");
+        assert!(viewport().contains_rect(rect), "{rect:?}");
+        assert!(rect.width() > 10.0 && rect.height() > 10.0, "{rect:?}");
+        // Points inside the box, the corners among them, land inside it.
+        for i in 0..=4 {
+            for j in 0..=4 {
+                for k in 0..=4 {
+                    let at = Vec3::new(i as f32, j as f32, k as f32) / 4.0;
+                    let (pos, _) = t.project(min + (max - min) * at).unwrap();
+                    assert!(rect.expand(1e-3).contains(pos), "{pos:?} outside {rect:?}");
+                }
+            }
+        }
+        // A box larger than the view is cut to it.
+        let huge = t.screen_rect_of_box((Vec3::splat(-0.9), Vec3::splat(0.9)));
+        assert!(
+            huge.is_some_and(|r| viewport().contains_rect(r)),
+            "{huge:?}"
+        );
+    }
+
+    #[test]
+    fn a_box_around_the_eye_has_no_screen_rect() {
+        let camera = Camera::default();
+        let t = ViewTransforms::new(camera, viewport(), Vec3::ZERO, 2.0);
+        let around = (t.eye - Vec3::ONE, t.eye + Vec3::ONE);
+        assert_eq!(t.screen_rect_of_box(around), None);
+        let nan = (Vec3::splat(f32::NAN), Vec3::ONE);
+        assert_eq!(t.screen_rect_of_box(nan), None);
     }
 
     #[test]
