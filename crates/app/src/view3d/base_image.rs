@@ -2,10 +2,10 @@
 //! faces drawn once into a texture the size of the view, then copied to the
 //! screen each frame until the camera, the mesh, the colours or the view's
 //! size change (only within the projection of the mesh's bounding box, as
-//! a software renderer pays for each pixel copied). A selection, a trace step or a panel repainting over an
-//! unchanged view then costs one copy and the highlighted elements, however
-//! large the mesh; a software renderer otherwise redraws every line and
-//! face of it.
+//! a software renderer pays for each pixel copied). A selection, a trace
+//! step or a panel repainting over an unchanged view then costs one copy
+//! and the highlighted elements, however large the mesh; a software
+//! renderer otherwise redraws every line and face of it.
 //!
 //! The image is premultiplied: cleared to transparent, with faces blended
 //! over the lines as on screen, so copying it over the backdrop gives what

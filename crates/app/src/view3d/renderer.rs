@@ -257,7 +257,8 @@ pub struct ViewCallback {
     /// Where on screen (points) the mesh can be, or `None` for anywhere in
     /// the view: the base image is copied there only, as a software
     /// renderer pays for every pixel the copy covers (about 9 ms a frame
-    /// for a whole 1280×540 view under `SwiftShader`).
+    /// for the whole view in `cargo xtask bench-web`'s window, under
+    /// `SwiftShader`).
     pub mesh_extent: Option<egui::Rect>,
     /// Asked for another frame while the base image is drawn in parts.
     pub repaint: egui::Context,
