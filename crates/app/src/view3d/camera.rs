@@ -132,6 +132,19 @@ impl Camera {
     }
 }
 
+/// The corners of a box about the origin with half-sides of 1: a box's
+/// corners are its centre plus its half-sides times each.
+const CORNER_SIGNS: [Vec3; 8] = [
+    Vec3::new(-1.0, -1.0, -1.0),
+    Vec3::new(1.0, -1.0, -1.0),
+    Vec3::new(-1.0, 1.0, -1.0),
+    Vec3::new(1.0, 1.0, -1.0),
+    Vec3::new(-1.0, -1.0, 1.0),
+    Vec3::new(1.0, -1.0, 1.0),
+    Vec3::new(-1.0, 1.0, 1.0),
+    Vec3::new(1.0, 1.0, 1.0),
+];
+
 impl Camera {
     /// Points at the box `min`–`max` from just far enough away that its
     /// corners fit in a viewport of the given aspect ratio, keeping the
@@ -163,9 +176,8 @@ impl Camera {
         let tan_y = (FOV_Y * 0.5).tan() / 1.08;
         let tan_x = tan_y * aspect;
         let mut distance = 0.0_f32;
-        for corner in 0..8 {
-            let sign = |bit: u32| if corner & bit == 0 { -1.0 } else { 1.0 };
-            let c = half * Vec3::new(sign(1), sign(2), sign(4));
+        for sign in CORNER_SIGNS {
+            let c = half * sign;
             let (x, y, z) = (c.dot(right), c.dot(up), c.dot(back));
             distance = distance.max(z + x.abs() / tan_x).max(z + y.abs() / tan_y);
         }
@@ -263,17 +275,10 @@ impl ViewTransforms {
     /// projection of the box between `min` and `max`; `None` where a corner
     /// lies behind the eye, whose projection has no bound, or is not finite.
     pub fn screen_rect_of_box(&self, (min, max): (Vec3, Vec3)) -> Option<Rect> {
+        let (center, half) = ((min + max) * 0.5, (max - min) * 0.5);
         let mut rect = Rect::NOTHING;
-        for corner in 0..8 {
-            let pick = |bit: usize, low: f32, high: f32| {
-                if corner & bit == 0 { low } else { high }
-            };
-            let world = Vec3::new(
-                pick(1, min.x, max.x),
-                pick(2, min.y, max.y),
-                pick(4, min.z, max.z),
-            );
-            let (pos, _) = self.project(world)?;
+        for sign in CORNER_SIGNS {
+            let (pos, _) = self.project(center + half * sign)?;
             // `Rect::extend_with` would skip a NaN rather than spread it.
             if !pos.is_finite() {
                 return None;
