@@ -320,6 +320,47 @@ fn solid_tetrahedron_with_hover() {
     assert!(response.hovered.is_some(), "{response:?}");
 }
 
+/// On an sRGB target the view's pipelines convert colours to linear (their
+/// `srgb_target` constant), so what is read back matches a plain target's
+/// picture; without the conversion every lit pixel would come out lighter.
+#[test]
+fn an_srgb_target_shows_what_a_plain_target_does() {
+    let (Some(plain), Some(srgb)) = (
+        support::gpu::render_state(),
+        support::gpu::render_state_for(wgpu::TextureFormat::Rgba8UnormSrgb),
+    ) else {
+        eprintln!("no wgpu adapter: skipped");
+        return;
+    };
+    let geometry = geometry(&generate::cube(), Structure::HalfEdge);
+    let styles = styles_for(&geometry);
+    // Solid faces: every pixel of the mesh opaque, so no blending (done in
+    // linear light on an sRGB target) moves it.
+    let options = ViewOptions {
+        solid_faces: true,
+        draw_ids: DrawIds::Never,
+        ..ViewOptions::default()
+    };
+    let [plain_image, srgb_image] = [plain, srgb].map(|rs| {
+        let harness = Harness::new(rs.clone(), [320, 240]);
+        let mut view = View3d::new(Some(&rs));
+        view.set_geometry(geometry.clone(), true);
+        harness.show(&mut view, &styles, &options, Vec::new()).0
+    });
+    srgb_image.save("srgb_target_cube.png");
+    let pixels = plain_image.pixels.chunks_exact(4);
+    let drawn = pixels.clone().filter(|p| p[..3] != [0, 0, 0]).count();
+    let differing = pixels
+        .zip(srgb_image.pixels.chunks_exact(4))
+        .filter(|(a, b)| a.iter().zip(*b).any(|(a, b)| a.abs_diff(*b) > 3))
+        .count();
+    assert!(drawn > 320 * 240 / 10, "the cube covers {drawn} pixels");
+    assert!(
+        differing * 100 < drawn,
+        "{differing} of the {drawn} pixels drawn differ between the targets"
+    );
+}
+
 #[test]
 fn torus_20k_faces() {
     let Some(rs) = support::gpu::render_state() else {

@@ -26,7 +26,7 @@
 //! mesh's, a resized view's, and, once the camera rests, a turned one's
 //! (while the camera moves, the proxy is drawn and the image waits).
 
-use super::gpu::{FrameUniform, depth_format};
+use super::gpu::{FrameUniform, TargetConstants, depth_format};
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
@@ -80,13 +80,14 @@ impl BaseImageRenderer {
             label: Some("view3d base image"),
             source: wgpu::ShaderSource::Wgsl(SHADER.into()),
         });
+        let constants = TargetConstants::new(target_format);
         let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("view3d base image"),
             layout: Some(&pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &shader,
                 entry_point: Some("vs_base_image"),
-                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                compilation_options: constants.options(),
                 buffers: &[],
             },
             primitive: wgpu::PrimitiveState::default(),
@@ -101,7 +102,7 @@ impl BaseImageRenderer {
             fragment: Some(wgpu::FragmentState {
                 module: &shader,
                 entry_point: Some("fs_base_image"),
-                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                compilation_options: constants.options(),
                 targets: &[Some(wgpu::ColorTargetState {
                     format: target_format,
                     blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),

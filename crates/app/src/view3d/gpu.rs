@@ -136,6 +136,27 @@ pub struct PipelineFactory<'a> {
     pub device: &'a wgpu::Device,
     layout: wgpu::PipelineLayout,
     target_format: wgpu::TextureFormat,
+    constants: TargetConstants,
+}
+
+/// The values of common.wgsl's pipeline-overridable constants for a target
+/// format, which every pipeline of the view passes to both its stages.
+pub struct TargetConstants([(&'static str, f64); 1]);
+
+impl TargetConstants {
+    pub fn new(target_format: wgpu::TextureFormat) -> Self {
+        Self([(
+            "srgb_target",
+            if target_format.is_srgb() { 1.0 } else { 0.0 },
+        )])
+    }
+
+    pub fn options(&self) -> wgpu::PipelineCompilationOptions<'_> {
+        wgpu::PipelineCompilationOptions {
+            constants: &self.0,
+            ..wgpu::PipelineCompilationOptions::default()
+        }
+    }
 }
 
 impl<'a> PipelineFactory<'a> {
@@ -153,6 +174,7 @@ impl<'a> PipelineFactory<'a> {
             device,
             layout,
             target_format,
+            constants: TargetConstants::new(target_format),
         }
     }
 
@@ -185,7 +207,7 @@ impl<'a> PipelineFactory<'a> {
                 vertex: wgpu::VertexState {
                     module: spec.shader,
                     entry_point: Some(spec.vertex_entry),
-                    compilation_options: wgpu::PipelineCompilationOptions::default(),
+                    compilation_options: self.constants.options(),
                     buffers: spec.buffers,
                 },
                 primitive: wgpu::PrimitiveState {
@@ -216,7 +238,7 @@ impl<'a> PipelineFactory<'a> {
                 fragment: Some(wgpu::FragmentState {
                     module: spec.shader,
                     entry_point: Some(spec.fragment_entry),
-                    compilation_options: wgpu::PipelineCompilationOptions::default(),
+                    compilation_options: self.constants.options(),
                     targets: &[Some(wgpu::ColorTargetState {
                         format: self.target_format,
                         blend: Some(blend),

@@ -139,7 +139,6 @@ pub struct Renderers {
     faces: FaceRenderer,
     orientation: OrientationRenderer,
     base_image: BaseImageRenderer,
-    srgb_target: bool,
     views: HashMap<u64, ViewBuffers>,
 }
 
@@ -156,7 +155,6 @@ impl Renderers {
             orientation: OrientationRenderer::new(&factory),
             base_image: BaseImageRenderer::new(device, &frame_layout, target_format),
             frame_layout,
-            srgb_target: target_format.is_srgb(),
             views: HashMap::new(),
         }
     }
@@ -265,13 +263,6 @@ pub struct ViewCallback {
 }
 
 impl ViewCallback {
-    /// The frame uniform for a target that is sRGB or not.
-    fn frame_for(&self, srgb: bool) -> FrameUniform {
-        let mut frame = self.frame;
-        frame.params[0] = if srgb { 1.0 } else { 0.0 };
-        frame
-    }
-
     /// Whether `view`'s coarse level of detail has a motion proxy to use.
     fn has_proxy(&self, view: &ViewBuffers) -> bool {
         self.flags.coarse && self.flags.motion_proxy && view.proxy.primitive_count() > 0
@@ -281,10 +272,10 @@ impl ViewCallback {
     /// coarse lines and faces: while the camera moves, and while the base
     /// image is drawn a part a frame behind it (after the camera moved, the
     /// view's size changed, or a new mesh).
-    fn draws_proxy(&self, view: &ViewBuffers, srgb: bool) -> bool {
+    fn draws_proxy(&self, view: &ViewBuffers) -> bool {
         self.has_proxy(view)
             && (self.flags.moving
-                || self.base_key(srgb).is_some_and(|key| {
+                || self.base_key().is_some_and(|key| {
                     view.base_image
                         .is_partial(&key, view.coarse.primitive_count())
                 }))
@@ -329,9 +320,9 @@ impl ViewCallback {
 
     /// What the coarse base image must show this frame, if one is used:
     /// only behind see-through faces, which hide nothing.
-    fn base_key(&self, srgb: bool) -> Option<BaseKey> {
+    fn base_key(&self) -> Option<BaseKey> {
         (self.flags.coarse && self.flags.base_image && !self.flags.solid_faces).then(|| {
-            let mut frame = self.frame_for(srgb);
+            let mut frame = self.frame;
             // Drawn unfaded; the copy fades it.
             frame.fade[0] = 0.0;
             BaseKey {
@@ -355,7 +346,6 @@ impl CallbackTrait for ViewCallback {
         let Some(renderers) = resources.get_mut::<Renderers>() else {
             return Vec::new();
         };
-        let srgb = renderers.srgb_target;
         let frame_layout = &renderers.frame_layout;
         let view = renderers
             .views
@@ -421,7 +411,7 @@ impl CallbackTrait for ViewCallback {
             view.axes.write_styles(device, queue, &self.axes_styles);
         }
 
-        view.frame.write(queue, &self.frame_for(srgb));
+        view.frame.write(queue, &self.frame);
 
         // The base image, drawn in this encoder before egui's pass (and
         // after the uniform write above, which the queue applies first).
@@ -429,7 +419,7 @@ impl CallbackTrait for ViewCallback {
         // frame; while the camera moves, the image waits.
         if self.has_proxy(view) && self.flags.moving {
             // The image waits.
-        } else if let Some(key) = self.base_key(srgb)
+        } else if let Some(key) = self.base_key()
             && view.geometry_id == self.geometry_id
         {
             let behind = self.has_proxy(view);
@@ -481,10 +471,10 @@ impl CallbackTrait for ViewCallback {
         }
         view.frame.bind(pass);
         let viewport = info.viewport_in_pixels();
-        let draws_proxy = self.draws_proxy(view, renderers.srgb_target);
+        let draws_proxy = self.draws_proxy(view);
         let from_image = !draws_proxy
             && self
-                .base_key(renderers.srgb_target)
+                .base_key()
                 .filter(|key| {
                     [i64::from(key.size[0]), i64::from(key.size[1])]
                         == [i64::from(viewport.width_px), i64::from(viewport.height_px)]

@@ -42,7 +42,7 @@ pub fn render_to_pixels(
     };
     let target = texture(
         "test target",
-        FORMAT,
+        rs.target_format,
         wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
     );
     let depth = texture(
@@ -179,7 +179,12 @@ const REQUIRE_GPU: &str = "EDGEWISE_REQUIRE_GPU";
 /// None without an adapter, unless [`REQUIRE_GPU`] is set, which makes that
 /// a failure. `WGPU_BACKEND=gl` runs the GLSL path WebGL2 also takes.
 pub fn render_state() -> Option<RenderState> {
-    let state = adapter_render_state();
+    render_state_for(FORMAT)
+}
+
+/// As [`render_state`], rendering into `format`.
+pub fn render_state_for(format: wgpu::TextureFormat) -> Option<RenderState> {
+    let state = adapter_render_state(format);
     assert!(
         state.is_some() || std::env::var_os(REQUIRE_GPU).is_none_or(|v| v == "0"),
         "no wgpu adapter, and {REQUIRE_GPU} is set: install mesa-vulkan-drivers (lavapipe) \
@@ -188,7 +193,7 @@ pub fn render_state() -> Option<RenderState> {
     state
 }
 
-fn adapter_render_state() -> Option<RenderState> {
+fn adapter_render_state(format: wgpu::TextureFormat) -> Option<RenderState> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::VULKAN | wgpu::Backends::GL),
         ..wgpu::InstanceDescriptor::new_without_display_handle()
@@ -204,7 +209,7 @@ fn adapter_render_state() -> Option<RenderState> {
     .ok()?;
     let renderer = egui_wgpu::Renderer::new(
         &device,
-        FORMAT,
+        format,
         egui_wgpu::RendererOptions {
             msaa_samples: 1,
             depth_stencil_format: egui_wgpu::depth_format_from_bits(24, 0),
@@ -218,7 +223,7 @@ fn adapter_render_state() -> Option<RenderState> {
         instance,
         device,
         queue,
-        target_format: FORMAT,
+        target_format: format,
         renderer: Arc::new(egui::mutex::RwLock::new(renderer)),
     })
 }

@@ -9,7 +9,7 @@ struct Frame {
     light: vec4<f32>,
     // Vertex radius, arrow shaft radius, arrow head radius, arrow head length.
     sizes: vec4<f32>,
-    // x: 1 when the target is sRGB (colours are converted to linear),
+    // x: unused (see `srgb_target`),
     // y: how much of the vertex radius arrow ends are pulled back,
     // z: lift of orientation marks off their face,
     // w: world size of one pixel per unit of clip w (distance in front of the eye).
@@ -28,6 +28,12 @@ struct Frame {
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
+
+// Whether the render target is sRGB, so colours are converted to linear.
+// Fixed per pipeline rather than read from the frame: a software renderer
+// (SwiftShader) runs both sides of a branch on a uniform, and the
+// conversion's three `pow`s nearly doubled what a lit pixel cost.
+override srgb_target: bool;
 
 // Output of the lit (sphere and arrow) vertex shaders.
 struct LitOut {
@@ -63,7 +69,7 @@ fn shade(base: vec3<f32>, normal: vec3<f32>, world: vec3<f32>, ambient: f32) -> 
 // Premultiplied colour for the target (egui blends premultiplied).
 fn to_target(rgb: vec3<f32>, alpha: f32) -> vec4<f32> {
     var c = clamp(rgb, vec3<f32>(0.0), vec3<f32>(1.0));
-    if frame.params.x > 0.5 {
+    if srgb_target {
         c = srgb_to_linear(c);
     }
     return vec4<f32>(c * alpha, alpha);
