@@ -50,10 +50,7 @@ async fn start_app() -> Result<(), String> {
         .dyn_into::<web_sys::HtmlCanvasElement>()
         .map_err(|_| format!("The element '{CANVAS_ID}' is not a canvas."))?;
 
-    let web_options = eframe::WebOptions {
-        depth_buffer: 24,
-        ..Default::default()
-    };
+    let web_options = web_options(&canvas).await;
     let runner = eframe::WebRunner::new();
     runner
         .start(
@@ -87,6 +84,40 @@ async fn start_app() -> Result<(), String> {
         backend,
     }]);
     Ok(())
+}
+
+/// eframe's options: WebGPU where the browser offers an adapter, and
+/// otherwise WebGL2 in an opaque canvas.
+async fn web_options(canvas: &web_sys::HtmlCanvasElement) -> eframe::WebOptions {
+    let mut options = eframe::WebOptions {
+        depth_buffer: 24,
+        ..Default::default()
+    };
+    if !wgpu::util::is_browser_webgpu_supported().await {
+        opaque_webgl2_context(canvas);
+        // No second request for a WebGPU adapter the browser lacks.
+        if let eframe::egui_wgpu::WgpuSetup::CreateNew(create_new) =
+            &mut options.wgpu_options.wgpu_setup
+        {
+            create_new.instance_descriptor.backends = wgpu::Backends::GL;
+        }
+    }
+    options
+}
+
+/// Makes the canvas's WebGL2 context without an alpha channel (or a depth
+/// buffer: wgpu draws into textures of its own). A canvas keeps the first
+/// context made for it, so this is the one wgpu then gets; wgpu's own
+/// request has an alpha channel, and a browser compositing in software then
+/// blends the whole canvas over the page each frame, about 2 ms of a frame
+/// at 1280×800 under `SwiftShader`. Where this fails, wgpu's request reports
+/// why.
+fn opaque_webgl2_context(canvas: &web_sys::HtmlCanvasElement) {
+    let attributes = js_sys::Object::new();
+    for (name, value) in [("alpha", false), ("antialias", false), ("depth", false)] {
+        let _set = js_sys::Reflect::set(&attributes, &name.into(), &value.into());
+    }
+    let _context = canvas.get_context_with_context_options("webgl2", &attributes);
 }
 
 /// Applies the course link in the page's address (`?sample=…#mesh=…`),
