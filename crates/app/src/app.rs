@@ -27,6 +27,7 @@ use crate::{
     },
     tables::{self, TablesResponse},
     theme::Theme,
+    ui_cache::{PartTextures, UiCache},
     view3d::{DrawIds, Pointer, SceneStyles, ViewOptions},
 };
 
@@ -121,6 +122,7 @@ pub struct EdgewiseApp {
     /// How meshes prepared a slice per frame ended (see `pending.rs`).
     jobs: pending::JobLog,
     focus_ring: focus_ring::FocusRing,
+    ui_cache: UiCache,
 }
 
 impl EdgewiseApp {
@@ -177,7 +179,9 @@ impl EdgewiseApp {
             presentation: None,
             presentation_choice: settings_ui::Presentation::default(),
             zoom_before_presenting: 1.0,
-            render_state: render_state.cloned(),
+            render_state: render_state
+                .inspect(|rs| PartTextures::install(rs))
+                .cloned(),
             side_by_side: false,
             embed: None,
             show_share: false,
@@ -188,6 +192,7 @@ impl EdgewiseApp {
             files: FileState::default(),
             jobs: pending::JobLog::default(),
             focus_ring: focus_ring::FocusRing::default(),
+            ui_cache: UiCache::default(),
         }
     }
 
@@ -493,6 +498,10 @@ impl EdgewiseApp {
             styles_patched: self.tab().view.styles_patched(),
             base_image: self.tab().view.base_image_counts(),
             motion_proxy: self.tab().view.motion_proxy_frames(),
+            ui_cache: self.render_state.as_ref().map(|_| {
+                let counts = self.ui_cache.counts();
+                [counts.drawn, counts.copied]
+            }),
             welcome: self.tour.as_ref().map(|tour| tour.done),
             job: self
                 .tab()
@@ -597,7 +606,14 @@ impl EdgewiseApp {
         tab.paint_key = Some(key);
     }
 
+    /// The menus, drawn from the UI cache while they stay the same.
     fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
+        let mark = UiCache::begin(ui);
+        self.menus_ui(ui);
+        self.ui_cache.end(ui, "top bar", mark);
+    }
+
+    fn menus_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             ui.heading("Edgewise");
             ui.separator();
@@ -802,7 +818,14 @@ impl EdgewiseApp {
 
     /// The face, edge and vertex tables side by side; the panel's top edge
     /// moves the split between them and the 3D view.
+    /// The tables, drawn from the UI cache while they stay the same.
     fn tables_ui(&mut self, ui: &mut egui::Ui) {
+        let mark = UiCache::begin(ui);
+        self.records_ui(ui);
+        self.ui_cache.end(ui, "tables", mark);
+    }
+
+    fn records_ui(&mut self, ui: &mut egui::Ui) {
         if self.tab().document.is_none() {
             ui.weak("Open a mesh to see its tables.");
             // Keep the panel's size for when a mesh arrives.
@@ -974,6 +997,7 @@ impl eframe::App for EdgewiseApp {
         self.observe_for_embedding(ui.ctx());
         crate::platform::deliver_events(&mut self.embed_events);
         self.mirror_for_readers();
+        self.ui_cache.finish(ui.ctx(), self.render_state.as_ref());
     }
 
     #[cfg(target_arch = "wasm32")]

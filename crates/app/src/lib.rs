@@ -28,6 +28,7 @@ mod theme;
 pub use app::embed_events::{EmbedEvent, preferred_height};
 pub use theme::backdrop;
 pub mod trace_role;
+pub mod ui_cache;
 pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]

@@ -71,6 +71,12 @@ pub struct AppState {
     /// mesh; null without a GPU.
     #[serde(rename = "motionProxy")]
     pub motion_proxy: Option<u64>,
+    /// [drawn, copied]: how often parts of the UI (the tables, the menus,
+    /// the welcome card) unchanged since the frame before were drawn into
+    /// a texture, and copied from it in place of drawing them; null without
+    /// a GPU.
+    #[serde(rename = "uiCache")]
+    pub ui_cache: Option<[u64; 2]>,
     /// A large mesh being opened or converted a slice per frame, or null.
     pub job: Option<JobState>,
     /// The first-visit hint's three things to try, each true once done, or

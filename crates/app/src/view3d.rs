@@ -44,7 +44,7 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 pub use camera::{Camera, Ray, ViewTransforms};
-pub use gpu::DEPTH_BITS;
+pub use gpu::{DEPTH_BITS, depth_format};
 pub use style::Palette;
 
 use gpu::FrameUniform;

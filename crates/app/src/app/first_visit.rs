@@ -98,6 +98,7 @@ impl EdgewiseApp {
         };
         let mut dismiss = false;
         egui::Window::new("Welcome to Edgewise")
+            .id(egui::Id::unique(TOUR_WINDOW))
             .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-16.0, 48.0))
             .resizable(false)
             .collapsible(true)
@@ -132,6 +133,10 @@ impl EdgewiseApp {
         if dismiss {
             self.dismiss_tour();
         }
+        self.ui_cache.whole_layer(
+            TOUR_WINDOW,
+            egui::LayerId::new(egui::Order::Middle, egui::Id::unique(TOUR_WINDOW)),
+        );
     }
 
     /// "What am I looking at?": each part of the screen outlined and
@@ -192,6 +197,9 @@ impl EdgewiseApp {
         self.explaining
     }
 }
+
+/// The welcome card's window id, and its name in the UI cache.
+const TOUR_WINDOW: &str = "welcome card";
 
 /// The parts "What am I looking at?" explains, in the order they are laid
 /// out.
