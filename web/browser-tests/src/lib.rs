@@ -32,6 +32,29 @@ pub const FIRE_MOUSE: &str = "
   };
 ";
 
+/// Statements that press the mouse in the middle of `canvas` (declared by
+/// [`Browser::canvas_when`]) and drag it left and right, a pointer move per
+/// animation frame, until `window.__release` is set; the mouse is then
+/// released. They follow [`FIRE_MOUSE`].
+pub const DRAG_IN_VIEW: &str = "
+  const r = canvas.getBoundingClientRect();
+  const y = r.top + r.height * 0.4;
+  let x = r.left + r.width * 0.4, step = 4;
+  const fire = (type, buttons) => fireMouse(canvas, type, x, y, buttons);
+  window.__release = false;
+  fire('move', 0);
+  fire('down', 1);
+  (async () => {
+    while (!window.__release) {
+      await new Promise((r) => requestAnimationFrame(r));
+      x += step;
+      if (Math.abs(x - (r.left + r.width * 0.4)) > 80) step = -step;
+      fire('move', 1);
+    }
+    fire('up', 0);
+  })();
+";
+
 /// Options for launching the browser.
 #[derive(Clone, Debug)]
 pub struct LaunchOptions {

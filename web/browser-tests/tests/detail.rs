@@ -7,7 +7,7 @@
 
 use std::time::Duration;
 
-use edgewise_browser_tests::{Browser, FIRE_MOUSE};
+use edgewise_browser_tests::{Browser, DRAG_IN_VIEW, FIRE_MOUSE};
 
 /// Waits a few animation frames, for the view to draw what changed.
 async fn settle(browser: &Browser) -> anyhow::Result<()> {
@@ -164,29 +164,6 @@ fn drawn_in_middle(shot: &edgewise_browser_tests::Screenshot) -> usize {
         .count()
 }
 
-/// Statements that press the mouse in the middle of `canvas` (declared by
-/// [`Browser::canvas_when`]) and drag it left and right, a pointer move per
-/// animation frame, until `window.__release` is set; the mouse is then
-/// released. They follow [`FIRE_MOUSE`].
-const DRAG: &str = "
-  const r = canvas.getBoundingClientRect();
-  const y = r.top + r.height * 0.4;
-  let x = r.left + r.width * 0.4, step = 4;
-  const fire = (type, buttons) => fireMouse(canvas, type, x, y, buttons);
-  window.__release = false;
-  fire('move', 0);
-  fire('down', 1);
-  (async () => {
-    while (!window.__release) {
-      await new Promise((r) => requestAnimationFrame(r));
-      x += step;
-      if (Math.abs(x - (r.left + r.width * 0.4)) > 80) step = -step;
-      fire('move', 1);
-    }
-    fire('up', 0);
-  })();
-";
-
 /// `state().motionProxy`: how many frames drew the motion proxy.
 async fn proxy_frames(browser: &Browser) -> anyhow::Result<u64> {
     Ok(browser.state().await?["motionProxy"].as_u64().unwrap_or(0))
@@ -208,7 +185,7 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
 
     let moving = browser
         .canvas_when(
-            &format!("{FIRE_MOUSE}{DRAG}"),
+            &format!("{FIRE_MOUSE}{DRAG_IN_VIEW}"),
             &format!("window.edgewise.state().motionProxy >= {at_rest} + 3"),
             "detail-torus-moving",
         )
