@@ -27,6 +27,7 @@ mod tables;
 mod theme;
 pub use app::embed_events::{EmbedEvent, preferred_height};
 pub use theme::backdrop;
+mod texture_copy;
 pub mod trace_role;
 pub mod ui_cache;
 pub mod view3d;

@@ -22,7 +22,7 @@ use egui::{
     epaint::{ClippedPrimitive, ClippedShape, Primitive, TextureId, ViewportInPixels},
 };
 
-use crate::view3d::depth_format;
+use crate::{texture_copy, view3d::depth_format};
 
 /// Where a part's shapes begin in its layer, from [`UiCache::begin`].
 #[derive(Clone, Copy, Debug)]
@@ -502,8 +502,7 @@ impl GpuPart {
     }
 }
 
-/// Copies a part's texture over the callback's viewport, premultiplied as
-/// egui draws.
+/// Copies a part's texture over the callback's viewport.
 struct CopyPipeline {
     layout: wgpu::BindGroupLayout,
     pipeline: wgpu::RenderPipeline,
@@ -511,59 +510,19 @@ struct CopyPipeline {
 
 impl CopyPipeline {
     fn new(device: &wgpu::Device, target_format: wgpu::TextureFormat) -> Self {
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("ui cache copy"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            }],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("ui cache copy"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("ui cache copy"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("ui_cache/copy.wgsl").into()),
-        });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("ui cache copy"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_copy"),
-                compilation_options: wgpu::PipelineCompilationOptions::default(),
-                buffers: &[],
+        let layout = texture_copy::image_layout(device, "ui cache copy");
+        let pipeline = texture_copy::pipeline(
+            device,
+            target_format,
+            depth_format(),
+            &texture_copy::CopySpec {
+                label: "ui cache copy",
+                source: &[texture_copy::SHADER, include_str!("ui_cache/copy.wgsl")].concat(),
+                fragment_entry: "fs_part",
+                bind_group_layouts: &[Some(&layout)],
+                options: wgpu::PipelineCompilationOptions::default(),
             },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: depth_format(),
-                depth_write_enabled: Some(false),
-                depth_compare: Some(wgpu::CompareFunction::Always),
-                stencil: wgpu::StencilState::default(),
-                bias: wgpu::DepthBiasState::default(),
-            }),
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_copy"),
-                compilation_options: wgpu::PipelineCompilationOptions::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: target_format,
-                    blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        );
         Self { layout, pipeline }
     }
 }

@@ -7,6 +7,8 @@
 
 mod support;
 
+use support::worst_channel_difference;
+
 use edgewise_app::ui_cache::{PartTextures, UiCache, UiCacheCounts};
 use eframe::egui_wgpu::RenderState;
 use egui::{Color32, Pos2, Rect, Vec2};
@@ -50,14 +52,6 @@ fn frame(rs: &RenderState, ctx: &egui::Context, cache: &mut UiCache, words: &str
         cache.finish(ui.ctx(), Some(rs));
     })
     .expect("the frame renders")
-}
-
-fn worst_channel_difference(a: &[u8], b: &[u8]) -> u8 {
-    a.iter()
-        .zip(b)
-        .map(|(a, b)| a.abs_diff(*b))
-        .max()
-        .unwrap_or(0)
 }
 
 #[test]

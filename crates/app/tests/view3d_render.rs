@@ -11,6 +11,8 @@
 
 mod support;
 
+use support::worst_channel_difference;
+
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
@@ -704,15 +706,6 @@ fn the_coarse_base_image_draws_what_drawing_directly_does() {
         drawn_aside.save("base_image_aside_drawn.png");
     }
     assert!(worst <= 2, "aside, a channel differs by {worst}");
-}
-
-/// The largest difference of any channel of any pixel between two images.
-fn worst_channel_difference(a: &[u8], b: &[u8]) -> u8 {
-    a.iter()
-        .zip(b)
-        .map(|(a, b)| a.abs_diff(*b))
-        .max()
-        .unwrap_or(0)
 }
 
 /// A new mesh's base image is drawn a part a frame, each frame asking for

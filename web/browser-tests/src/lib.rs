@@ -401,6 +401,14 @@ impl Browser {
         self.eval("return window.edgewise.state();").await
     }
 
+    /// A `[drawn, copied]` pair of `state()` (`baseImage`, `uiCache`), as
+    /// numbers; 0 where null.
+    pub async fn drawn_and_copied(&self, key: &str) -> anyhow::Result<[u64; 2]> {
+        let state = self.state().await?;
+        let count = |i: usize| state[key][i].as_u64().unwrap_or(0);
+        Ok([count(0), count(1)])
+    }
+
     /// The console messages of level SEVERE (console.error, uncaught
     /// exceptions, failed loads) since the last call.
     pub async fn console_errors(&self) -> anyhow::Result<Vec<String>> {

@@ -20,13 +20,6 @@ async fn settle(browser: &Browser) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `state().baseImage`: how often the base image was drawn and copied.
-async fn base_image(browser: &Browser) -> anyhow::Result<[u64; 2]> {
-    let state = browser.state().await?;
-    let count = |i: usize| state["baseImage"][i].as_u64().unwrap_or(0);
-    Ok([count(0), count(1)])
-}
-
 #[tokio::test]
 async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyhow::Result<()> {
     let browser = Browser::launch_on_sample("icosphere-20k").await?;
@@ -46,13 +39,13 @@ async fn a_dense_mesh_seen_whole_is_drawn_coarse_and_the_cube_in_full() -> anyho
 
     // A new selection is drawn over the kept base image: WebGL2 copies it
     // rather than drawing the 20k faces again.
-    let [drawn, copied] = base_image(&browser).await?;
+    let [drawn, copied] = browser.drawn_and_copied("baseImage").await?;
     assert!(drawn >= 1 && copied >= 1, "drawn {drawn}, copied {copied}");
     browser
         .eval_async("window.edgewise.select('vertex', 5)")
         .await?;
     settle(&browser).await?;
-    let [drawn_after, copied_after] = base_image(&browser).await?;
+    let [drawn_after, copied_after] = browser.drawn_and_copied("baseImage").await?;
     assert_eq!(drawn_after, drawn, "the selection keeps the image");
     assert!(copied_after > copied, "and copies it");
     let selected = browser.screenshot("detail-icosphere-selected").await?;
@@ -89,7 +82,7 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames_behind_its_pr
 -> anyhow::Result<()> {
     let browser = Browser::launch_on_sample("cube").await?;
     settle(&browser).await?;
-    let [drawn, _] = base_image(&browser).await?;
+    let [drawn, _] = browser.drawn_and_copied("baseImage").await?;
     let proxied = proxy_frames(&browser).await?;
     let in_parts = browser
         .canvas_when(
@@ -115,7 +108,7 @@ async fn a_large_new_mesh_draws_its_base_image_over_several_frames_behind_its_pr
         wholly > 10_000 && partly.abs_diff(wholly) * 5 < wholly,
         "while drawn, the proxy covers {partly} pixels, the torus {wholly}"
     );
-    let [drawn_after, _] = base_image(&browser).await?;
+    let [drawn_after, _] = browser.drawn_and_copied("baseImage").await?;
     assert_eq!(drawn_after, drawn + 1, "then kept");
     assert_eq!(
         proxy_frames(&browser).await?,
@@ -178,7 +171,7 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
     let browser = Browser::launch_on_sample("torus-200k").await?;
     until_base_image_drawn(&browser, 1).await?;
     settle(&browser).await?;
-    let [drawn, _] = base_image(&browser).await?;
+    let [drawn, _] = browser.drawn_and_copied("baseImage").await?;
     let at_rest = proxy_frames(&browser).await?;
     settle(&browser).await?;
     assert_eq!(proxy_frames(&browser).await?, at_rest, "not moved yet");
@@ -190,7 +183,7 @@ async fn a_large_mesh_turns_with_its_motion_proxy_and_rests_on_the_mesh_itself()
             "detail-torus-moving",
         )
         .await?;
-    let [drawn_moving, _] = base_image(&browser).await?;
+    let [drawn_moving, _] = browser.drawn_and_copied("baseImage").await?;
     assert_eq!(drawn_moving, drawn, "no base image while the camera moves");
     browser
         .eval("window.__release = true; return null;")

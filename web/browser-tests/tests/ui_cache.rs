@@ -6,13 +6,6 @@
 
 use edgewise_browser_tests::{Browser, DRAG_IN_VIEW, FIRE_MOUSE};
 
-/// `state().uiCache`: how often parts were drawn into textures and copied.
-async fn ui_cache(browser: &Browser) -> anyhow::Result<[u64; 2]> {
-    let state = browser.state().await?;
-    let count = |i: usize| state["uiCache"][i].as_u64().unwrap_or(0);
-    Ok([count(0), count(1)])
-}
-
 #[tokio::test]
 async fn unchanged_panels_are_copied_while_the_camera_turns() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
@@ -29,7 +22,7 @@ async fn unchanged_panels_are_copied_while_the_camera_turns() -> anyhow::Result<
             "ui-cache-still",
         )
         .await?;
-    let [drawn, copied] = ui_cache(&browser).await?;
+    let [drawn, copied] = browser.drawn_and_copied("uiCache").await?;
 
     // Twenty frames of turning: the view changes, the panels do not.
     let turning = browser
@@ -42,7 +35,7 @@ async fn unchanged_panels_are_copied_while_the_camera_turns() -> anyhow::Result<
     browser
         .eval("window.__release = true; return null;")
         .await?;
-    let [drawn_after, copied_after] = ui_cache(&browser).await?;
+    let [drawn_after, copied_after] = browser.drawn_and_copied("uiCache").await?;
     // Each part is drawn into its texture at most once (at the first frame
     // after it last changed) and copied at every other frame.
     assert!(

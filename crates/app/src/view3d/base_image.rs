@@ -27,9 +27,11 @@
 //! (while the camera moves, the proxy is drawn and the image waits).
 
 use super::gpu::{FrameUniform, TargetConstants, depth_format};
+use crate::texture_copy;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
+    include_str!("../texture_copy.wgsl"),
     include_str!("shaders/base_image.wgsl")
 );
 
@@ -57,61 +59,21 @@ impl BaseImageRenderer {
         frame_layout: &wgpu::BindGroupLayout,
         target_format: wgpu::TextureFormat,
     ) -> Self {
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("view3d base image"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            }],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("view3d base image"),
-            // The frame uniform stays bound at 0 for the drawables after.
-            bind_group_layouts: &[Some(frame_layout), Some(&layout)],
-            immediate_size: 0,
-        });
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("view3d base image"),
-            source: wgpu::ShaderSource::Wgsl(SHADER.into()),
-        });
+        let layout = texture_copy::image_layout(device, "view3d base image");
         let constants = TargetConstants::new(target_format);
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("view3d base image"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_base_image"),
-                compilation_options: constants.options(),
-                buffers: &[],
+        let pipeline = texture_copy::pipeline(
+            device,
+            target_format,
+            depth_format(),
+            &texture_copy::CopySpec {
+                label: "view3d base image",
+                source: SHADER,
+                fragment_entry: "fs_base_image",
+                // The frame uniform stays bound at 0 for the drawables after.
+                bind_group_layouts: &[Some(frame_layout), Some(&layout)],
+                options: constants.options(),
             },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: depth_format(),
-                depth_write_enabled: Some(false),
-                depth_compare: Some(wgpu::CompareFunction::Always),
-                stencil: wgpu::StencilState::default(),
-                bias: wgpu::DepthBiasState::default(),
-            }),
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_base_image"),
-                compilation_options: constants.options(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: target_format,
-                    blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        );
         Self {
             layout,
             pipeline,

@@ -133,3 +133,12 @@ pub fn open_link(query: &str, fragment: &str) -> (Harness<'static, EdgewiseApp>,
     harness.run();
     (harness, messages)
 }
+
+/// The largest difference between two pictures' channels, in levels.
+pub fn worst_channel_difference(a: &[u8], b: &[u8]) -> u8 {
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| a.abs_diff(*b))
+        .max()
+        .unwrap_or(0)
+}
