@@ -1043,7 +1043,7 @@ impl EdgewiseApp {
         {
             let rect = egui::Panel::right("algorithm")
                 .resizable(true)
-                .default_size(420.0)
+                .default_size(480.0)
                 .min_size(300.0)
                 .show(ui, |ui| self.algorithm_panel_ui(ui))
                 .response

@@ -107,9 +107,12 @@ impl Algorithms {
         ui.add_space(4.0);
         variables_ui(ui, &frame, theme);
         ui.separator();
+        // The legend first, at the bottom, so the source takes the height
+        // its rows leave, however many the panel's width wraps them into.
+        egui::Panel::bottom("algorithm_legend")
+            .frame(egui::Frame::NONE.inner_margin(egui::Margin::symmetric(0, 4)))
+            .show(ui, |ui| legend_ui(ui, theme));
         let toggled = self.source_ui(run, ui, &algorithm, &frame, &breakpoints, theme);
-        ui.separator();
-        legend_ui(ui, theme);
         control.or(toggled)
     }
 
@@ -268,7 +271,7 @@ impl Algorithms {
         egui::ScrollArea::both()
             .id_salt("algorithm_source")
             .auto_shrink([false, false])
-            .max_height(ui.available_height() - 40.0)
+            .max_height(ui.available_height())
             .show(ui, |ui| {
                 ui.spacing_mut().item_spacing.y = 0.0;
                 for (number, range) in lines {
@@ -497,20 +500,38 @@ fn variables_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
         });
 }
 
-/// The journal's colour meanings, as chips.
+/// The journal's colour meanings, as chips, wrapped to the panel's width.
+/// Each chip and its words are one item, so a row never ends between them
+/// (and, laid out whole, the row does not widen the panel: nested
+/// horizontal layouts had made the panel most of the window).
 fn legend_ui(ui: &mut egui::Ui, theme: &Theme) {
     ui.horizontal_wrapped(|ui| {
         for role in TraceRole::ALL {
-            // A chip and its words stay together when the row wraps.
-            ui.horizontal(|ui| {
-                let (rect, _) = ui.allocate_exact_size(vec2(12.0, 12.0), Sense::hover());
-                ui.painter()
-                    .rect_filled(rect, 2.0, theme.trace_colour(role));
-                match role.glyph() {
-                    Some(glyph) => ui.small(format!("{glyph} {}", role.meaning())),
-                    None => ui.small(format!("name: {}", role.meaning())),
-                };
-            });
+            let words = match role.glyph() {
+                Some(glyph) => format!("{glyph} {}", role.meaning()),
+                None => format!("name: {}", role.meaning()),
+            };
+            let galley = ui.painter().layout_no_wrap(
+                words,
+                egui::TextStyle::Small.resolve(ui.style()),
+                ui.visuals().text_color(),
+            );
+            let chip = vec2(12.0, 12.0);
+            let gap = ui.spacing().item_spacing.x;
+            let size = vec2(chip.x + gap + galley.size().x, chip.y.max(galley.size().y));
+            let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
+            let chip_rect = egui::Rect::from_center_size(
+                egui::pos2(rect.left() + chip.x / 2.0, rect.center().y),
+                chip,
+            );
+            ui.painter()
+                .rect_filled(chip_rect, 2.0, theme.trace_colour(role));
+            let text_at = egui::pos2(
+                chip_rect.right() + gap,
+                rect.center().y - galley.size().y / 2.0,
+            );
+            ui.painter()
+                .galley(text_at, galley, ui.visuals().text_color());
         }
     });
 }
