@@ -606,14 +606,20 @@ impl EdgewiseApp {
         tab.paint_key = Some(key);
     }
 
-    /// The menus, drawn from the UI cache while they stay the same.
-    fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
+    /// Draws a panel's contents as a part of the UI cache: copied from a
+    /// texture while they stay the same.
+    fn cached_part_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        name: &'static str,
+        part_ui: impl FnOnce(&mut Self, &mut egui::Ui),
+    ) {
         let mark = UiCache::begin(ui);
-        self.menus_ui(ui);
-        self.ui_cache.end(ui, "top bar", mark);
+        part_ui(self, ui);
+        self.ui_cache.end(ui, name, mark);
     }
 
-    fn menus_ui(&mut self, ui: &mut egui::Ui) {
+    fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             ui.heading("Edgewise");
             ui.separator();
@@ -818,14 +824,7 @@ impl EdgewiseApp {
 
     /// The face, edge and vertex tables side by side; the panel's top edge
     /// moves the split between them and the 3D view.
-    /// The tables, drawn from the UI cache while they stay the same.
     fn tables_ui(&mut self, ui: &mut egui::Ui) {
-        let mark = UiCache::begin(ui);
-        self.records_ui(ui);
-        self.ui_cache.end(ui, "tables", mark);
-    }
-
-    fn records_ui(&mut self, ui: &mut egui::Ui) {
         if self.tab().document.is_none() {
             ui.weak("Open a mesh to see its tables.");
             // Keep the panel's size for when a mesh arrives.
@@ -1019,7 +1018,9 @@ impl EdgewiseApp {
         if presenting.is_none_or(|p| p.menu) {
             chrome += part(
                 egui::Panel::top("top_bar")
-                    .show(ui, |ui| self.top_bar_ui(ui))
+                    .show(ui, |ui| {
+                        self.cached_part_ui(ui, "top bar", Self::top_bar_ui);
+                    })
                     .response
                     .rect,
                 first_visit::TOP_BAR,
@@ -1045,7 +1046,9 @@ impl EdgewiseApp {
                 .resizable(true)
                 .default_size(480.0)
                 .min_size(300.0)
-                .show(ui, |ui| self.algorithm_panel_ui(ui))
+                .show(ui, |ui| {
+                    self.cached_part_ui(ui, "algorithm panel", Self::algorithm_panel_ui);
+                })
                 .response
                 .rect;
             part(rect, first_visit::ALGORITHM);
@@ -1054,7 +1057,9 @@ impl EdgewiseApp {
             egui::Panel::right("obj_editor")
                 .resizable(true)
                 .default_size(320.0)
-                .show(ui, |ui| self.obj_editor_ui(ui));
+                .show(ui, |ui| {
+                    self.cached_part_ui(ui, "OBJ editor", Self::obj_editor_ui);
+                });
         }
         if presenting.is_none_or(|p| p.tables) {
             chrome += part(
@@ -1062,7 +1067,7 @@ impl EdgewiseApp {
                     .resizable(true)
                     .default_size(260.0)
                     .min_size(120.0)
-                    .show(ui, |ui| self.tables_ui(ui))
+                    .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                     .response
                     .rect,
                 first_visit::TABLES,

@@ -71,8 +71,9 @@ pub struct AppState {
     /// mesh; null without a GPU.
     #[serde(rename = "motionProxy")]
     pub motion_proxy: Option<u64>,
-    /// [drawn, copied]: how often parts of the UI (the tables, the menus,
-    /// the welcome card) unchanged since the frame before were drawn into
+    /// [drawn, copied]: how often panels (the tables, the menus, the
+    /// algorithm panel, the OBJ editor, the welcome card) unchanged since
+    /// the frame before were drawn into
     /// a texture, and copied from it in place of drawing them; null without
     /// a GPU.
     #[serde(rename = "uiCache")]

@@ -1,6 +1,6 @@
 //! Parts of the UI drawn once into a texture and copied while they stay the
-//! same: the tables, the top bar and the welcome card, which repaint
-//! unchanged on every frame of an orbit.
+//! same: the tables, the menus, the algorithm panel, the OBJ editor and the
+//! welcome card, which repaint unchanged on every frame of an orbit.
 //!
 //! Under a software renderer (`SwiftShader`) a pixel that egui's shader
 //! covers costs several times what a texture copy does, since that shader

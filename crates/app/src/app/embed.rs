@@ -50,7 +50,7 @@ impl EdgewiseApp {
                 .resizable(true)
                 .default_size(200.0)
                 .min_size(100.0)
-                .show(ui, |ui| self.tables_ui(ui))
+                .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                 .response
                 .rect
                 .height();
