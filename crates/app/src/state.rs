@@ -73,9 +73,8 @@ pub struct AppState {
     pub motion_proxy: Option<u64>,
     /// [drawn, copied]: how often panels (the tables, the menus, the
     /// algorithm panel, the OBJ editor, the welcome card) unchanged since
-    /// the frame before were drawn into
-    /// a texture, and copied from it in place of drawing them; null without
-    /// a GPU.
+    /// the frame before were drawn into a texture, and copied from it in
+    /// place of drawing them; null without a GPU.
     #[serde(rename = "uiCache")]
     pub ui_cache: Option<[u64; 2]>,
     /// A large mesh being opened or converted a slice per frame, or null.

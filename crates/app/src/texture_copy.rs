@@ -25,6 +25,55 @@ pub fn image_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout
     })
 }
 
+/// A texture drawn into and then copied: the view to draw into and the
+/// bind group (of [`image_layout`]) that copies it.
+pub struct CopySource {
+    pub size: [u32; 2],
+    pub view: wgpu::TextureView,
+    pub bind_group: wgpu::BindGroup,
+}
+
+impl CopySource {
+    pub fn new(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        label: &str,
+        format: wgpu::TextureFormat,
+        size: [u32; 2],
+    ) -> Self {
+        let view = device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d {
+                    width: size[0],
+                    height: size[1],
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[],
+            })
+            .create_view(&wgpu::TextureViewDescriptor::default());
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(label),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(&view),
+            }],
+        });
+        Self {
+            size,
+            view,
+            bind_group,
+        }
+    }
+}
+
 /// A copy pipeline's shader, fragment stage and bind groups.
 pub struct CopySpec<'a> {
     pub label: &'a str,

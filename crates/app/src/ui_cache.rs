@@ -22,7 +22,10 @@ use egui::{
     epaint::{ClippedPrimitive, ClippedShape, Primitive, TextureId, ViewportInPixels},
 };
 
-use crate::{texture_copy, view3d::depth_format};
+use crate::{
+    texture_copy::{self, CopySource},
+    view3d::depth_format,
+};
 
 /// Where a part's shapes begin in its layer, from [`UiCache::begin`].
 #[derive(Clone, Copy, Debug)]
@@ -73,7 +76,7 @@ pub struct UiCacheCounts {
 pub struct UiCache {
     parts: HashMap<&'static str, Part>,
     ranges: Vec<Range>,
-    versions: u64,
+    /// `drawn` also numbers the drawings: a texture holds one version.
     counts: UiCacheCounts,
 }
 
@@ -153,16 +156,14 @@ impl UiCache {
             let drawn = match &part.drawn {
                 Some(drawn) if drawn.pixels_per_point == pixels_per_point => Arc::clone(drawn),
                 _ => {
+                    let version = self.counts.drawn + 1;
                     let Some(drawing) =
-                        tessellate(ctx, &shapes, screen, pixels_per_point, max_side)
+                        tessellate(ctx, &shapes, screen, pixels_per_point, max_side, version)
                     else {
                         continue;
                     };
-                    self.versions += 1;
-                    let drawn = Arc::new(Drawing {
-                        version: self.versions,
-                        ..drawing
-                    });
+                    self.counts.drawn = version;
+                    let drawn = Arc::new(drawing);
                     part.drawn = Some(Arc::clone(&drawn));
                     drawn
                 }
@@ -188,7 +189,6 @@ impl UiCache {
         }
         // A part not shown this frame starts afresh when shown again.
         self.parts.retain(|name, _| names.contains(name));
-        self.counts.drawn = self.versions;
     }
 }
 
@@ -235,6 +235,7 @@ fn tessellate(
     screen: Rect,
     pixels_per_point: f32,
     max_side: u32,
+    version: u64,
 ) -> Option<Drawing> {
     let drawn = shapes
         .iter()
@@ -278,7 +279,7 @@ fn tessellate(
         }
     }
     Some(Drawing {
-        version: 0,
+        version,
         rect,
         size_px,
         pixels_per_point,
@@ -333,12 +334,12 @@ impl CallbackTrait for PartCallback {
         let Some(copied) = textures
             .parts
             .get(self.name)
-            .and_then(|part| part.copy_bind_group.as_ref())
+            .and_then(|part| part.target.as_ref())
         else {
             return;
         };
         pass.set_pipeline(&textures.copy.pipeline);
-        pass.set_bind_group(0, copied, &[]);
+        pass.set_bind_group(0, &copied.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
 }
@@ -370,8 +371,7 @@ impl PartTextures {
 struct GpuPart {
     renderer: egui_wgpu::Renderer,
     format: wgpu::TextureFormat,
-    texture: Option<wgpu::Texture>,
-    copy_bind_group: Option<wgpu::BindGroup>,
+    target: Option<CopySource>,
     version: u64,
     font: Option<(wgpu::Texture, TextureId)>,
 }
@@ -385,8 +385,7 @@ impl GpuPart {
                 egui_wgpu::RendererOptions::default(),
             ),
             format: target_format,
-            texture: None,
-            copy_bind_group: None,
+            target: None,
             version: 0,
             font: None,
         }
@@ -407,40 +406,17 @@ impl GpuPart {
         }
         self.version = drawing.version;
         let font_id = self.font_id(device, font);
-        let [width, height] = drawing.size_px;
-        let texture = match &self.texture {
-            Some(texture) if texture.width() == width && texture.height() == height => {
-                texture.clone()
-            }
-            _ => {
-                let texture = device.create_texture(&wgpu::TextureDescriptor {
-                    label: Some("ui cache part"),
-                    size: wgpu::Extent3d {
-                        width,
-                        height,
-                        depth_or_array_layers: 1,
-                    },
-                    mip_level_count: 1,
-                    sample_count: 1,
-                    dimension: wgpu::TextureDimension::D2,
-                    format: self.format,
-                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                        | wgpu::TextureUsages::TEXTURE_BINDING,
-                    view_formats: &[],
-                });
-                let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-                self.copy_bind_group = Some(device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("ui cache part"),
-                    layout: copy_layout,
-                    entries: &[wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: wgpu::BindingResource::TextureView(&view),
-                    }],
-                }));
-                self.texture = Some(texture.clone());
-                texture
-            }
+        let target = match self.target.take() {
+            Some(target) if target.size == drawing.size_px => target,
+            _ => CopySource::new(
+                device,
+                copy_layout,
+                "ui cache part",
+                self.format,
+                drawing.size_px,
+            ),
         };
+        let target = self.target.insert(target);
         let primitives: Vec<ClippedPrimitive> = drawing
             .primitives
             .iter()
@@ -459,12 +435,11 @@ impl GpuPart {
         let commands = self
             .renderer
             .update_buffers(device, queue, encoder, &primitives, &screen);
-        let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
         let mut pass = encoder
             .begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("ui cache part"),
                 color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &view,
+                    view: &target.view,
                     resolve_target: None,
                     depth_slice: None,
                     ops: wgpu::Operations {

@@ -97,8 +97,9 @@ impl EdgewiseApp {
             return;
         };
         let mut dismiss = false;
+        let window = egui::Id::unique(TOUR_WINDOW);
         egui::Window::new("Welcome to Edgewise")
-            .id(egui::Id::unique(TOUR_WINDOW))
+            .id(window)
             .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-16.0, 48.0))
             .resizable(false)
             .collapsible(true)
@@ -133,10 +134,8 @@ impl EdgewiseApp {
         if dismiss {
             self.dismiss_tour();
         }
-        self.ui_cache.whole_layer(
-            TOUR_WINDOW,
-            egui::LayerId::new(egui::Order::Middle, egui::Id::unique(TOUR_WINDOW)),
-        );
+        self.ui_cache
+            .whole_layer(TOUR_WINDOW, egui::LayerId::new(egui::Order::Middle, window));
     }
 
     /// "What am I looking at?": each part of the screen outlined and

@@ -27,7 +27,7 @@
 //! (while the camera moves, the proxy is drawn and the image waits).
 
 use super::gpu::{FrameUniform, TargetConstants, depth_format};
-use crate::texture_copy;
+use crate::texture_copy::{self, CopySource};
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
@@ -88,7 +88,7 @@ impl BaseImageRenderer {
             return;
         };
         pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(1, &target.bind_group, &[]);
+        pass.set_bind_group(1, &target.colour.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
 }
@@ -116,10 +116,8 @@ pub struct BaseImage {
 }
 
 struct Target {
-    size: [u32; 2],
-    colour: wgpu::TextureView,
+    colour: CopySource,
     depth: wgpu::TextureView,
-    bind_group: wgpu::BindGroup,
 }
 
 impl BaseImage {
@@ -164,7 +162,11 @@ impl BaseImage {
             self.drawn_for = None;
             return Update::Kept;
         }
-        if self.target.as_ref().is_none_or(|t| t.size != key.size) {
+        if self
+            .target
+            .as_ref()
+            .is_none_or(|t| t.colour.size != key.size)
+        {
             self.target = Some(Target::new(device, renderer, key.size));
         }
         let Some(target) = &self.target else {
@@ -197,7 +199,7 @@ impl BaseImage {
             .begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("view3d base image"),
                 color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &target.colour,
+                    view: &target.colour.view,
                     depth_slice: None,
                     resolve_target: None,
                     ops: wgpu::Operations {
@@ -237,48 +239,29 @@ impl BaseImage {
 
 impl Target {
     fn new(device: &wgpu::Device, renderer: &BaseImageRenderer, size: [u32; 2]) -> Self {
-        let extent = wgpu::Extent3d {
-            width: size[0],
-            height: size[1],
-            depth_or_array_layers: 1,
-        };
-        let texture = |label, format, usage| {
-            device
-                .create_texture(&wgpu::TextureDescriptor {
-                    label: Some(label),
-                    size: extent,
-                    mip_level_count: 1,
-                    sample_count: 1,
-                    dimension: wgpu::TextureDimension::D2,
-                    format,
-                    usage,
-                    view_formats: &[],
-                })
-                .create_view(&wgpu::TextureViewDescriptor::default())
-        };
-        let colour = texture(
+        let colour = CopySource::new(
+            device,
+            &renderer.layout,
             "view3d base image",
             renderer.target_format,
-            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-        );
-        let depth = texture(
-            "view3d base image depth",
-            depth_format(),
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("view3d base image"),
-            layout: &renderer.layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(&colour),
-            }],
-        });
-        Self {
             size,
-            colour,
-            depth,
-            bind_group,
-        }
+        );
+        let depth = device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some("view3d base image depth"),
+                size: wgpu::Extent3d {
+                    width: size[0],
+                    height: size[1],
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: depth_format(),
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats: &[],
+            })
+            .create_view(&wgpu::TextureViewDescriptor::default());
+        Self { colour, depth }
     }
 }
