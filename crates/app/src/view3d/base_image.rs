@@ -246,22 +246,13 @@ impl Target {
             renderer.target_format,
             size,
         );
-        let depth = device
-            .create_texture(&wgpu::TextureDescriptor {
-                label: Some("view3d base image depth"),
-                size: wgpu::Extent3d {
-                    width: size[0],
-                    height: size[1],
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: depth_format(),
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-                view_formats: &[],
-            })
-            .create_view(&wgpu::TextureViewDescriptor::default());
+        let depth = texture_copy::render_target(
+            device,
+            "view3d base image depth",
+            depth_format(),
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+            size,
+        );
         Self { colour, depth }
     }
 }
