@@ -148,6 +148,11 @@ enum Command {
         /// The most operations to run before stopping the algorithm.
         #[arg(long, default_value_t = lang::DEFAULT_STEP_LIMIT)]
         step_limit: usize,
+        /// The most memory, in MB, the run may keep for its trace, variables,
+        /// arrays and new rows before stopping the algorithm.
+        #[arg(long, value_name = "MB", default_value_t = lang::DEFAULT_MEMORY_LIMIT as u64 >> 20,
+              value_parser = clap::value_parser!(u64).range(1..=65_536))]
+        memory_limit: u64,
         /// For an algorithm that changes the mesh: write the mesh it leaves
         /// (ids compacted) here, in the format of the extension. Nothing is
         /// written if the run stops on an error or leaves broken records.
@@ -256,6 +261,7 @@ fn main() -> ExitCode {
             meshfile,
             args,
             step_limit,
+            memory_limit,
             save,
             questions,
         } => trace(
@@ -263,7 +269,10 @@ fn main() -> ExitCode {
             &name,
             &meshfile,
             &args,
-            step_limit,
+            RunOptions {
+                step_limit,
+                memory_limit: usize::try_from(memory_limit << 20).unwrap_or(usize::MAX),
+            },
             save.as_deref(),
             questions.as_deref(),
         ),
@@ -627,7 +636,7 @@ fn trace(
     name: &str,
     meshfile: &Path,
     args: &[String],
-    step_limit: usize,
+    options: RunOptions,
     save: Option<&Path>,
     question_set: Option<&Path>,
 ) -> Outcome {
@@ -654,7 +663,6 @@ fn trace(
     let structure = algorithm.structure;
     let mut mesh = load(meshfile, |_| structure)?.mesh;
     let inputs: Vec<(&str, Value)> = inputs.iter().map(|(n, v)| (n.as_str(), *v)).collect();
-    let options = RunOptions { step_limit };
     let before = mesh.live_stats();
     let run = if algorithm.edits() {
         lang::run_editing(algorithm, &mut mesh, &inputs, options)
@@ -669,8 +677,8 @@ fn trace(
         Failure::Usage
     })?;
     let mut out = String::new();
-    for index in 0..trace.len() {
-        out.push_str(&trace.render_line(index));
+    for line in trace.lines() {
+        out.push_str(&line);
         out.push('\n');
     }
     out.push_str(&trace.render_marked());

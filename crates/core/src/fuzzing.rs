@@ -15,8 +15,9 @@ use crate::lang::{self, RunOptions, Type, Value};
 use crate::mesh::{Mesh, Structure};
 use crate::schema::ElementRef;
 
-/// Operations each fuzzed algorithm may run: small, so iterations stay fast.
-pub const VM_STEP_LIMIT: usize = 2_000;
+/// Lines of a fuzzed run's trace that are rendered: enough to reach arrays
+/// and messages, few enough that a million-step run stays fast.
+const VM_RENDERED_LINES: usize = 5_000;
 
 /// File names for [`detect`], picked by the input's first byte: bare
 /// extensions, names with and without extensions, and an unknown one.
@@ -141,9 +142,6 @@ pub fn vm(data: &[u8]) {
     };
     let mut bytes = argument_bytes.iter().copied();
     let mesh_choice = bytes.next().unwrap_or(0);
-    let options = RunOptions {
-        step_limit: VM_STEP_LIMIT,
-    };
     for algorithm in &program.algorithms {
         let mesh = sample_mesh(algorithm.structure, mesh_choice);
         let mut inputs: Vec<(&str, Value)> = Vec::new();
@@ -166,10 +164,39 @@ pub fn vm(data: &[u8]) {
             };
             inputs.push((param.name.as_str(), value));
         }
-        let execution = lang::execute(algorithm, mesh, &inputs, options)
-            .unwrap_or_else(|error| panic!("fitting arguments refused: {error}"));
-        let trace = lang::run(algorithm, mesh, &inputs, options)
-            .unwrap_or_else(|error| panic!("fitting arguments refused: {error}"));
+        check_run(algorithm, mesh, &inputs);
+    }
+}
+
+/// Runs `algorithm` with the real limits, recording and not, and checks
+/// that both agree; an editing algorithm runs on copies of `mesh`.
+fn check_run(algorithm: &std::sync::Arc<lang::Algorithm>, mesh: &Mesh, inputs: &[(&str, Value)]) {
+    let options = RunOptions::default();
+    let refused = |error: lang::InputError| -> ! { panic!("fitting arguments refused: {error}") };
+    let (trace, execution) = if algorithm.edits() {
+        let mut traced = mesh.clone();
+        let trace = lang::run_editing(algorithm, &mut traced, inputs, options)
+            .unwrap_or_else(|e| refused(e));
+        let mut executed = mesh.clone();
+        let execution = lang::execute_editing(algorithm, &mut executed, inputs, options)
+            .unwrap_or_else(|e| refused(e));
+        if !hit_memory_limit(trace.outcome()) {
+            assert_eq!(traced.stats(), executed.stats(), "both runs edit alike");
+        }
+        (trace, execution)
+    } else {
+        let trace = lang::run(algorithm, mesh, inputs, options).unwrap_or_else(|e| refused(e));
+        let execution =
+            lang::execute(algorithm, mesh, inputs, options).unwrap_or_else(|e| refused(e));
+        (trace, execution)
+    };
+    assert!(
+        trace.memory_bytes() <= options.memory_limit,
+        "the trace keeps {} bytes, over its budget",
+        trace.memory_bytes()
+    );
+    // Only the trace keeps its steps, so only it may stop for memory.
+    if !hit_memory_limit(trace.outcome()) {
         assert_eq!(
             &execution.outcome,
             trace.outcome(),
@@ -180,11 +207,23 @@ pub fn vm(data: &[u8]) {
             trace.final_variables(),
             "execute and run agree on the final variables"
         );
-        for index in 0..trace.len() {
-            assert!(trace.step(index).is_some(), "every step up to len() exists");
-        }
-        drop(trace.render());
     }
+    let last = trace.len().saturating_sub(1);
+    for index in [0, last / 2, last] {
+        assert!(
+            trace.step(index).is_some() || trace.is_empty(),
+            "step {index} exists"
+        );
+    }
+    for line in trace.lines().take(VM_RENDERED_LINES) {
+        drop(line);
+    }
+}
+
+fn hit_memory_limit(outcome: &lang::Outcome) -> bool {
+    outcome
+        .error()
+        .is_some_and(|error| error.kind == lang::RuntimeErrorKind::MemoryLimit)
 }
 
 /// The sample meshes [`vm`] runs algorithms on: the tetrahedron and the cube

@@ -120,8 +120,8 @@ pub use topology::Topology;
 pub use trace::{FrameView, Outcome, RuntimeError, RuntimeErrorKind, StepKind, StepView, Trace};
 pub use types::{Type, Value};
 pub use vm::{
-    DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute, execute_editing, run,
-    run_editing,
+    DEFAULT_MEMORY_LIMIT, DEFAULT_STEP_LIMIT, Execution, InputError, RunOptions, execute,
+    execute_editing, run, run_editing,
 };
 
 use std::sync::Arc;

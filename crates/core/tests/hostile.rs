@@ -146,6 +146,24 @@ fn generated() -> Vec<(&'static str, Vec<u8>)> {
             algorithm("n : Integer", &"n := 1 # 2;\n".repeat(50_000)),
         ),
         (
+            "run-60000-variables.alg",
+            format!(
+                "// run: wide cube.htb v=0\nalgorithm wide(v : Vertex) : HalfEdge;\nvar {} : \
+                 Integer;\nbegin\n  while true do\n    a0 := a0 + 1;\n  end;\nend;\n",
+                variables(60_000)
+            ),
+        ),
+        (
+            "run-calls-20000-variables.alg",
+            format!(
+                "// run: spin cube.htb v=0\nalgorithm fat(v : Vertex) : HalfEdge returns Integer;\n\
+                 var {} : Integer;\nbegin\n  return 1;\nend;\nalgorithm spin(v : Vertex) : \
+                 HalfEdge;\nvar i : Integer;\nbegin\n  while true do\n    i := fat(v);\n  \
+                 end;\nend;\n",
+                variables(20_000)
+            ),
+        ),
+        (
             "alg-too-large.alg",
             format!("// {}\n", "x".repeat(lang::MAX_SOURCE_BYTES)),
         ),
@@ -156,7 +174,17 @@ fn generated() -> Vec<(&'static str, Vec<u8>)> {
         .collect()
 }
 
-/// What `edgewise check` or `edgewise check-alg` reports for a file.
+/// `a0, a1, …` up to `count` names, for algorithms with many variables.
+fn variables(count: usize) -> String {
+    (0..count)
+        .map(|i| format!("a{i}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// What `edgewise check` or `edgewise check-alg` reports for a file; for an
+/// algorithm file with a `// run: NAME MESH ARG…` line, what `edgewise
+/// trace` reports after running it on that sample.
 fn outcome(name: &str, bytes: &[u8]) -> String {
     if name.ends_with(".alg") {
         let source = match lang::source_text(bytes, Some(name)) {
@@ -164,7 +192,14 @@ fn outcome(name: &str, bytes: &[u8]) -> String {
             Err(rendered) => return rendered,
         };
         return match lang::compile_rendered(source, Some(name)) {
-            Ok(program) => format!("{name}: ok, {} algorithms\n", program.algorithms.len()),
+            Ok(program) => match source
+                .lines()
+                .next()
+                .and_then(|l| l.strip_prefix("// run: "))
+            {
+                Some(run) => run_outcome(name, &program, run),
+                None => format!("{name}: ok, {} algorithms\n", program.algorithms.len()),
+            },
             Err(rendered) => rendered,
         };
     }
@@ -184,6 +219,43 @@ fn outcome(name: &str, bytes: &[u8]) -> String {
             out
         }
         Err(error) => error.render(name),
+    }
+}
+
+/// Runs `NAME MESH ARG…` of `program` as `edgewise trace` does, with the
+/// default limits, and gives the error line it prints; the run must keep
+/// no more memory than its budget.
+fn run_outcome(file: &str, program: &lang::Program, run: &str) -> String {
+    let mut words = run.split_whitespace();
+    let (Some(name), Some(mesh)) = (words.next(), words.next()) else {
+        return format!("{file}: the run line needs a name and a mesh\n");
+    };
+    let Some(algorithm) = program.algorithm(name) else {
+        return format!("{file}: no algorithm `{name}`\n");
+    };
+    let arguments: Vec<(String, lang::Value)> = words
+        .map(|word| algorithm.parse_argument(word).expect("a valid argument"))
+        .collect();
+    let inputs: Vec<(&str, lang::Value)> =
+        arguments.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+    let mut mesh = formats::load(sample(mesh).as_bytes(), mesh, algorithm.structure)
+        .expect("the sample loads")
+        .mesh;
+    let options = lang::RunOptions::default();
+    let trace = if algorithm.edits() {
+        lang::run_editing(algorithm, &mut mesh, &inputs, options)
+    } else {
+        lang::run(algorithm, &mesh, &inputs, options)
+    }
+    .expect("the inputs fit");
+    assert!(
+        trace.memory_bytes() <= lang::DEFAULT_MEMORY_LIMIT,
+        "{file}: the trace keeps {} bytes",
+        trace.memory_bytes()
+    );
+    match trace.outcome().error() {
+        Some(error) => format!("{file}:{}: error: {}\n", error.line, error.message),
+        None => format!("{file}: ran {} steps\n", trace.len()),
     }
 }
 

@@ -531,6 +531,7 @@ end;
     let hoard = algorithm(&program, "hoard");
     let options = RunOptions {
         step_limit: 2_000_000,
+        ..RunOptions::default()
     };
     let fast = execute(&hoard, &mesh, &[("v", Value::Vertex(0))], options).expect("fits");
     let error = fast.outcome.error().expect("stopped");
@@ -707,6 +708,7 @@ end;
         &[("v", Value::Vertex(0)), ("laps", Value::Integer(50_000))],
         RunOptions {
             step_limit: 1_000_000,
+            ..RunOptions::default()
         },
     )
     .expect("fits");

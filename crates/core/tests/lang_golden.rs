@@ -89,8 +89,16 @@ fn runtime_errors_render_as_recorded() {
             edgewise_core::schema::Structure::WingedEdge => &winged_mesh,
             edgewise_core::schema::Structure::HalfEdge => &half_mesh,
         };
-        let trace =
-            lang::run(algorithm, &topology, &args, RunOptions { step_limit }).expect("inputs fit");
+        let trace = lang::run(
+            algorithm,
+            &topology,
+            &args,
+            RunOptions {
+                step_limit,
+                ..RunOptions::default()
+            },
+        )
+        .expect("inputs fit");
         assert!(trace.outcome().error().is_some(), "{name} ran to the end");
         let lines: Vec<String> = (0..trace.len()).map(|i| trace.render_line(i)).collect();
         let shown = lines.len().saturating_sub(6);

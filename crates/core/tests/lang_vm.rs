@@ -274,7 +274,10 @@ end;";
         &algorithm,
         &&mesh,
         &[("v", Value::Vertex(0))],
-        RunOptions { step_limit: 1000 },
+        RunOptions {
+            step_limit: 1000,
+            ..RunOptions::default()
+        },
     )
     .expect("fits");
     assert_eq!(limited.len(), 1000);
@@ -300,7 +303,10 @@ end;";
         &idle,
         &&mesh,
         &[("v", Value::Vertex(0))],
-        RunOptions { step_limit: 50 },
+        RunOptions {
+            step_limit: 50,
+            ..RunOptions::default()
+        },
     )
     .expect("fits");
     assert_eq!(
@@ -557,6 +563,7 @@ fn a_million_steps_stay_compact_and_reachable() {
         &[("v", Value::Vertex(0))],
         RunOptions {
             step_limit: 2_000_000,
+            ..RunOptions::default()
         },
     )
     .expect("fits");

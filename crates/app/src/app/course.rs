@@ -199,7 +199,7 @@ impl EdgewiseApp {
                 crate::algorithm::Run::Tracing(session) => algorithm
                     .params()
                     .zip(session.trace.initial_variables())
-                    .map(|(p, v)| (p.name.clone(), *v))
+                    .map(|(p, v)| (p.name.clone(), v))
                     .collect(),
                 crate::algorithm::Run::Picking(pending) => pending.inputs.clone(),
                 crate::algorithm::Run::Idle => Vec::new(),

@@ -9,9 +9,14 @@
 //! that says which frame each run of consecutive steps belongs to, found by
 //! binary search; a run without calls has one segment.
 //!
-//! Each frame's variables are snapshotted when it starts and every
-//! [`SNAPSHOT_INTERVAL`] of its own steps, so its state after any step is
-//! one snapshot plus at most that many of its assignments replayed.
+//! A frame starts from its algorithm's initial variables, and only those
+//! that start otherwise (its parameters and arrays) are stored for it, so a
+//! call of an algorithm with hundreds of variables costs a few bytes, not
+//! hundreds of values. Its variables are then snapshotted every
+//! [`SNAPSHOT_INTERVAL`] of its own steps, or every as many steps as it has
+//! variables if that is more, so snapshots never cost more than one value a
+//! step; its state after any step is one snapshot plus at most that many of
+//! its assignments replayed.
 //! Arrays are logged the same way as the mesh: each array's changes (an
 //! append, or an item replaced with the old item kept) with the step that
 //! made them, so its items at any step are its changes up to that step
@@ -23,15 +28,21 @@ use super::builtin::Builtin;
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Op, Routine, VariableInfo};
 use super::diagnostic::Span;
 use super::types::{Type, Value, show_items};
-use super::vm::Recorder;
+use super::vm::{Held, Recorder};
 use crate::mesh::{Change, Edit, EditError};
 use crate::schema::{Column, ElementRef};
 use glam::Vec3;
 use std::fmt;
 use std::sync::Arc;
 
-/// A frame's own steps between two snapshots of its variables.
+/// A frame's own steps between two snapshots of its variables, at least.
 pub const SNAPSHOT_INTERVAL: usize = 256;
+
+/// The own steps after which a frame with `count` variables is snapshotted
+/// again: a snapshot's values never outnumber the steps between two.
+fn snapshot_interval(count: usize) -> usize {
+    count.max(SNAPSHOT_INTERVAL)
+}
 
 /// One recorded step, as stored.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +59,8 @@ pub enum RuntimeErrorKind {
     Fault,
     /// The step limit stopped a run that may never end.
     StepLimit,
+    /// The run would have needed more memory than its budget.
+    MemoryLimit,
     /// The algorithm refused (`refuse`): a precondition does not hold.
     Refused,
 }
@@ -240,8 +253,11 @@ struct FrameRecord {
     call_step: u32,
     /// The index of its first step.
     first: u32,
-    /// Its variables as it started, from here in the snapshot values.
+    /// The variables it started with other values than its algorithm's
+    /// initial ones: `entry_len` of the entries from `entry` on.
     entry: u32,
+    entry_len: u32,
+    /// How many variables it has.
     count: u32,
     /// Later snapshots: the step each was taken before, and where its
     /// values are.
@@ -314,6 +330,9 @@ pub struct Trace {
     segments: Vec<Segment>,
     /// The values of every frame's snapshots.
     values: Vec<Value>,
+    /// The variables every frame started with that differ from its
+    /// algorithm's initial ones.
+    entries: Vec<(u32, Value)>,
     arrays: Vec<ArrayLog>,
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
@@ -335,6 +354,7 @@ pub(crate) struct TraceRecorder {
     started: bool,
     segments: Vec<Segment>,
     values: Vec<Value>,
+    entries: Vec<(u32, Value)>,
     arrays: Vec<ArrayLog>,
     marks: Vec<(u32, ElementRef)>,
     highlights: Vec<(u32, ElementRef)>,
@@ -343,13 +363,33 @@ pub(crate) struct TraceRecorder {
     /// The callers of the running frame, outermost first, each with how
     /// many of its own steps remain until its next snapshot.
     callers: Vec<(u32, usize)>,
-    /// The running frame, and the step before which it is snapshotted next.
+    /// The running frame, its number of variables, and the step before
+    /// which it is snapshotted next.
     frame: u32,
+    count: usize,
     due: usize,
+    /// Bytes held by every buffer above but `steps`, counted as they grow,
+    /// and by the messages' texts.
+    held: usize,
+    message_bytes: usize,
 }
 
 fn index_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+/// Appends `items` to `list`, adding what its buffer grew by to `held`: a
+/// run's memory is counted as it is taken, not summed over every buffer.
+pub(crate) fn extend_counted<T: Copy>(list: &mut Vec<T>, items: &[T], held: &mut usize) {
+    let before = list.capacity();
+    list.extend_from_slice(items);
+    *held += (list.capacity() - before) * size_of::<T>();
+}
+
+pub(crate) fn push_counted<T>(list: &mut Vec<T>, item: T, held: &mut usize) {
+    let before = list.capacity();
+    list.push(item);
+    *held += (list.capacity() - before) * size_of::<T>();
 }
 
 impl TraceRecorder {
@@ -357,7 +397,7 @@ impl TraceRecorder {
     fn encode(&mut self, value: Value) -> u32 {
         match value {
             Value::Vector(v) => {
-                self.vectors.push(v);
+                push_counted(&mut self.vectors, v, &mut self.held);
                 index_u32(self.vectors.len() - 1)
             }
             other => other.code(),
@@ -369,16 +409,16 @@ impl TraceRecorder {
     }
 
     /// Snapshots the running frame's variables before the next step; the
-    /// next one is due [`SNAPSHOT_INTERVAL`] of its own steps later.
+    /// next one is due [`snapshot_interval`] of its own steps later.
     #[cold]
     fn snapshot(&mut self, variables: &[Value]) {
         let offset = index_u32(self.values.len());
-        self.values.extend_from_slice(variables);
+        extend_counted(&mut self.values, variables, &mut self.held);
         let step = index_u32(self.steps.len());
         if let Some(frame) = self.frames.get_mut(self.frame as usize) {
-            frame.snapshots.push((step, offset));
+            push_counted(&mut frame.snapshots, (step, offset), &mut self.held);
         }
-        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+        self.due = self.steps.len() + snapshot_interval(self.count);
     }
 
     /// Starts a segment of the running frame's steps at the next step.
@@ -386,12 +426,12 @@ impl TraceRecorder {
         let start = index_u32(self.steps.len());
         let frame = self.frame;
         if self.segments.is_empty() {
-            self.segments.extend(ROOT_ONLY);
+            extend_counted(&mut self.segments, &ROOT_ONLY, &mut self.held);
         }
         match self.segments.last_mut() {
             // A frame that made no step owns none.
             Some(last) if last.start == start => last.frame = frame,
-            _ => self.segments.push(Segment { start, frame }),
+            _ => push_counted(&mut self.segments, Segment { start, frame }, &mut self.held),
         }
     }
 
@@ -411,6 +451,7 @@ impl TraceRecorder {
         recorder.highlights.shrink_to_fit();
         recorder.frames.calls.shrink_to_fit();
         recorder.segments.shrink_to_fit();
+        recorder.entries.shrink_to_fit();
         let recorder = recorder;
         Trace {
             algorithm,
@@ -418,6 +459,7 @@ impl TraceRecorder {
             frames: recorder.frames,
             segments: recorder.segments,
             values: recorder.values,
+            entries: recorder.entries,
             arrays: recorder.arrays,
             marks: recorder.marks,
             highlights: recorder.highlights,
@@ -441,17 +483,25 @@ impl Recorder for TraceRecorder {
         self.steps.push(Step { pc, a, b, r });
     }
 
-    fn enter(&mut self, routine: u32, variables: &[Value]) {
+    fn enter(&mut self, routine: u32, variables: &[Value], initial: &[Value]) {
         let root = !self.started;
         let (parent, call_step) = if root {
             (NONE, NONE)
         } else {
             let left = self.due.saturating_sub(self.steps.len());
-            self.callers.push((self.frame, left));
+            push_counted(&mut self.callers, (self.frame, left), &mut self.held);
             (self.frame, self.current_step())
         };
-        let entry = index_u32(self.values.len());
-        self.values.extend_from_slice(variables);
+        let entry = index_u32(self.entries.len());
+        for (number, (&value, initial)) in variables.iter().zip(initial).enumerate() {
+            if value != *initial {
+                push_counted(
+                    &mut self.entries,
+                    (index_u32(number), value),
+                    &mut self.held,
+                );
+            }
+        }
         let record = FrameRecord {
             routine,
             parent,
@@ -459,16 +509,18 @@ impl Recorder for TraceRecorder {
             call_step,
             first: index_u32(self.steps.len()),
             entry,
+            entry_len: index_u32(self.entries.len()) - entry,
             count: index_u32(variables.len()),
             snapshots: Vec::new(),
         };
-        self.due = self.steps.len() + SNAPSHOT_INTERVAL;
+        self.count = variables.len();
+        self.due = self.steps.len() + snapshot_interval(self.count);
         if root {
             self.started = true;
             self.frames.root = record;
             self.frame = 0;
         } else {
-            self.frames.calls.push(record);
+            push_counted(&mut self.frames.calls, record, &mut self.held);
             self.frame = index_u32(self.frames.calls.len());
             self.segment();
         }
@@ -477,16 +529,21 @@ impl Recorder for TraceRecorder {
     fn leave(&mut self) {
         if let Some((frame, left)) = self.callers.pop() {
             self.frame = frame;
+            self.count = self
+                .frames
+                .get(frame as usize)
+                .map_or(0, |f| f.count as usize);
             self.due = self.steps.len() + left;
             self.segment();
         }
     }
 
     fn array_created(&mut self, item: Type) {
-        self.arrays.push(ArrayLog {
+        let log = ArrayLog {
             item,
             changes: Vec::new(),
-        });
+        };
+        push_counted(&mut self.arrays, log, &mut self.held);
     }
 
     // The VM records the step just before calling this, as for marks.
@@ -496,29 +553,38 @@ impl Recorder for TraceRecorder {
         let old = old.map_or(0, |old| self.encode(old));
         let new = self.encode(new);
         if let Some(log) = self.arrays.get_mut(array as usize) {
-            log.changes.push(ArrayChange {
+            let change = ArrayChange {
                 step,
                 index,
                 old,
                 new,
                 appended,
-            });
+            };
+            push_counted(&mut log.changes, change, &mut self.held);
         }
     }
 
     fn mark(&mut self, element: ElementRef) {
         let step = self.current_step();
-        self.marks.push((step, element));
+        push_counted(&mut self.marks, (step, element), &mut self.held);
     }
 
     fn highlight(&mut self, element: ElementRef) {
         let step = self.current_step();
-        self.highlights.push((step, element));
+        push_counted(&mut self.highlights, (step, element), &mut self.held);
     }
 
     fn message(&mut self, text: String) -> u32 {
-        self.messages.push(text);
+        self.message_bytes += text.capacity();
+        push_counted(&mut self.messages, text, &mut self.held);
         index_u32(self.messages.len() - 1)
+    }
+
+    fn bytes(&self) -> Held {
+        Held {
+            messages: self.message_bytes,
+            other: self.held + self.steps.capacity() * size_of::<Step>(),
+        }
     }
 }
 
@@ -808,12 +874,10 @@ impl Trace {
 
     /// The started algorithm's variables (parameters first) before the
     /// first step.
-    pub fn initial_variables(&self) -> &[Value] {
-        let root = &self.frames.root;
-        let start = root.entry as usize;
-        self.values
-            .get(start..start + root.count as usize)
-            .unwrap_or(&[])
+    pub fn initial_variables(&self) -> Vec<Value> {
+        self.routine_of(0)
+            .map(|routine| self.entry_variables(&self.frames.root, routine))
+            .unwrap_or_default()
     }
 
     /// The started algorithm's variables when the run stopped.
@@ -844,16 +908,19 @@ impl Trace {
         let later = record
             .snapshots
             .partition_point(|&(step, _)| step as usize <= index);
-        let (from, offset) = later
+        let snapshot = later
             .checked_sub(1)
             .and_then(|i| record.snapshots.get(i))
-            .copied()
-            .unwrap_or((record.first, record.entry));
-        let offset = offset as usize;
-        let mut state = self
-            .values
-            .get(offset..offset + record.count as usize)
-            .map_or_else(Vec::new, <[Value]>::to_vec);
+            .copied();
+        let count = record.count as usize;
+        let (from, mut state) = match snapshot {
+            Some((from, offset)) => {
+                let offset = offset as usize;
+                let state = self.values.get(offset..offset + count);
+                (from, state.map_or_else(Vec::new, <[Value]>::to_vec))
+            }
+            None => (record.first, self.entry_variables(record, routine)),
+        };
         for (range, owner) in self.runs(from as usize..index.saturating_add(1)) {
             if owner != frame {
                 continue;
@@ -865,6 +932,23 @@ impl Trace {
                 {
                     *slot = self.decoder(routine.register_type(var)).decode(step.r);
                 }
+            }
+        }
+        state
+    }
+
+    /// A frame's variables as it started: its algorithm's initial ones,
+    /// with those it started otherwise.
+    fn entry_variables(&self, record: &FrameRecord, routine: &Routine) -> Vec<Value> {
+        let mut state = routine
+            .initial
+            .get(..record.count as usize)
+            .map_or_else(Vec::new, <[Value]>::to_vec);
+        let start = record.entry as usize;
+        let entries = self.entries.get(start..start + record.entry_len as usize);
+        for &(number, value) in entries.unwrap_or(&[]) {
+            if let Some(slot) = state.get_mut(number as usize) {
+                *slot = value;
             }
         }
         state
@@ -1082,6 +1166,7 @@ impl Trace {
             + frames
             + self.segments.capacity() * size_of::<Segment>()
             + self.values.capacity() * size_of::<Value>()
+            + self.entries.capacity() * size_of::<(u32, Value)>()
             + self.arrays.capacity() * size_of::<ArrayLog>()
             + arrays
             + self.vectors.capacity() * size_of::<Vec3>()
@@ -1093,6 +1178,20 @@ impl Trace {
     /// `step 12  line 10  lookup e.startVertex -> vertex 1`, indented two
     /// spaces for each call it is inside (up to [`MAX_INDENT`]).
     pub fn render_line(&self, index: usize) -> String {
+        self.render_line_with(index, &mut |value| self.show(value, index))
+    }
+
+    /// Every step's line, first to last, as [`Self::render_line`] gives
+    /// them. Arrays are replayed once along the way rather than from the
+    /// start for each step that shows one, so a run that grows a long array
+    /// prints in time linear in its steps.
+    pub fn lines(&self) -> impl Iterator<Item = String> + '_ {
+        let mut arrays = ArrayReplay::new(self);
+        (0..self.steps.len())
+            .map(move |index| self.render_line_with(index, &mut |value| arrays.show(value, index)))
+    }
+
+    fn render_line_with(&self, index: usize, show: &mut dyn FnMut(Value) -> String) -> String {
         let Some(view) = self.step(index) else {
             return String::new();
         };
@@ -1106,13 +1205,19 @@ impl Trace {
             "step {}  line {}  {indent}{}",
             index + 1,
             view.line,
-            self.render_operation(index)
+            self.render_operation_with(index, show)
         )
     }
 
     /// What step `index` did, in the words of [`Self::render_line`] without
     /// its step and line: `lookup e.startVertex -> vertex 1`.
     pub fn render_operation(&self, index: usize) -> String {
+        self.render_operation_with(index, &mut |value| self.show(value, index))
+    }
+
+    /// [`Self::render_operation`], showing values (arrays as their items)
+    /// with `show`.
+    fn render_operation_with(&self, index: usize, show: &mut dyn FnMut(Value) -> String) -> String {
         let Some(view) = self.step(index) else {
             return String::new();
         };
@@ -1128,7 +1233,7 @@ impl Trace {
                     .variables
                     .get(variable)
                     .map_or("?", |v| v.name.as_str());
-                format!("assign {name} := {}", self.show(value, index))
+                format!("assign {name} := {}", show(value))
             }
             StepKind::Compare {
                 op,
@@ -1186,14 +1291,14 @@ impl Trace {
                             .variables
                             .iter()
                             .filter(|(v, _)| v.is_param)
-                            .map(|(v, value)| format!("{} = {}", v.name, self.show(*value, index)))
+                            .map(|(v, value)| format!("{} = {}", v.name, show(*value)))
                             .collect()
                     })
                     .unwrap_or_default();
                 format!("call {algorithm}({})", arguments.join(", "))
             }
             StepKind::Return { value: Some(value) } => {
-                format!("return {}", self.show(value, index))
+                format!("return {}", show(value))
             }
             StepKind::Return { value: None } => "return".to_owned(),
             StepKind::Index {
@@ -1237,8 +1342,8 @@ impl Trace {
     /// line, and `error: …` if the run stopped on an error.
     pub fn render(&self) -> String {
         let mut out = String::new();
-        for index in 0..self.steps.len() {
-            out.push_str(&self.render_line(index));
+        for line in self.lines() {
+            out.push_str(&line);
             out.push('\n');
         }
         out.push_str(&self.render_marked());
@@ -1247,6 +1352,49 @@ impl Trace {
             out.push_str(&format!("error: {error}\n"));
         }
         out
+    }
+}
+
+/// Every array's items as the steps go forward, each array brought up to
+/// the step that shows it: [`Trace::lines`].
+struct ArrayReplay<'t> {
+    trace: &'t Trace,
+    /// Each array's items so far, and how many of its changes made them.
+    arrays: Vec<(Vec<Value>, usize)>,
+}
+
+impl<'t> ArrayReplay<'t> {
+    fn new(trace: &'t Trace) -> Self {
+        Self {
+            trace,
+            arrays: vec![(Vec::new(), 0); trace.arrays.len()],
+        }
+    }
+
+    /// `value` as [`Trace::show`] shows it after step `index`, which is no
+    /// earlier than any step shown before.
+    fn show(&mut self, value: Value, index: usize) -> String {
+        let Value::Array(number) = value else {
+            return value.to_string();
+        };
+        let (Some(log), Some((items, applied))) = (
+            self.trace.arrays.get(number as usize),
+            self.arrays.get_mut(number as usize),
+        ) else {
+            return value.to_string();
+        };
+        let decoder = self.trace.decoder(log.item);
+        let due = log.changes.get(*applied..).unwrap_or(&[]);
+        for change in due.iter().take_while(|c| c.step as usize <= index) {
+            let value = decoder.decode(change.new);
+            if change.appended {
+                items.push(value);
+            } else if let Some(slot) = items.get_mut(change.index as usize) {
+                *slot = value;
+            }
+            *applied += 1;
+        }
+        show_items(items)
     }
 }
 

@@ -5,7 +5,7 @@ use super::builtin::Builtin;
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Instr, MessageItem, Op, Reg, Routine};
 use super::diagnostic::Span;
 use super::topology::Topology;
-use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder};
+use super::trace::{Outcome, RuntimeError, RuntimeErrorKind, Trace, TraceRecorder, push_counted};
 use super::types::{Type, Value};
 use crate::mesh::{Change, EditError, Editor, Mesh, VertexId};
 use crate::schema::{Column, ElementKind, ElementRef, LookupError};
@@ -18,17 +18,43 @@ use std::sync::Arc;
 /// and about 17 MB of trace.
 pub const DEFAULT_STEP_LIMIT: usize = 1_000_000;
 
+/// Bytes a run may keep, unless configured otherwise: its trace (steps,
+/// snapshots, messages), the variables of the calls in progress, its arrays
+/// and the rows and changes it makes. The step limit bounds a run's time;
+/// this bounds what a few steps can each take (a call of an algorithm with
+/// thousands of variables, a long message), so that no algorithm or link can
+/// exhaust a browser tab. Any run of the library uses a few MB.
+pub const DEFAULT_MEMORY_LIMIT: usize = 256 << 20;
+
+/// Values the calls of a run may set up, for each step it may take: a call
+/// counts as one operation, but sets up every variable and intermediate
+/// value of the algorithm it calls, so an algorithm with thousands of
+/// variables called in a loop would otherwise take minutes within the step
+/// limit. No call of fewer than this many values meets it first.
+const VALUES_PER_STEP: usize = 64;
+
+/// The steps between two checks of the memory a run holds; calls and
+/// messages, which can take much more than a step, are checked each time.
+const MEMORY_CHECK_INTERVAL: usize = 1024;
+
+/// What a row made by `new` is counted as: the largest row, a winged edge's
+/// eight references.
+const CREATED_ROW_BYTES: usize = 32;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RunOptions {
     /// The most operations (trace steps) to run. A loop that performs no
     /// operation at all is cut off after this many iterations too.
     pub step_limit: usize,
+    /// The most bytes the run may keep (see [`DEFAULT_MEMORY_LIMIT`]).
+    pub memory_limit: usize,
 }
 
 impl Default for RunOptions {
     fn default() -> Self {
         Self {
             step_limit: DEFAULT_STEP_LIMIT,
+            memory_limit: DEFAULT_MEMORY_LIMIT,
         }
     }
 }
@@ -471,7 +497,9 @@ pub(crate) trait Recorder {
     fn step(&mut self, pc: u32, a: Value, b: Value, r: Value, variables: &[Value]);
     /// A frame starts running `routine` with these variables: the root
     /// frame before the first step, a call's right after the call's step.
-    fn enter(&mut self, routine: u32, variables: &[Value]);
+    /// `initial` are the routine's initial variables, which most of them
+    /// still are.
+    fn enter(&mut self, routine: u32, variables: &[Value], initial: &[Value]);
     /// The innermost frame returned; its return step was recorded.
     fn leave(&mut self);
     /// A new empty array of `item`s, numbered in the order they are made.
@@ -483,6 +511,16 @@ pub(crate) trait Recorder {
     fn highlight(&mut self, element: ElementRef);
     /// Stores a message's text and returns its number.
     fn message(&mut self, text: String) -> u32;
+    /// The bytes it holds for the run's memory budget: its messages' texts,
+    /// and the rest.
+    fn bytes(&self) -> Held;
+}
+
+/// What a [`Recorder`] holds, in bytes.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Held {
+    pub messages: usize,
+    pub other: usize,
 }
 
 #[derive(Default)]
@@ -490,6 +528,7 @@ pub(crate) struct OutputRecorder {
     marked: Vec<ElementRef>,
     highlighted: Vec<ElementRef>,
     messages: Vec<String>,
+    held: Held,
 }
 
 impl Recorder for OutputRecorder {
@@ -497,7 +536,7 @@ impl Recorder for OutputRecorder {
     fn step(&mut self, _pc: u32, _a: Value, _b: Value, _r: Value, _variables: &[Value]) {}
 
     #[inline]
-    fn enter(&mut self, _routine: u32, _variables: &[Value]) {}
+    fn enter(&mut self, _routine: u32, _variables: &[Value], _initial: &[Value]) {}
 
     #[inline]
     fn leave(&mut self) {}
@@ -509,16 +548,21 @@ impl Recorder for OutputRecorder {
     fn array_changed(&mut self, _array: u32, _index: u32, _old: Option<Value>, _new: Value) {}
 
     fn mark(&mut self, element: ElementRef) {
-        self.marked.push(element);
+        push_counted(&mut self.marked, element, &mut self.held.other);
     }
 
     fn highlight(&mut self, element: ElementRef) {
-        self.highlighted.push(element);
+        push_counted(&mut self.highlighted, element, &mut self.held.other);
     }
 
     fn message(&mut self, text: String) -> u32 {
-        self.messages.push(text);
+        self.held.messages += text.capacity();
+        push_counted(&mut self.messages, text, &mut self.held.other);
         u32::try_from(self.messages.len() - 1).unwrap_or(u32::MAX)
+    }
+
+    fn bytes(&self) -> Held {
+        self.held
     }
 }
 
@@ -570,7 +614,17 @@ struct Arrays {
     made: usize,
 }
 
+/// The bytes a call's register file holds.
+fn frame_bytes(registers: &Vec<Value>, null_origins: &Vec<NullOrigin>) -> usize {
+    registers.capacity() * size_of::<Value>() + null_origins.capacity() * size_of::<NullOrigin>()
+}
+
 impl Arrays {
+    /// What the arrays hold, counting each item and each array's own record.
+    fn bytes(&self) -> usize {
+        self.made * size_of::<Value>() + self.lists.len() * size_of::<Vec<Value>>()
+    }
+
     fn reserve(&mut self) -> Result<(), String> {
         if self.made >= MAX_ARRAY_ITEMS {
             return Err(format!(
@@ -642,6 +696,18 @@ struct Machine<'a, S, R> {
     limit: usize,
     steps: usize,
     back_jumps: usize,
+    /// The most bytes the run may hold, and the step at which that, or
+    /// the step limit, is checked next.
+    memory_limit: usize,
+    next_check: usize,
+    /// Bytes held by the register files of calls in progress and of
+    /// returned calls kept for reuse.
+    frame_bytes: usize,
+    /// Rows made by `new`.
+    created_rows: usize,
+    /// Values the calls so far have set up, against
+    /// [`VALUES_PER_STEP`] times the step limit.
+    values_set_up: usize,
 }
 
 impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
@@ -675,6 +741,11 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             limit: options.step_limit,
             steps: 0,
             back_jumps: 0,
+            memory_limit: options.memory_limit,
+            next_check: options.step_limit.min(MEMORY_CHECK_INTERVAL),
+            frame_bytes: 0,
+            created_rows: 0,
+            values_set_up: 0,
         };
         // A routine has fewer than 65,536 registers, so its arrays fit the
         // budget of a fresh run.
@@ -727,6 +798,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             marked,
             highlighted,
             messages,
+            ..
         } = std::mem::take(&mut self.recorder).into();
         Execution {
             marked,
@@ -810,7 +882,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
 
     fn run(&mut self) -> Outcome {
         let variables = self.registers.get(..self.variable_count).unwrap_or(&[]);
-        self.recorder.enter(self.current, variables);
+        let initial = self.routine.initial.get(..self.variable_count);
+        self.recorder
+            .enter(self.current, variables, initial.unwrap_or(&[]));
         let mut code: &'a [Instr] = &self.routine.code;
         let mut pc = 0usize;
         loop {
@@ -821,8 +895,14 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                 );
             };
             let op = instr.op;
-            if self.steps >= self.limit && op.is_step() {
-                return self.step_limit(pc);
+            if self.steps >= self.next_check && op.is_step() {
+                if self.steps >= self.limit {
+                    return self.step_limit(pc);
+                }
+                if let Some(outcome) = self.memory_check(pc) {
+                    return outcome;
+                }
+                self.next_check = (self.steps + MEMORY_CHECK_INTERVAL).min(self.limit);
             }
             match op {
                 Op::Lookup { dst, base, field } => {
@@ -895,6 +975,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                         Err(error) => return self.fail(pc, error),
                     };
                     let value = Value::from(element);
+                    self.created_rows += 1;
                     self.record(pc, Value::Null, Value::Null, value);
                     self.note_changes();
                     self.set(dst, value);
@@ -937,8 +1018,14 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     self.set(dst, result);
                 }
                 Op::Invoke { dst, routine, args } => {
+                    if let Some(outcome) = self.set_up_check(pc, routine) {
+                        return outcome;
+                    }
                     if let Err(message) = self.call(pc, dst, routine, args) {
                         return self.fail(pc, message);
+                    }
+                    if let Some(outcome) = self.memory_check(pc) {
+                        return outcome;
                     }
                     code = &self.routine.code;
                     pc = 0;
@@ -1030,6 +1117,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     let text = self.format_message(index);
                     let number = self.recorder.message(text);
                     self.record(pc, Value::Integer(number as i32), Value::Null, Value::Null);
+                    if let Some(outcome) = self.memory_check(pc) {
+                        return outcome;
+                    }
                 }
                 Op::Jump { target } => {
                     if let Some(outcome) = self.jump(pc, target) {
@@ -1136,11 +1226,13 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             ));
         }
         let (mut registers, mut null_origins) = self.spare.pop().unwrap_or_default();
+        let before = frame_bytes(&registers, &null_origins);
         registers.clear();
         registers.extend_from_slice(&callee.initial);
         let variable_count = callee.variables.len().min(registers.len());
         null_origins.clear();
         null_origins.resize(variable_count, NullOrigin::Unassigned);
+        self.frame_bytes += frame_bytes(&registers, &null_origins) - before;
         let params = callee.param_count();
         let line = self.location(pc).1;
         let arguments = self.routine.call_arguments(args, params);
@@ -1171,8 +1263,72 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         self.current = u32::from(number);
         self.variable_count = variable_count;
         let variables = self.registers.get(..variable_count).unwrap_or(&[]);
-        self.recorder.enter(self.current, variables);
+        let initial = callee.initial.get(..variable_count).unwrap_or(&[]);
+        self.recorder.enter(self.current, variables, initial);
         Ok(())
+    }
+
+    /// Counts the values a call of routine `number` sets up, and stops the
+    /// run when its calls have set up more than [`VALUES_PER_STEP`] for each
+    /// step it may take.
+    fn set_up_check(&mut self, pc: usize, number: u16) -> Option<Outcome> {
+        let callee = self.routines.get(usize::from(number))?;
+        let most = self.limit.saturating_mul(VALUES_PER_STEP);
+        self.values_set_up += callee.initial.len();
+        if self.values_set_up <= most {
+            return None;
+        }
+        let (span, line) = self.location(pc);
+        Some(Outcome::Error(RuntimeError {
+            kind: RuntimeErrorKind::StepLimit,
+            span,
+            line,
+            message: format!(
+                "stopped after {} operations: the calls of this run set up more than {most} \
+                 variables and intermediate values, the most a run may (each call of `{}` sets \
+                 up {}); does it call in a loop that never ends?",
+                self.steps,
+                callee.name,
+                callee.initial.len()
+            ),
+        }))
+    }
+
+    /// Stops the run when what it holds has passed its memory budget.
+    fn memory_check(&self, pc: usize) -> Option<Outcome> {
+        let recorded = self.recorder.bytes();
+        let parts = [
+            ("the trace of its steps", recorded.other),
+            ("the texts of its messages", recorded.messages),
+            ("the variables of the calls in progress", self.frame_bytes),
+            ("its arrays", self.arrays.bytes()),
+            (
+                "the rows and changes it made",
+                self.created_rows * CREATED_ROW_BYTES
+                    + self.store.journal().len() * (size_of::<Change>() + size_of::<u32>()),
+            ),
+        ];
+        let held: usize = parts.iter().map(|(_, bytes)| bytes).sum();
+        if held <= self.memory_limit {
+            return None;
+        }
+        let largest = parts
+            .iter()
+            .max_by_key(|(_, bytes)| *bytes)
+            .map_or("", |(part, _)| part);
+        let (span, line) = self.location(pc);
+        Some(Outcome::Error(RuntimeError {
+            kind: RuntimeErrorKind::MemoryLimit,
+            span,
+            line,
+            message: format!(
+                "stopped after {} operations: the run would need more than {} MB of memory, \
+                 the most a run may keep for its trace, variables, arrays and new rows (most of \
+                 it for {largest})",
+                self.steps,
+                self.memory_limit >> 20
+            ),
+        }))
     }
 
     /// Ends the running call: the caller runs again, with `result` in the
