@@ -3,7 +3,10 @@
 use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, RecordsMut as _};
 use edgewise_core::{
     formats::{self, FormatError, Loaded},
-    mesh::{EdgeCorrespondence, EdgeId, Edit as _, HalfEdgeId, Mesh, Renumbering, Structure},
+    mesh::{
+        EdgeCorrespondence, EdgeId, Edit as _, FaceId, HalfEdgeId, Mesh, Renumbering, Structure,
+        VertexId,
+    },
 };
 
 use crate::selection::{self, Highlight};
@@ -299,7 +302,12 @@ pub fn map_element(
         (ElementKind::Edge, Structure::HalfEdge) => correspondence
             .edge(HalfEdgeId::new(element.id))
             .map(ElementRef::edge),
-        _ => Some(element),
+        (ElementKind::Vertex, _) => correspondence
+            .vertex(VertexId::new(element.id))
+            .map(ElementRef::vertex),
+        (ElementKind::Face, _) => correspondence
+            .face(FaceId::new(element.id))
+            .map(ElementRef::face),
     }
 }
 

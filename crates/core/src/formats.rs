@@ -318,9 +318,55 @@ pub fn save(mesh: &Mesh, format: Format, options: &SaveOptions) -> Result<Vec<u8
                 "the mesh did not convert to half-edge".to_owned(),
             )),
         },
-        Format::Ply => ply::write(&mesh.to_polygons(), options.ply_encoding),
-        Format::Obj => Ok(obj::write(&mesh.to_polygons()).into_bytes()),
+        Format::Ply | Format::Obj => {
+            let polygons = mesh.to_polygons();
+            check_polygon_faces(&polygons, format)?;
+            let bytes = match format {
+                Format::Ply => ply::write(&polygons, options.ply_encoding)?,
+                _ => obj::write(&polygons).into_bytes(),
+            };
+            check_reads_back(mesh, &bytes, format)?;
+            Ok(bytes)
+        }
     }
+}
+
+/// A polygon file lists each face's corners once: a face that passes a
+/// vertex twice (along a dangling edge and back, or pinched at a vertex)
+/// cannot be written so that it reads back.
+fn check_polygon_faces(polygons: &Polygons, format: Format) -> Result<(), SaveError> {
+    match polygons.repeated_corner() {
+        None => Ok(()),
+        Some((face, vertex)) => Err(SaveError::Unsupported(format!(
+            "{face} passes {vertex} twice (along a dangling edge and back, or pinched there); \
+             {} lists each face's corners once and cannot hold it: save as .wtb or .htb, \
+             which keep the tables as they are",
+            format.description()
+        ))),
+    }
+}
+
+/// Reads `bytes` back and refuses them unless they give the same counts as
+/// `mesh`: a command must never write a file Edgewise cannot read back.
+fn check_reads_back(mesh: &Mesh, bytes: &[u8], format: Format) -> Result<(), SaveError> {
+    let wrote = mesh.stats();
+    let refused = |why: String| {
+        SaveError::Unsupported(format!(
+            "the mesh cannot be written as {} so that it reads back ({why}): save as .wtb or \
+             .htb, which keep the tables as they are",
+            format.description()
+        ))
+    };
+    let loaded =
+        load_as(bytes, format, mesh.structure()).map_err(|error| refused(error.to_string()))?;
+    let read = loaded.mesh.stats();
+    if (read.vertices, read.edges, read.faces) != (wrote.vertices, wrote.edges, wrote.faces) {
+        return Err(refused(format!(
+            "it would read back as {} vertices, {} edges and {} faces instead of {}, {} and {}",
+            read.vertices, read.edges, read.faces, wrote.vertices, wrote.edges, wrote.faces
+        )));
+    }
+    Ok(())
 }
 
 /// Reads a PLY or OBJ file into a polygon list without building a

@@ -1082,6 +1082,160 @@ proptest::proptest! {
     }
 }
 
+/// What a mesh is, for comparing it with a copy written and read back.
+fn shape_counts(mesh: &Mesh) -> (usize, usize, usize, usize, i64) {
+    let stats = mesh.stats();
+    (
+        stats.vertices,
+        stats.edges,
+        stats.faces,
+        stats.boundary_loops,
+        stats.euler_characteristic,
+    )
+}
+
+/// Converts `mesh` (deleted rows and all) to the other structure and
+/// writes it in every format: each result validates and reads back to the
+/// counts of the compacted mesh. Only a polygon format may refuse, or .htb
+/// for a winged-edge mesh with a dangling edge, saying which format keeps it.
+fn assert_saved_faithfully(
+    mesh: &Mesh,
+    context: &str,
+) -> Result<(), proptest::test_runner::TestCaseError> {
+    let mut compacted = mesh.clone();
+    compacted.compact();
+    let expected = shape_counts(&compacted);
+    let other = match mesh.structure() {
+        Structure::WingedEdge => Structure::HalfEdge,
+        Structure::HalfEdge => Structure::WingedEdge,
+    };
+    match mesh.convert_to(other) {
+        Ok(converted) => {
+            let issues = converted.validate();
+            proptest::prop_assert!(issues.is_empty(), "{}: converted: {:#?}", context, issues);
+            proptest::prop_assert_eq!(shape_counts(&converted), expected, "{}: converted", context);
+        }
+        // Winged-edge converts through its face list, which cannot hold a
+        // dangling edge; it says so.
+        Err(error) => proptest::prop_assert!(
+            matches!(error, edgewise_core::mesh::ConvertError::PassesTwice { .. }),
+            "{}: convert refused: {}",
+            context,
+            error
+        ),
+    }
+    for format in formats::Format::ALL {
+        match formats::save(mesh, format, &formats::SaveOptions::default()) {
+            Ok(bytes) => {
+                let structure = format.native_structure().unwrap_or(mesh.structure());
+                let loaded = formats::load_as(&bytes, format, structure).map_err(|e| {
+                    proptest::test_runner::TestCaseError::fail(format!(
+                        "{context}: the {format:?} written does not read back: {e}"
+                    ))
+                })?;
+                let issues = loaded.mesh.validate();
+                proptest::prop_assert!(
+                    issues.is_empty(),
+                    "{}: {:?} read back: {:#?}",
+                    context,
+                    format,
+                    issues
+                );
+                proptest::prop_assert_eq!(
+                    shape_counts(&loaded.mesh),
+                    expected,
+                    "{}: {:?}",
+                    context,
+                    format
+                );
+            }
+            Err(error) => {
+                let message = error.to_string();
+                let polygon_format = format.native_structure().is_none();
+                let winged_to_htb =
+                    format == formats::Format::Htb && mesh.structure() == Structure::WingedEdge;
+                proptest::prop_assert!(
+                    (polygon_format && message.contains(".wtb or .htb"))
+                        || (winged_to_htb
+                            && message.contains("keep this mesh in winged-edge (.wtb)")),
+                    "{}: {:?} refused: {}",
+                    context,
+                    format,
+                    message
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 32, ..proptest::prelude::ProptestConfig::default() })]
+
+    /// Random edit chains, never compacted: after every accepted edit the
+    /// mesh converts and saves in every format to what it is, or a polygon
+    /// format refuses with the reason.
+    #[test]
+    fn random_edit_chains_convert_and_save_faithfully(
+        index in 0usize..6,
+        half in proptest::prelude::any::<bool>(),
+        steps in proptest::collection::vec(
+            (0usize..Operation::ALL.len(), proptest::prelude::any::<[u16; 4]>()),
+            1..10,
+        ),
+    ) {
+        let structure = if half { Structure::HalfEdge } else { Structure::WingedEdge };
+        let mut mesh = start(index, structure);
+        for (step, (op, picks)) in steps.into_iter().enumerate() {
+            let op = Operation::ALL[op];
+            let ids = pick(&mesh, op, picks);
+            if operations::apply(&mut mesh, op, &ids).is_ok() {
+                assert_saved_faithfully(&mesh, &format!("step {step}: {op} {ids:?}"))?;
+            }
+        }
+    }
+}
+
+#[test]
+fn a_mesh_mid_edit_converts_both_ways() {
+    let bytes = std::fs::read(root().join("meshes/octahedron.obj")).expect("sample");
+    let polygons = formats::read_polygons(&bytes, formats::Format::Obj).expect("reads");
+    for structure in [Structure::HalfEdge, Structure::WingedEdge] {
+        for (op, ids) in [(Operation::CollapseEdge, [0]), (Operation::Kef, [0])] {
+            let mut mesh = build(&polygons, structure);
+            operations::apply(&mut mesh, op, &ids).expect("applies");
+            assert!(!mesh.deleted_rows().is_empty(), "{op} leaves deleted rows");
+            assert_saved_faithfully(&mesh, &format!("{structure:?} {op}")).expect("faithful");
+        }
+    }
+}
+
+#[test]
+fn a_dangling_edge_is_refused_by_obj_and_ply_with_the_reason() {
+    let mesh = build(&generate::cube(), Structure::HalfEdge);
+    let (mesh, _, _) = with_dangling_edge(&mesh);
+    for format in [formats::Format::Obj, formats::Format::Ply] {
+        let error = formats::save(&mesh, format, &formats::SaveOptions::default())
+            .expect_err("a dangling edge does not fit a polygon list");
+        let message = error.to_string();
+        assert!(
+            message.contains("passes vertex") && message.contains("save as .wtb or .htb"),
+            "{message}"
+        );
+    }
+    for format in [formats::Format::Wtb, formats::Format::Htb] {
+        let bytes =
+            formats::save(&mesh, format, &formats::SaveOptions::default()).expect("tables keep it");
+        let loaded = formats::load_as(
+            &bytes,
+            format,
+            format.native_structure().expect("a table format"),
+        )
+        .expect("reads back");
+        assert!(loaded.mesh.validate().is_empty());
+    }
+}
+
 /// One accepted example of every operation on a small mesh, in both
 /// structures, with its journal as the app would animate it: the exact
 /// sequence a traced version must reproduce. In

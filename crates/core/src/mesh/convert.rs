@@ -1,6 +1,9 @@
 //! Conversions: half-edge ⇄ winged-edge (same vertex and face numbering, each
 //! winged edge ↔ one half-edge pair) and both back to a polygon list.
 //!
+//! A mesh with deleted rows (mid-edit) is compacted first: the converted
+//! mesh has no gaps, and the [`EdgeCorrespondence`] maps the old ids.
+//!
 //! The conversions are canonical, so the builds and conversions agree:
 //! `HalfEdgeMesh::build(p)` converted to winged-edge equals
 //! `WingedEdgeMesh::build(p)`, and a winged-edge mesh converted to half-edge
@@ -11,6 +14,7 @@
 use std::fmt;
 
 use super::builder::NONE;
+use super::edit::{Edit as _, Renumbering};
 use super::error::BuildError;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
@@ -18,6 +22,7 @@ use super::navigation::Navigation;
 use super::polygons::Polygons;
 use super::validate::Issue;
 use super::winged_edge::{self, Side, WingedEdge, WingedEdgeMesh};
+use crate::schema::{ElementKind, ElementRef};
 
 /// Why a conversion did not happen.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,6 +32,9 @@ pub enum ConvertError {
     Invalid(Vec<Issue>),
     /// The source mesh is consistent but cannot be rebuilt.
     Build(BuildError),
+    /// A winged-edge face passes a vertex twice (a dangling edge); the
+    /// conversion to half-edge goes through the face list, which cannot.
+    PassesTwice { face: FaceId, vertex: VertexId },
 }
 
 impl fmt::Display for ConvertError {
@@ -44,29 +52,66 @@ impl fmt::Display for ConvertError {
                 Ok(())
             }
             Self::Build(error) => write!(f, "the mesh cannot be converted: {error}"),
+            Self::PassesTwice { face, vertex } => write!(
+                f,
+                "{face} passes {vertex} twice (along a dangling edge and back); winged-edge \
+                 tables convert to half-edge through their face lists, which need each corner \
+                 once: keep this mesh in winged-edge (.wtb), or remove the dangling edge (KEV) \
+                 first"
+            ),
         }
     }
 }
 
 impl std::error::Error for ConvertError {}
 
-/// Which half-edges make up which winged edge, after a conversion.
+/// Which half-edges make up which winged edge, after a conversion, and
+/// where the source's vertices and faces went. Every method takes the
+/// source mesh's ids.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct EdgeCorrespondence {
     edge_of_half_edge: Vec<EdgeId>,
     half_edges_of_edge: Vec<(HalfEdgeId, HalfEdgeId)>,
+    /// How the source was compacted first, if it had deleted rows.
+    renumbering: Option<Renumbering>,
 }
 
 impl EdgeCorrespondence {
     /// The winged edge a half-edge belongs to.
     pub fn edge(&self, h: HalfEdgeId) -> Option<EdgeId> {
-        self.edge_of_half_edge.get(h.index()).copied()
+        let h = self.renumbered(ElementKind::Edge, h.raw())?;
+        self.edge_of_half_edge.get(h as usize).copied()
     }
 
     /// The two half-edges of a winged edge: first the one running from its
     /// start to its end (whose face is the left face), then its pair.
     pub fn half_edges(&self, e: EdgeId) -> Option<(HalfEdgeId, HalfEdgeId)> {
-        self.half_edges_of_edge.get(e.index()).copied()
+        let e = self.renumbered(ElementKind::Edge, e.raw())?;
+        self.half_edges_of_edge.get(e as usize).copied()
+    }
+
+    /// A source vertex's id in the converted mesh: the same, unless the
+    /// source had deleted rows (`None` for a deleted vertex).
+    pub fn vertex(&self, v: VertexId) -> Option<VertexId> {
+        self.renumbered(ElementKind::Vertex, v.raw())
+            .map(VertexId::new)
+    }
+
+    /// A source face's id in the converted mesh, as [`Self::vertex`].
+    pub fn face(&self, f: FaceId) -> Option<FaceId> {
+        self.renumbered(ElementKind::Face, f.raw()).map(FaceId::new)
+    }
+
+    fn renumbered(&self, kind: ElementKind, id: u32) -> Option<u32> {
+        match &self.renumbering {
+            None => Some(id),
+            Some(map) => map.get(ElementRef::new(kind, id)).map(|e| e.id),
+        }
+    }
+
+    fn after(mut self, renumbering: Renumbering) -> Self {
+        self.renumbering = Some(renumbering);
+        self
     }
 }
 
@@ -93,6 +138,12 @@ impl HalfEdgeMesh {
     pub fn to_winged_edge_with_correspondence(
         &self,
     ) -> Result<(WingedEdgeMesh, EdgeCorrespondence), ConvertError> {
+        if !self.deleted().is_empty() {
+            let mut compacted = self.clone();
+            let renumbering = compacted.compact();
+            let (mesh, correspondence) = compacted.to_winged_edge_with_correspondence()?;
+            return Ok((mesh, correspondence.after(renumbering)));
+        }
         check(self.validate())?;
         let half_edges = &self.half_edges;
         let mut edge_of = vec![NONE; half_edges.len()];
@@ -157,6 +208,7 @@ impl HalfEdgeMesh {
         let correspondence = EdgeCorrespondence {
             edge_of_half_edge: edge_of.into_iter().map(EdgeId::new).collect(),
             half_edges_of_edge: pairs,
+            renumbering: None,
         };
         Ok((
             WingedEdgeMesh::from_raw_parts(vertices, faces, edges),
@@ -213,8 +265,17 @@ impl WingedEdgeMesh {
     pub fn to_half_edge_with_correspondence(
         &self,
     ) -> Result<(HalfEdgeMesh, EdgeCorrespondence), ConvertError> {
+        if !self.deleted().is_empty() {
+            let mut compacted = self.clone();
+            let renumbering = compacted.compact();
+            let (mesh, correspondence) = compacted.to_half_edge_with_correspondence()?;
+            return Ok((mesh, correspondence.after(renumbering)));
+        }
         check(self.validate())?;
         let (polygons, sides) = self.polygons_and_sides();
+        if let Some((face, vertex)) = polygons.repeated_corner() {
+            return Err(ConvertError::PassesTwice { face, vertex });
+        }
         let (mesh, _) = HalfEdgeMesh::build(&polygons).map_err(ConvertError::Build)?;
         // Interior half-edge h is step h of the face walks; a boundary
         // half-edge belongs to its pair's edge.
@@ -244,6 +305,7 @@ impl WingedEdgeMesh {
             EdgeCorrespondence {
                 edge_of_half_edge: edge_of,
                 half_edges_of_edge: halves,
+                renumbering: None,
             },
         ))
     }

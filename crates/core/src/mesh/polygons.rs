@@ -146,6 +146,21 @@ impl Polygons {
         })
     }
 
+    /// The first face that lists a vertex twice, and that vertex: such a
+    /// face cannot be built, nor written so that it reads back.
+    pub fn repeated_corner(&self) -> Option<(FaceId, VertexId)> {
+        let mut seen = Vec::new();
+        for (f, face) in (0u32..).zip(self.faces()) {
+            seen.clear();
+            seen.extend_from_slice(face);
+            seen.sort_unstable();
+            if let Some(pair) = seen.windows(2).find(|pair| pair[0] == pair[1]) {
+                return Some((FaceId::new(f), VertexId::new(pair[0])));
+            }
+        }
+        None
+    }
+
     /// The source line face `face` was read from, if known.
     pub fn line(&self, face: usize) -> Option<usize> {
         self.lines.get(face).copied().filter(|&line| line != 0)

@@ -33,7 +33,7 @@ struct Triangle {
 /// when both are on the boundary but the edge is not, when a merged edge
 /// would have the same face, or no face, on both sides, and when only two
 /// faces glued along every edge would be left (every edge of a
-/// tetrahedron).
+/// tetrahedron), and when a face that passes both ends would pass a twice.
 ///
 /// Makes nothing. Deletes, in order: the edge; for each triangle (the
 /// first half's side first) its other edge at b, then the face; then b.
@@ -145,9 +145,38 @@ fn plan<M: Records + ?Sized>(patch: &mut Patch<'_, M>, edge: EdgeRow) -> Result<
         }
     }
 
+    let around_b = patch.ring_from(b, d)?;
+    // A face that passes both a and b (not along the edge) would pass a
+    // twice, as KEF and remove-vertex refuse.
+    let removed: Vec<FaceId> = triangles.iter().flatten().map(|t| t.face).collect();
+    let mut checked: Vec<FaceId> = Vec::new();
+    for &dart in &around_b {
+        let Some(face) = patch.face_of(dart)? else {
+            continue;
+        };
+        if removed.contains(&face) || checked.contains(&face) {
+            continue;
+        }
+        checked.push(face);
+        let mut corners = Vec::new();
+        for side in patch.cycle(dart)? {
+            if side == d || side == t {
+                continue;
+            }
+            let start = patch.start(side)?;
+            let corner = if start == b { a } else { start };
+            if corners.contains(&corner) {
+                return Err(Refusal::NotSimple {
+                    action,
+                    vertex: corner,
+                });
+            }
+            corners.push(corner);
+        }
+    }
+
     let a_edge = patch.vertex_row(a)?;
     let before_d = patch.prev(d)?;
-    let around_b = patch.ring_from(b, d)?;
     let corner_edges: Vec<_> = triangles
         .iter()
         .flatten()
