@@ -490,6 +490,7 @@ impl EdgewiseApp {
                 .collect(),
             error: self.tab().error.clone(),
             broken: self.tab().broken.iter().map(BrokenState::new).collect(),
+            broken_count: self.tab().broken_total,
             diagnosis: self.tab().diagnosis,
             history: self.tab().history.state(),
             renumbering: self.tab().renumbering.clone(),

@@ -14,6 +14,11 @@ use crate::{
 };
 use edgewise_core::mesh::{Change, Issue};
 
+/// The most records marked at once as broken, deleted or changed: a runaway
+/// edit can make hundreds of thousands, and every marked one is outlined,
+/// labelled and looked up while drawing. The panel says how many there are.
+pub const MOST_MARKED: usize = 1_000;
+
 /// One coloured element and why, for the views and `state().highlights`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Painted {
@@ -85,6 +90,9 @@ impl Paint {
         let mut marked = Vec::new();
         for issue in issues {
             let element = ElementRef::from(issue.element);
+            if self.broken.len() >= MOST_MARKED && !self.broken.contains_key(&element) {
+                break;
+            }
             self.cells
                 .insert((element, Role::Column(issue.field)), colour);
             let rules = self.broken.entry(element).or_default();
@@ -110,7 +118,7 @@ impl Paint {
     /// Greys out deleted rows; they stay in the tables as gaps.
     pub fn add_deleted(&mut self, deleted: impl IntoIterator<Item = ElementRef>, theme: &Theme) {
         let colour = theme.trace_colour(TraceRole::Deleted);
-        for element in deleted {
+        for element in deleted.into_iter().take(MOST_MARKED) {
             self.painted.push(Painted {
                 element,
                 colour,
@@ -124,8 +132,11 @@ impl Paint {
     /// each written cell tinted with its old value struck through, written
     /// rows and new rows in their trace colours.
     pub fn add_changes(&mut self, journal: &[Change], theme: &Theme) {
+        let mut seen: std::collections::HashSet<ElementRef> =
+            self.painted.iter().map(|p| p.element).collect();
+        let most = self.painted.len() + MOST_MARKED;
         let mut push = |element: ElementRef, role: TraceRole| {
-            if !self.painted.iter().any(|p| p.element == element) {
+            if self.painted.len() < most && seen.insert(element) {
                 self.painted.push(Painted {
                     element,
                     colour: theme.trace_colour(role),
@@ -134,7 +145,7 @@ impl Paint {
             }
         };
         let mut struck = Vec::new();
-        for change in journal {
+        for change in journal.iter().take(MOST_MARKED) {
             match *change {
                 Change::Create(element) => push(element, TraceRole::Created),
                 Change::Reference {

@@ -44,7 +44,11 @@ pub struct AppState {
     pub error: Option<String>,
     /// Every record that breaks a rule of the structure at the editing
     /// trace's current step, or in diagnosis mode (empty otherwise).
+    /// At most the first 1,000 of them; `broken_count` counts them all.
     pub broken: Vec<BrokenState>,
+    /// How many records break a rule, all told.
+    #[serde(rename = "brokenCount")]
+    pub broken_count: usize,
     /// The mesh is a broken table opened to be fixed (see `broken`).
     pub diagnosis: bool,
     /// What undo and redo would take back and make again, oldest first.

@@ -129,3 +129,45 @@ fn every_parameter_malformed_at_once() {
     assert_messages("every-parameter-malformed", &messages);
     assert_default_view_works(&mut harness);
 }
+
+/// `tests/hostile/run-new-edges-forever.alg` as a link, at its last step:
+/// hundreds of thousands of new edges, each a broken record. The panel,
+/// `state()` and the views keep at most 1,000 of them, count them all, and
+/// a selection and a step still work.
+#[test]
+fn a_runaway_edit_at_its_last_step_keeps_the_page_usable() {
+    let source = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../../tests/hostile/run-new-edges-forever.alg"),
+    )
+    .expect("the case is committed");
+    let fragment = format!("#alg={}", course_link::encode_payload(&source));
+    let (mut harness, messages) = support::open_link(
+        "?sample=cube&structure=half&algorithm=grow&args=v:0&step=999999",
+        &fragment,
+    );
+    assert!(messages.is_empty(), "{messages:?}");
+    harness.run();
+    let state = harness.state().state();
+    let trace = state.trace.as_ref().expect("the run is open");
+    assert!(trace.step + 1 >= trace.steps, "at the last step: {trace:?}");
+    assert_eq!(state.broken.len(), 1_000);
+    assert!(state.broken_count > 300_000, "{}", state.broken_count);
+    assert!(
+        state.highlights.len() <= 2_100,
+        "{} highlights",
+        state.highlights.len()
+    );
+    harness
+        .state_mut()
+        .execute(edgewise_app::command::Command::Back(1))
+        .expect("steps back");
+    harness.run();
+    let vertex = ElementRef {
+        kind: ElementKind::Vertex,
+        id: 3,
+    };
+    harness.state_mut().select(Some(vertex)).expect("selects");
+    harness.run();
+    assert_eq!(harness.state().state().selection, Some(vertex));
+}

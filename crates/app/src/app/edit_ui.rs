@@ -61,8 +61,8 @@ impl EdgewiseApp {
             ui.label(
                 egui::RichText::new(format!(
                     "{} broken record{}{when}:",
-                    broken.len(),
-                    if broken.len() == 1 { "" } else { "s" }
+                    tab.broken_total,
+                    if tab.broken_total == 1 { "" } else { "s" }
                 ))
                 .color(colour)
                 .strong(),
@@ -70,8 +70,8 @@ impl EdgewiseApp {
             for issue in broken.iter().take(LISTED) {
                 ui.label(egui::RichText::new(issue.to_string()).color(colour).small());
             }
-            if broken.len() > LISTED {
-                ui.weak(format!("… and {} more", broken.len() - LISTED));
+            if tab.broken_total > LISTED {
+                ui.weak(format!("… and {} more", tab.broken_total - LISTED));
             }
         } else if tab.run.session().is_some_and(TraceSession::edits) {
             ui.weak("Every record follows the structure's rules at this step.");

@@ -18,7 +18,7 @@ use crate::{
     document::Document,
     history::{History, Kind},
     obj_editor::ObjEditor,
-    paint::Paint,
+    paint::{MOST_MARKED, Paint},
     state::TabState,
     view3d::{MeshGeometry, SceneStyles, View3d},
 };
@@ -56,7 +56,10 @@ pub(crate) struct Tab {
     pub(crate) history: History,
     /// Every rule the mesh breaks at the editing trace's current step, or
     /// in diagnosis mode.
+    /// At most [`MOST_MARKED`] of them.
     pub(crate) broken: Vec<Issue>,
+    /// How many records break a rule, all told.
+    pub(crate) broken_total: usize,
     /// The mesh is a broken table opened to be fixed: its broken records
     /// are listed until it validates, which ends diagnosis.
     pub(crate) diagnosis: bool,
@@ -103,6 +106,7 @@ impl Tab {
             edit_applied: 0,
             history: History::default(),
             broken: Vec::new(),
+            broken_total: 0,
             diagnosis: false,
             renumbering: None,
             diagnosable: None,
@@ -175,10 +179,19 @@ impl Tab {
             self.error = Some(error);
         }
         self.edit_applied = wanted;
-        self.broken = document.mesh().validate();
+        let broken = document.mesh().validate();
         self.view
             .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
+        self.set_broken(broken);
         self.paint_key = None;
+    }
+
+    /// Keeps the first [`MOST_MARKED`] broken records and counts them all:
+    /// a runaway edit can break millions, and each kept one is painted.
+    fn set_broken(&mut self, mut issues: Vec<Issue>) {
+        self.broken_total = issues.len();
+        issues.truncate(MOST_MARKED);
+        self.broken = issues;
     }
 
     /// Outside an editing trace, lists the broken records in diagnosis
@@ -187,7 +200,7 @@ impl Tab {
         if self.diagnosis {
             self.rediagnose();
         } else {
-            self.broken.clear();
+            self.set_broken(Vec::new());
         }
     }
 
@@ -205,7 +218,7 @@ impl Tab {
     /// [`Self::rediagnose`] with the rules already checked: `broken` are
     /// the current mesh's broken records.
     pub(crate) fn diagnose_with(&mut self, broken: Vec<Issue>) {
-        self.broken = broken;
+        self.set_broken(broken);
         let was = std::mem::replace(&mut self.diagnosis, !self.broken.is_empty());
         if was && !self.diagnosis {
             log::info!("the tables validate: diagnosis is over");
@@ -242,7 +255,7 @@ impl Tab {
             self.replace_mesh(before);
         }
         self.edit_applied = 0;
-        self.broken.clear();
+        self.set_broken(Vec::new());
         self.paint_key = None;
     }
 
