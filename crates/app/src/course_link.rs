@@ -829,10 +829,21 @@ fn unknown(key: &str, value: &str, known: &[&str], part: &str) -> String {
 }
 
 /// A same-site path relative to the app's page. Absolute URLs, `//hosts`,
-/// schemes and `..` are refused so a link can only open the site's own files.
+/// schemes, `..`, and whatever the URL parser would strip into one of them
+/// are refused, so a link can only open the site's own files; the page also
+/// resolves the path and compares origins before it fetches.
 fn check_mesh_path(path: &str) -> Result<(), &'static str> {
     if path.is_empty() {
         return Err("expected a path to a mesh file on this site, such as mesh=meshes/torus.obj");
+    }
+    // The URL parser strips spaces and control characters from both ends
+    // (and tabs and newlines from anywhere): " //host/x.obj" is another
+    // site's file.
+    if path.starts_with(|c: char| c <= ' ') || path.ends_with(|c: char| c <= ' ') {
+        return Err(
+            "expected a path that starts and ends with a visible character, such as \
+             mesh=meshes/torus.obj; spaces and control characters at either end are not allowed",
+        );
     }
     if path.starts_with("//") {
         return Err(

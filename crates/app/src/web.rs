@@ -169,6 +169,24 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
 /// sends none, as soon as the bytes read pass the limit.
 async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
     let window = web_sys::window().ok_or("no window")?;
+    // The link checked the path; the browser's own URL parser has the last
+    // word on where it leads.
+    let page = window
+        .location()
+        .href()
+        .map_err(|err| js_error_text(&err))?;
+    let resolved = web_sys::Url::new_with_base(path, &page)
+        .map_err(|_| "it is not a path this page can open".to_owned())?;
+    let origin = window
+        .location()
+        .origin()
+        .map_err(|err| js_error_text(&err))?;
+    if resolved.origin() != origin {
+        return Err(format!(
+            "it leads to {}, another site; links open only this site's files",
+            resolved.origin()
+        ));
+    }
     let response = wasm_bindgen_futures::JsFuture::from(window.fetch_with_str(path))
         .await
         .map_err(|err| format!("cannot fetch it: {}", js_error_text(&err)))?

@@ -535,3 +535,59 @@ proptest! {
         prop_assert_eq!(again.to_url(BASE), url);
     }
 }
+
+/// Every way a `mesh=` value could reach another site once a browser's URL
+/// parser has read it: each is refused with a message, and only plain
+/// relative paths open.
+#[test]
+fn mesh_paths_never_reach_another_site() {
+    let refused = [
+        " //evil.example/x.obj",
+        "  //evil.example/x.obj",
+        "//evil.example/x.obj ",
+        "\t//evil.example/x.obj",
+        "/\t/evil.example/x.obj",
+        "\n//evil.example/x.obj",
+        "\\\\evil.example/x.obj",
+        "/\\evil.example/x.obj",
+        "\\/evil.example/x.obj",
+        "https://evil.example/x.obj",
+        "HtTpS://evil.example/x.obj",
+        " https://evil.example/x.obj",
+        "javascript:alert(1)//x.obj",
+        "data:text/plain,v.obj",
+        "https://user:pass@evil.example/x.obj",
+        "//user@evil.example/x.obj",
+        "/meshes/x.obj",
+        "meshes/../../x.obj",
+        "meshes/%2e%2e/x.obj",
+        "meshes/x.obj\u{0}",
+    ];
+    for path in refused {
+        assert!(check_mesh_path(path).is_err(), "{path:?} was accepted");
+        // As a link: decoded once, then checked.
+        let encoded: String = path.bytes().map(|b| format!("%{b:02X}")).collect();
+        let (link, messages) = CourseLink::parse(&format!("mesh={encoded}"), "");
+        assert_eq!(link.mesh, None, "{path:?}");
+        assert!(
+            messages.iter().any(|m| m.starts_with("mesh=")),
+            "{path:?}: {messages:?}"
+        );
+    }
+    // Escapes decode once: what is left is a file name on this site.
+    for (query, path) in [
+        ("mesh=%2F%2Fevil.example%2Fx.obj", None),
+        ("mesh=%5C%5Cevil.example%2Fx.obj", None),
+        ("mesh=meshes%2Ftorus.obj", Some("meshes/torus.obj")),
+        ("mesh=a%252F%252Fb.obj", Some("a%2F%2Fb.obj")),
+        ("mesh=user%40host.obj", Some("user@host.obj")),
+        ("mesh=my+meshes/a.obj", Some("my meshes/a.obj")),
+    ] {
+        let (link, _) = CourseLink::parse(query, "");
+        assert_eq!(
+            link.mesh,
+            path.map(|p| MeshSource::Path(p.to_owned())),
+            "{query}"
+        );
+    }
+}
