@@ -213,8 +213,11 @@ pub struct TraceState {
     pub message: String,
     /// The run-time error that stopped the run, shown at its last step.
     pub error: Option<String>,
-    /// The algorithm's `message` output so far.
+    /// The algorithm's `message` output so far: the latest 200 lines.
     pub output: Vec<String>,
+    /// How many `message`s the run printed so far.
+    #[serde(rename = "outputCount")]
+    pub output_count: usize,
     /// The call stack, the started algorithm first.
     pub calls: Vec<String>,
     /// The question asked at this step, or null.
@@ -328,6 +331,7 @@ impl TraceState {
             message: frame.message.clone(),
             error: frame.error.clone(),
             output: frame.output.clone(),
+            output_count: frame.output_count,
             calls: frame.calls.clone(),
         }
     }

@@ -35,6 +35,10 @@ pub struct VariableView {
     pub value: String,
 }
 
+/// The `message` lines a step shows: the latest ones. A runaway loop can
+/// print a hundred thousand, and each shown line is laid out every frame.
+pub const MOST_OUTPUT_LINES: usize = 200;
+
 /// Everything the views show for one step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TraceFrame {
@@ -59,8 +63,11 @@ pub struct TraceFrame {
     pub done: bool,
     /// The run stopped on an error and this is the last step before it.
     pub error: Option<String>,
-    /// The algorithm's `message` output so far.
+    /// The algorithm's latest `message` output so far (at most
+    /// [`MOST_OUTPUT_LINES`]), oldest first.
     pub output: Vec<String>,
+    /// How many `message`s the run printed so far.
+    pub output_count: usize,
     pub paint: Paint,
 }
 
@@ -137,12 +144,8 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         .filter(|_| at_end)
         .map(ToString::to_string);
     let done = at_end && error.is_none() && matches!(view.map(|v| v.kind), Some(StepKind::Done));
-    let output: Vec<String> = (0..step)
-        .filter_map(|i| match trace.step(i)?.kind {
-            StepKind::Message { text } => Some(text.to_owned()),
-            _ => None,
-        })
-        .collect();
+    let (output_count, latest) = trace.messages_before(step, MOST_OUTPUT_LINES);
+    let output = latest.to_vec();
 
     let mut paint = Paint {
         fade_others: true,
@@ -305,6 +308,7 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         done,
         error,
         output,
+        output_count,
         paint,
     }
 }

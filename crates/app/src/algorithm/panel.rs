@@ -461,6 +461,13 @@ fn status_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
                     ui.label(format!("Marked: {}", marked.join(", ")));
                 }
             }
+            if frame.output_count > frame.output.len() {
+                ui.weak(format!(
+                    "… {} earlier messages; the latest {} follow",
+                    frame.output_count - frame.output.len(),
+                    frame.output.len()
+                ));
+            }
             for line in &frame.output {
                 ui.monospace(line);
             }

@@ -1112,6 +1112,22 @@ impl Trace {
             .map(|&(_, e)| e)
     }
 
+    /// The `message`s before step `index`: how many there are, and the
+    /// texts of the last `most` of them, oldest first. A runaway run can
+    /// print a hundred thousand; a view shows the latest.
+    pub fn messages_before(&self, index: usize, most: usize) -> (usize, &[String]) {
+        let end = index.min(self.steps.len());
+        let count = (0..end)
+            .rev()
+            .find_map(|i| {
+                let (_, step, instr) = self.located(i)?;
+                matches!(instr.op, Op::Message { .. }).then_some(step.a as usize + 1)
+            })
+            .unwrap_or(0)
+            .min(self.messages.len());
+        (count, &self.messages[count.saturating_sub(most)..count])
+    }
+
     /// The text of the latest `message` at or before step `index`.
     pub fn message_at(&self, index: usize) -> Option<&str> {
         let last = index.min(self.steps.len().checked_sub(1)?);
