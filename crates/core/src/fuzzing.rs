@@ -12,7 +12,8 @@ use std::sync::OnceLock;
 
 use crate::formats::{self, Format, Loaded};
 use crate::lang::{self, RunOptions, Type, Value};
-use crate::mesh::{Mesh, Structure};
+use crate::mesh::operations::{self, Operation};
+use crate::mesh::{ConvertError, Edit as _, Mesh, Structure};
 use crate::schema::ElementRef;
 
 /// Lines of a fuzzed run's trace that are rendered: enough to reach arrays
@@ -224,6 +225,123 @@ fn hit_memory_limit(outcome: &lang::Outcome) -> bool {
     outcome
         .error()
         .is_some_and(|error| error.kind == lang::RuntimeErrorKind::MemoryLimit)
+}
+
+/// A chain of local operations on a sample mesh (or on an OBJ after a NUL
+/// byte), never compacted; after each accepted one the mesh must convert
+/// and save faithfully ([`check_saved_faithfully`]).
+///
+/// The first byte picks the sample and the structure; then every four
+/// bytes are an operation and up to three ids.
+pub fn convert(data: &[u8]) {
+    let (edits, obj) = match data.iter().position(|&b| b == 0) {
+        Some(nul) => (&data[..nul], Some(&data[nul + 1..])),
+        None => (data, None),
+    };
+    let choice = edits.first().copied().unwrap_or(0);
+    let structure = if choice & 2 == 0 {
+        Structure::WingedEdge
+    } else {
+        Structure::HalfEdge
+    };
+    let mut mesh = match obj.map(|bytes| formats::load_as(bytes, Format::Obj, structure)) {
+        Some(Ok(loaded)) if loaded.mesh.validate().is_empty() => loaded.mesh,
+        Some(_) => return,
+        None => sample_mesh(structure, choice).clone(),
+    };
+    for chunk in edits.get(1..).unwrap_or(&[]).chunks(4).take(32) {
+        let operation = Operation::ALL[usize::from(chunk[0]) % Operation::ALL.len()];
+        let ids: Vec<u32> = operation
+            .arguments()
+            .iter()
+            .zip(chunk.iter().skip(1))
+            .map(|(argument, &byte)| {
+                let rows = lang::Topology::count(&mesh, argument.kind).max(1);
+                u32::from(byte) % u32::try_from(rows).unwrap_or(u32::MAX)
+            })
+            .collect();
+        if operations::apply(&mut mesh, operation, &ids).is_ok()
+            && let Err(problem) = check_saved_faithfully(&mesh)
+        {
+            panic!("after {operation} {ids:?}: {problem}");
+        }
+    }
+}
+
+/// What every command that converts or writes a mesh promises: `mesh`
+/// (deleted rows and all) converts to the other structure and writes in
+/// every format to files that validate and read back to the counts of the
+/// compacted mesh. Only a polygon format may refuse (a face passing a
+/// vertex twice), or .htb for a winged-edge mesh with a dangling edge, and
+/// the refusal names the format that keeps the mesh.
+pub fn check_saved_faithfully(mesh: &Mesh) -> Result<(), String> {
+    let mut compacted = mesh.clone();
+    compacted.compact();
+    let expected = shape_counts(&compacted);
+    let other = match mesh.structure() {
+        Structure::WingedEdge => Structure::HalfEdge,
+        Structure::HalfEdge => Structure::WingedEdge,
+    };
+    match mesh.convert_to(other) {
+        Ok(converted) => {
+            let issues = converted.validate();
+            if !issues.is_empty() {
+                return Err(format!("the converted mesh is broken: {issues:?}"));
+            }
+            if shape_counts(&converted) != expected {
+                return Err(format!(
+                    "converted to {:?} counts, expected {expected:?}",
+                    shape_counts(&converted)
+                ));
+            }
+        }
+        Err(ConvertError::PassesTwice { .. }) => {}
+        Err(error) => return Err(format!("the conversion was refused: {error}")),
+    }
+    for format in Format::ALL {
+        match formats::save(mesh, format, &formats::SaveOptions::default()) {
+            Ok(bytes) => {
+                let structure = format.native_structure().unwrap_or(mesh.structure());
+                let loaded = formats::load_as(&bytes, format, structure).map_err(|error| {
+                    format!("the {format:?} written does not read back: {error}")
+                })?;
+                let issues = loaded.mesh.validate();
+                if !issues.is_empty() {
+                    return Err(format!("the {format:?} read back is broken: {issues:?}"));
+                }
+                if shape_counts(&loaded.mesh) != expected {
+                    return Err(format!(
+                        "the {format:?} read back has {:?} counts, expected {expected:?}",
+                        shape_counts(&loaded.mesh)
+                    ));
+                }
+            }
+            Err(error) => {
+                let message = error.to_string();
+                let polygon_format = format.native_structure().is_none();
+                let winged_to_htb =
+                    format == Format::Htb && mesh.structure() == Structure::WingedEdge;
+                if !(polygon_format && message.contains(".wtb or .htb")
+                    || winged_to_htb && message.contains("keep this mesh in winged-edge (.wtb)"))
+                {
+                    return Err(format!("{format:?} refused: {message}"));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// V, E, F, boundary loops and V − E + F: what a file must give back.
+fn shape_counts(mesh: &Mesh) -> (usize, usize, usize, usize, i64) {
+    let stats = mesh.stats();
+    (
+        stats.vertices,
+        stats.edges,
+        stats.faces,
+        stats.boundary_loops,
+        stats.euler_characteristic,
+    )
 }
 
 /// The sample meshes [`vm`] runs algorithms on: the tetrahedron and the cube

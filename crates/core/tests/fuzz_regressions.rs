@@ -42,3 +42,8 @@ fn compile() {
 fn vm() {
     replay("vm", fuzzing::vm);
 }
+
+#[test]
+fn convert() {
+    replay("convert", fuzzing::convert);
+}

@@ -1082,91 +1082,14 @@ proptest::proptest! {
     }
 }
 
-/// What a mesh is, for comparing it with a copy written and read back.
-fn shape_counts(mesh: &Mesh) -> (usize, usize, usize, usize, i64) {
-    let stats = mesh.stats();
-    (
-        stats.vertices,
-        stats.edges,
-        stats.faces,
-        stats.boundary_loops,
-        stats.euler_characteristic,
-    )
-}
-
-/// Converts `mesh` (deleted rows and all) to the other structure and
-/// writes it in every format: each result validates and reads back to the
-/// counts of the compacted mesh. Only a polygon format may refuse, or .htb
-/// for a winged-edge mesh with a dangling edge, saying which format keeps it.
+/// [`fuzzing::check_saved_faithfully`], as a proptest failure.
 fn assert_saved_faithfully(
     mesh: &Mesh,
     context: &str,
 ) -> Result<(), proptest::test_runner::TestCaseError> {
-    let mut compacted = mesh.clone();
-    compacted.compact();
-    let expected = shape_counts(&compacted);
-    let other = match mesh.structure() {
-        Structure::WingedEdge => Structure::HalfEdge,
-        Structure::HalfEdge => Structure::WingedEdge,
-    };
-    match mesh.convert_to(other) {
-        Ok(converted) => {
-            let issues = converted.validate();
-            proptest::prop_assert!(issues.is_empty(), "{}: converted: {:#?}", context, issues);
-            proptest::prop_assert_eq!(shape_counts(&converted), expected, "{}: converted", context);
-        }
-        // Winged-edge converts through its face list, which cannot hold a
-        // dangling edge; it says so.
-        Err(error) => proptest::prop_assert!(
-            matches!(error, edgewise_core::mesh::ConvertError::PassesTwice { .. }),
-            "{}: convert refused: {}",
-            context,
-            error
-        ),
-    }
-    for format in formats::Format::ALL {
-        match formats::save(mesh, format, &formats::SaveOptions::default()) {
-            Ok(bytes) => {
-                let structure = format.native_structure().unwrap_or(mesh.structure());
-                let loaded = formats::load_as(&bytes, format, structure).map_err(|e| {
-                    proptest::test_runner::TestCaseError::fail(format!(
-                        "{context}: the {format:?} written does not read back: {e}"
-                    ))
-                })?;
-                let issues = loaded.mesh.validate();
-                proptest::prop_assert!(
-                    issues.is_empty(),
-                    "{}: {:?} read back: {:#?}",
-                    context,
-                    format,
-                    issues
-                );
-                proptest::prop_assert_eq!(
-                    shape_counts(&loaded.mesh),
-                    expected,
-                    "{}: {:?}",
-                    context,
-                    format
-                );
-            }
-            Err(error) => {
-                let message = error.to_string();
-                let polygon_format = format.native_structure().is_none();
-                let winged_to_htb =
-                    format == formats::Format::Htb && mesh.structure() == Structure::WingedEdge;
-                proptest::prop_assert!(
-                    (polygon_format && message.contains(".wtb or .htb"))
-                        || (winged_to_htb
-                            && message.contains("keep this mesh in winged-edge (.wtb)")),
-                    "{}: {:?} refused: {}",
-                    context,
-                    format,
-                    message
-                );
-            }
-        }
-    }
-    Ok(())
+    edgewise_core::fuzzing::check_saved_faithfully(mesh).map_err(|problem| {
+        proptest::test_runner::TestCaseError::fail(format!("{context}: {problem}"))
+    })
 }
 
 proptest::proptest! {

@@ -21,7 +21,7 @@ use base64::Engine as _;
 use crate::process::{self, cargo};
 
 /// Every fuzz target, in the order `cargo xtask fuzz` runs them.
-pub const TARGETS: [&str; 8] = [
+pub const TARGETS: [&str; 9] = [
     "obj",
     "ply",
     "wtb",
@@ -29,8 +29,12 @@ pub const TARGETS: [&str; 8] = [
     "detect",
     "compile",
     "vm",
+    "convert",
     "course_link",
 ];
+
+/// The ids of the conversion seeds' operations, in turn.
+const SEED_IDS: [[u8; 3]; 4] = [[0, 1, 2], [3, 0, 1], [1, 2, 0], [2, 3, 1]];
 
 /// Seeds larger than this are left out: libFuzzer's input length follows the
 /// largest seed, and big inputs make every iteration slow.
@@ -352,6 +356,42 @@ pub fn make_seeds(root: &Path) -> anyhow::Result<()> {
             set.add("compile", &seed_name(root, &file), bytes.clone());
             set.add("vm", &seed_name(root, &file), bytes);
         }
+    }
+
+    // The runaway runs of the hostile corpus, with their memory budget.
+    for file in files_in(&root.join("tests/hostile"))? {
+        let is_run = file
+            .file_name()
+            .and_then(|n| n.to_str())
+            .is_some_and(|n| n.starts_with("run-") && n.ends_with(".alg"));
+        if is_run && let Some(bytes) = read_seed(&file)? {
+            set.add("vm", &seed_name(root, &file), bytes);
+        }
+    }
+
+    // Conversions: every operation once on each sample and structure, then
+    // the same on the octahedron read from OBJ (after a NUL).
+    let octahedron_obj = fs::read(root.join("meshes/octahedron.obj"))
+        .context("cannot read meshes/octahedron.obj")?;
+    for choice in 0u8..4 {
+        let mut chain = vec![choice];
+        for (operation, ids) in (0u8..16).zip(
+            [[0u8, 1, 2], [3, 0, 1], [1, 2, 0], [2, 3, 1]]
+                .iter()
+                .cycle(),
+        ) {
+            chain.push(operation);
+            chain.extend_from_slice(ids);
+        }
+        set.add(
+            "convert",
+            &format!("every-operation-{choice}"),
+            chain.clone(),
+        );
+        let mut with_obj = chain;
+        with_obj.push(0);
+        with_obj.extend_from_slice(&octahedron_obj);
+        set.add("convert", &format!("octahedron-{choice}"), with_obj);
     }
 
     let messages = root.join("tests/golden/course-link-messages.txt");

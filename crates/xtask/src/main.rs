@@ -59,7 +59,7 @@ enum Command {
     /// a nightly toolchain; see docs/reliability.md), then print the
     /// executions, seconds and crashes of each.
     Fuzz {
-        /// The target: `obj`, `ply`, `wtb`, `htb`, `detect`, `compile`, `vm` or `course_link`
+        /// The target: `obj`, `ply`, `wtb`, `htb`, `detect`, `compile`, `vm`, `convert` or `course_link`
         /// (default: all of them, in that order).
         target: Option<String>,
         /// How long to fuzz each target.
