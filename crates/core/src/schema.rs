@@ -20,5 +20,6 @@ pub use column::{
     Column, EditHooks, LookupError, NameError, Palette, Record, Records, RecordsMut, Rows, RowsMut,
     Storage, TableColumn, WriteError,
 };
+pub(crate) use element::article;
 pub use element::{ElementKind, ElementRef};
 pub use structure::Structure;

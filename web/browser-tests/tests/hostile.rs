@@ -177,6 +177,10 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
         ),
         ("window.edgewise.switchTab(7)", "there is no tab 7"),
         (
+            "window.edgewise.edit('FLIP-EDGE', [0])",
+            "edit(op, ids): op must be one of 'flip-edge',",
+        ),
+        (
             "window.edgewise.setStructure(true)",
             "setStructure(name): name must be 'winged' or 'half', not true",
         ),

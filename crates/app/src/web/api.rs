@@ -279,7 +279,11 @@ fn read_edit(call: &'static str, op: &JsValue, ids: &JsValue) -> Result<Command,
         .as_string()
         .filter(|name| name.len() <= MAX_NAME_CHARS)
         .ok_or_else(|| expected(call, "op", &wanted, op))?;
-    let operation = Operation::parse(&name).map_err(|_| expected(call, "op", &wanted, op))?;
+    // Exact, as every other name the API takes ('FLIP-EDGE' is refused).
+    let operation = Operation::ALL
+        .into_iter()
+        .find(|operation| operation.name() == name)
+        .ok_or_else(|| expected(call, "op", &wanted, op))?;
     let values: Vec<JsValue> = if js_sys::Array::is_array(ids) {
         js_sys::Array::from(ids)
             .iter()

@@ -463,15 +463,15 @@ impl Checker<'_> {
         }
         let wanted = column.target().map_or(Type::Vector, Type::of_kind);
         if value_type == Type::Null && !column.nullable_in(kind) {
-            self.error(
-                value.span,
+            self.error(value.span, {
+                let key = column.key();
+                let article = crate::schema::article(&key);
                 format!(
-                    "`{target}.{}` cannot be null: every {} has a {}",
+                    "`{target}.{}` cannot be null: every {} has {article} {key}",
                     field.name,
                     kind.prose(),
-                    column.key()
-                ),
-            );
+                )
+            });
         } else if !wanted.accepts(value_type) {
             self.error(
                 value.span,

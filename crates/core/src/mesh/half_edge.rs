@@ -258,7 +258,8 @@ impl HalfEdgeMesh {
     #[inline]
     pub fn start_vertex(&self, h: HalfEdgeId) -> Option<VertexId> {
         let pair = self.half_edge(h)?.pair_edge;
-        Some(self.half_edge(pair)?.end_vertex)
+        // An unset end vertex (a new half-edge) gives no start vertex.
+        Some(self.half_edge(pair)?.end_vertex).filter(|v| !v.is_unset())
     }
 
     /// The half-edge whose successor is `h` (derived; O(1) from a table built

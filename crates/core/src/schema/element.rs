@@ -107,3 +107,12 @@ impl fmt::Display for ElementRef {
         write!(f, "{} {}", self.kind.prose(), self.id)
     }
 }
+
+/// "a" or "an" before `word`, for messages that name a kind or a column.
+pub(crate) fn article(word: &str) -> &'static str {
+    if word.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    }
+}

@@ -276,7 +276,17 @@ impl fmt::Display for Refusal {
                     names.join(", ")
                 )
             }
-            Self::NoSuchElement(element) => write!(f, "{element} does not exist"),
+            Self::NoSuchElement(element) => {
+                let row = ElementRef::from(*element);
+                if row.id == u32::MAX {
+                    // An unset reference led here: name what is missing.
+                    let kind = row.kind.prose();
+                    let article = crate::schema::article(kind);
+                    write!(f, "{article} {kind} it needs is not set yet")
+                } else {
+                    write!(f, "{element} does not exist")
+                }
+            }
             Self::Deleted(element) => write!(f, "{element} was deleted"),
             Self::Broken { element, column } => write!(
                 f,
