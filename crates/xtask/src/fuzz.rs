@@ -375,11 +375,7 @@ pub fn make_seeds(root: &Path) -> anyhow::Result<()> {
         .context("cannot read meshes/octahedron.obj")?;
     for choice in 0u8..4 {
         let mut chain = vec![choice];
-        for (operation, ids) in (0u8..16).zip(
-            [[0u8, 1, 2], [3, 0, 1], [1, 2, 0], [2, 3, 1]]
-                .iter()
-                .cycle(),
-        ) {
+        for (operation, ids) in (0u8..16).zip(SEED_IDS.iter().cycle()) {
             chain.push(operation);
             chain.extend_from_slice(ids);
         }
