@@ -86,6 +86,7 @@ const QUERY_KEYS: &[&str] = &[
     "labelScale",
     "theme",
     "embed",
+    "origins",
     "tables",
     "panels",
     "present",
@@ -596,6 +597,9 @@ impl Parser {
             .map(|t| self.link.theme = Some(t))
             .ok_or("expected light or dark, such as theme=dark"),
             "embed" => parse_flag(value).map(|b| self.link.embed = b),
+            // The page's embed bridge reads it (docs/embedding.md); the
+            // link only checks it, so a mistake is named.
+            "origins" => check_origins(value),
             "tables" => parse_flag(value).map(|b| self.link.tables = Some(b)),
             "panels" => parse_panels(value)
                 .map(|p| self.link.panels = Some(p))
@@ -826,6 +830,36 @@ fn unknown(key: &str, value: &str, known: &[&str], part: &str) -> String {
         message.push_str("; see docs/embedding.md for the parameters Edgewise reads");
     }
     message
+}
+
+/// `origins=`: the embedding pages allowed to command the view and hear
+/// its events, as a comma-separated list of `https://host[:port]` origins.
+fn check_origins(value: &str) -> Result<(), &'static str> {
+    let is_origin = |item: &str| {
+        let Some((scheme, rest)) = item.split_once("://") else {
+            return false;
+        };
+        let (host, port) = match rest.rsplit_once(':') {
+            Some((host, port)) if !host.ends_with(']') || rest.starts_with('[') => {
+                (host, Some(port))
+            }
+            _ => (rest, None),
+        };
+        matches!(scheme, "http" | "https")
+            && !host.is_empty()
+            && host
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '[' | ']' | ':'))
+            && port.is_none_or(|p| {
+                !p.is_empty() && p.len() <= 5 && p.bytes().all(|b| b.is_ascii_digit())
+            })
+    };
+    if !value.is_empty() && value.split(',').all(is_origin) {
+        Ok(())
+    } else {
+        Err("expected a comma-separated list of origins, such as \
+             origins=https://notes.example.edu,https://slides.example.edu")
+    }
 }
 
 /// A same-site path relative to the app's page. Absolute URLs, `//hosts`,

@@ -120,3 +120,60 @@ fn check_reports_a_one_megabyte_line_in_a_few_words() {
         "{stderr}"
     );
 }
+
+/// `edgewise trace` on a committed runaway algorithm, under a 2 GB address
+/// space limit: it stops with its reason, never by running out of memory.
+fn trace_runaway(file: &str, name: &str, limits: &[&str]) -> Output {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let script = format!(
+        "ulimit -v 2000000; exec \"$0\" trace {} {name} {} --arg v=0 {} > /dev/null",
+        root.join("tests/hostile").join(file).display(),
+        root.join("meshes/cube.htb").display(),
+        limits.join(" ")
+    );
+    Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .arg(env!("CARGO_BIN_EXE_edgewise"))
+        .output()
+        .expect("edgewise runs")
+}
+
+#[test]
+fn trace_stops_a_run_at_its_memory_budget() {
+    let output = trace_runaway(
+        "run-long-messages.alg",
+        "chatter",
+        &["--memory-limit", "16"],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(
+            "run-long-messages.alg:7: error: stopped after 7792 operations: the run would need \
+             more than 16 MB of memory"
+        ),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("(most of it for the texts of its messages)"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn trace_stops_calls_that_set_up_too_much() {
+    let output = trace_runaway(
+        "run-calls-300-variables.alg",
+        "spin",
+        &["--step-limit", "20000"],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(
+            "the calls of this run set up more than 1280000 variables and intermediate values"
+        ),
+        "{stderr}"
+    );
+}

@@ -202,3 +202,67 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// Adds a view of the tetrahedron with `origins=` to an emptied page and
+/// gives the messages the page heard from it once it runs, and whether a
+/// call was answered.
+async fn embedded_with_origins(
+    browser: &Browser,
+    origins: &str,
+) -> anyhow::Result<serde_json::Value> {
+    browser.goto("examples/embed-script.html").await?;
+    browser
+        .eval(&format!(
+            "document.body.innerHTML = ''; window.heard = []; \
+             window.addEventListener('message', (e) => window.heard.push(e.data.type || e.data.subject || e.data.context)); \
+             const frame = document.createElement('iframe'); frame.id = 'view'; \
+             frame.width = 640; frame.height = 480; \
+             frame.src = '../index.html?embed=1&sample=tetrahedron&origins={origins}'; \
+             document.body.append(frame); return null;"
+        ))
+        .await?;
+    browser
+        .wait_for(
+            "document.getElementById('view').contentWindow.edgewise?.state().frames >= 2",
+            START_TIMEOUT,
+        )
+        .await?;
+    browser
+        .eval_async(
+            "new Promise((resolve) => { \
+               document.getElementById('view').contentWindow.postMessage( \
+                 {type: 'edgewise:call', id: 7, method: 'select', args: ['edge', 1]}, '*'); \
+               setTimeout(resolve, 3000); })",
+        )
+        .await?;
+    let heard = browser.eval("return window.heard;").await?;
+    let selected = browser
+        .eval("return document.getElementById('view').contentWindow.edgewise.state().selection;")
+        .await?;
+    Ok(serde_json::json!({ "heard": heard, "selected": selected }))
+}
+
+#[tokio::test]
+async fn origins_limit_who_commands_a_view_and_hears_it() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(START_TIMEOUT).await?;
+    // Another origin is named: this page hears nothing and commands nothing.
+    let other = embedded_with_origins(&browser, "https://notes.example.edu").await?;
+    assert_eq!(other["heard"], serde_json::json!([]), "{other}");
+    assert_eq!(other["selected"], serde_json::Value::Null, "{other}");
+    // This page's own origin is named: it hears the view and is answered.
+    let origin = browser.eval("return location.origin;").await?;
+    let origin = origin.as_str().unwrap_or_default().to_owned();
+    let own =
+        embedded_with_origins(&browser, &format!("https://elsewhere.example,{origin}")).await?;
+    let heard = own["heard"].as_array().cloned().unwrap_or_default();
+    for expected in [
+        "edgewise:ready",
+        "edgewise:reply",
+        "edgewise:selectionchange",
+    ] {
+        assert!(heard.iter().any(|h| h == expected), "{expected}: {own}");
+    }
+    assert_eq!(own["selected"]["id"], 1, "{own}");
+    browser.close().await
+}

@@ -591,3 +591,32 @@ fn mesh_paths_never_reach_another_site() {
         );
     }
 }
+
+/// `origins=` is the embed bridge's: the link only names a malformed one.
+#[test]
+fn origins_are_checked_and_left_to_the_embed_bridge() {
+    for good in [
+        "https://notes.example.edu",
+        "https://notes.example.edu,http://127.0.0.1:8080",
+        "http://[::1]:9000",
+    ] {
+        let (link, messages) = CourseLink::parse(&format!("embed&origins={good}"), "");
+        assert!(messages.is_empty(), "{good}: {messages:?}");
+        assert!(link.embed);
+    }
+    for bad in [
+        "",
+        "notes.example.edu",
+        "https://a.edu/path",
+        "javascript:x",
+        "https://",
+        "*",
+    ] {
+        let (_, messages) = CourseLink::parse(&format!("embed&origins={bad}"), "");
+        assert_eq!(messages.len(), 1, "{bad}: {messages:?}");
+        assert!(
+            messages[0].contains("expected a comma-separated list of origins"),
+            "{messages:?}"
+        );
+    }
+}
