@@ -1031,6 +1031,31 @@ fn pick(mesh: &Mesh, op: Operation, picks: [u16; 4]) -> Vec<u32> {
     ids
 }
 
+/// A random chain: a start mesh in a random structure, and operations each
+/// with the random numbers [`pick`] turns into ids.
+fn chain(
+    steps: std::ops::Range<usize>,
+) -> impl proptest::strategy::Strategy<Value = (Mesh, Vec<(Operation, [u16; 4])>)> {
+    use proptest::prelude::*;
+    (
+        0usize..6,
+        any::<bool>(),
+        proptest::collection::vec((0usize..Operation::ALL.len(), any::<[u16; 4]>()), steps),
+    )
+        .prop_map(|(index, half, steps)| {
+            let structure = if half {
+                Structure::HalfEdge
+            } else {
+                Structure::WingedEdge
+            };
+            let steps = steps
+                .into_iter()
+                .map(|(op, picks)| (Operation::ALL[op], picks))
+                .collect();
+            (start(index, structure), steps)
+        })
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig { cases: 48, ..proptest::prelude::ProptestConfig::default() })]
 
@@ -1039,18 +1064,8 @@ proptest::proptest! {
     /// a valid mesh with the counts its formula gives, every refused one
     /// leaves the mesh as it was.
     #[test]
-    fn random_operations_keep_the_mesh_valid(
-        index in 0usize..6,
-        half in proptest::prelude::any::<bool>(),
-        steps in proptest::collection::vec(
-            (0usize..Operation::ALL.len(), proptest::prelude::any::<[u16; 4]>()),
-            1..16,
-        ),
-    ) {
-        let structure = if half { Structure::HalfEdge } else { Structure::WingedEdge };
-        let mut mesh = start(index, structure);
+    fn random_operations_keep_the_mesh_valid((mut mesh, steps) in chain(1..16)) {
         for (step, (op, picks)) in steps.into_iter().enumerate() {
-            let op = Operation::ALL[op];
             let ids = pick(&mesh, op, picks);
             let context = format!("step {step}: {op} {ids:?}");
             let before = mesh.clone();
@@ -1099,18 +1114,8 @@ proptest::proptest! {
     /// mesh converts and saves in every format to what it is, or a polygon
     /// format refuses with the reason.
     #[test]
-    fn random_edit_chains_convert_and_save_faithfully(
-        index in 0usize..6,
-        half in proptest::prelude::any::<bool>(),
-        steps in proptest::collection::vec(
-            (0usize..Operation::ALL.len(), proptest::prelude::any::<[u16; 4]>()),
-            1..10,
-        ),
-    ) {
-        let structure = if half { Structure::HalfEdge } else { Structure::WingedEdge };
-        let mut mesh = start(index, structure);
+    fn random_edit_chains_convert_and_save_faithfully((mut mesh, steps) in chain(1..10)) {
         for (step, (op, picks)) in steps.into_iter().enumerate() {
-            let op = Operation::ALL[op];
             let ids = pick(&mesh, op, picks);
             if operations::apply(&mut mesh, op, &ids).is_ok() {
                 assert_saved_faithfully(&mesh, &format!("step {step}: {op} {ids:?}"))?;
