@@ -676,11 +676,17 @@ fn trace(
         eprintln!("edgewise: {error}");
         Failure::Usage
     })?;
-    let mut out = String::new();
-    for line in trace.lines() {
-        out.push_str(&line);
-        out.push('\n');
+    // Streamed: a run near its memory budget prints hundreds of MB.
+    {
+        let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+        for line in trace.lines() {
+            if writeln!(stdout, "{line}").is_err() {
+                break;
+            }
+        }
+        let _ = stdout.flush();
     }
+    let mut out = String::new();
     out.push_str(&trace.render_marked());
     out.push('\n');
     out.push_str(&render_questions(&trace, &questions));
