@@ -1105,13 +1105,8 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     }
                 }
                 Op::Refuse { index } => {
-                    let (span, line) = self.location(pc);
-                    return Outcome::Error(RuntimeError {
-                        kind: RuntimeErrorKind::Refused,
-                        span,
-                        line,
-                        message: self.format_message(index),
-                    });
+                    let message = self.format_message(index);
+                    return self.error_at(pc, RuntimeErrorKind::Refused, message);
                 }
                 Op::Message { index } => {
                     let text = self.format_message(index);
@@ -1278,20 +1273,17 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
         if self.values_set_up <= most {
             return None;
         }
-        let (span, line) = self.location(pc);
-        Some(Outcome::Error(RuntimeError {
-            kind: RuntimeErrorKind::StepLimit,
-            span,
-            line,
-            message: format!(
-                "stopped after {} operations: the calls of this run set up more than {most} \
-                 variables and intermediate values, the most a run may (each call of `{}` sets \
-                 up {}); does it call in a loop that never ends?",
-                self.steps,
+        Some(self.stopped(
+            pc,
+            RuntimeErrorKind::StepLimit,
+            format_args!(
+                "the calls of this run set up more than {most} variables and intermediate \
+                 values, the most a run may (each call of `{}` sets up {}); does it call in a \
+                 loop that never ends?",
                 callee.name,
                 callee.initial.len()
             ),
-        }))
+        ))
     }
 
     /// Stops the run when what it holds has passed its memory budget.
@@ -1316,19 +1308,15 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             .iter()
             .max_by_key(|(_, bytes)| *bytes)
             .map_or("", |(part, _)| part);
-        let (span, line) = self.location(pc);
-        Some(Outcome::Error(RuntimeError {
-            kind: RuntimeErrorKind::MemoryLimit,
-            span,
-            line,
-            message: format!(
-                "stopped after {} operations: the run would need more than {} MB of memory, \
-                 the most a run may keep for its trace, variables, arrays and new rows (most of \
-                 it for {largest})",
-                self.steps,
+        Some(self.stopped(
+            pc,
+            RuntimeErrorKind::MemoryLimit,
+            format_args!(
+                "the run would need more than {} MB of memory, the most a run may keep for its \
+                 trace, variables, arrays and new rows (most of it for {largest})",
                 self.memory_limit >> 20
             ),
-        }))
+        ))
     }
 
     /// Ends the running call: the caller runs again, with `result` in the
@@ -1363,15 +1351,33 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     }
 
     fn step_limit(&self, pc: usize) -> Outcome {
+        self.stopped(
+            pc,
+            RuntimeErrorKind::StepLimit,
+            format_args!(
+                "the step limit was reached (the loop may never end; raise the limit to run \
+                 longer)"
+            ),
+        )
+    }
+
+    /// A limit stopped the run at `pc`: "stopped after N operations: why".
+    fn stopped(&self, pc: usize, kind: RuntimeErrorKind, why: fmt::Arguments<'_>) -> Outcome {
+        self.error_at(
+            pc,
+            kind,
+            format!("stopped after {} operations: {why}", self.steps),
+        )
+    }
+
+    /// The run ends at `pc` with an error of `kind`.
+    fn error_at(&self, pc: usize, kind: RuntimeErrorKind, message: String) -> Outcome {
         let (span, line) = self.location(pc);
         Outcome::Error(RuntimeError {
-            kind: RuntimeErrorKind::StepLimit,
+            kind,
             span,
             line,
-            message: format!(
-                "stopped after {} operations: the step limit was reached (the loop may never end; raise the limit to run longer)",
-                self.steps
-            ),
+            message,
         })
     }
 
@@ -1391,13 +1397,7 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
     }
 
     fn fail(&self, pc: usize, message: String) -> Outcome {
-        let (span, line) = self.location(pc);
-        Outcome::Error(RuntimeError {
-            kind: RuntimeErrorKind::Fault,
-            span,
-            line,
-            message,
-        })
+        self.error_at(pc, RuntimeErrorKind::Fault, message)
     }
 
     fn format_message(&self, index: u32) -> String {
