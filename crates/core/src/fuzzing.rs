@@ -278,11 +278,7 @@ pub fn check_saved_faithfully(mesh: &Mesh) -> Result<(), String> {
     let mut compacted = mesh.clone();
     compacted.compact();
     let expected = shape_counts(&compacted);
-    let other = match mesh.structure() {
-        Structure::WingedEdge => Structure::HalfEdge,
-        Structure::HalfEdge => Structure::WingedEdge,
-    };
-    match mesh.convert_to(other) {
+    match mesh.convert_to(mesh.structure().other()) {
         Ok(converted) => {
             let issues = converted.validate();
             if !issues.is_empty() {
