@@ -134,9 +134,8 @@ impl Paint {
     pub fn add_changes(&mut self, journal: &[Change], theme: &Theme) {
         let mut seen: std::collections::HashSet<ElementRef> =
             self.painted.iter().map(|p| p.element).collect();
-        let most = self.painted.len() + MOST_MARKED;
         let mut push = |element: ElementRef, role: TraceRole| {
-            if self.painted.len() < most && seen.insert(element) {
+            if seen.insert(element) {
                 self.painted.push(Painted {
                     element,
                     colour: theme.trace_colour(role),
