@@ -203,6 +203,95 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
     browser.close().await
 }
 
+/// Proxies whose traps throw, revoked proxies, throwing getters, Symbols,
+/// BigInts and a 2³²−1-long array: each command still returns a Promise
+/// (never throws at once), which rejects naming the argument, and the page
+/// goes on.
+#[tokio::test]
+async fn exotic_arguments_give_rejected_promises() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("").await?;
+    browser.eval_async("window.edgewise.loadSample('cube')").await?;
+    // Each call runs inside the page; `outcome` tells a synchronous throw
+    // from a rejection.
+    browser
+        .eval(
+            "window.outcome = (call) => { let p; \
+               try { p = call(); } catch (e) { return Promise.resolve('threw at once: ' + e); } \
+               if (!(p instanceof Promise)) return Promise.resolve('not a Promise'); \
+               return p.then(() => 'resolved', (e) => 'rejected: ' + e.message); }; \
+             window.hostile = { \
+               ownKeys: new Proxy({}, { ownKeys() { throw new Error('keys trap'); } }), \
+               revoked: (() => { const r = Proxy.revocable({}, {}); r.revoke(); return r.proxy; })(), \
+               getter: { get structure() { throw new Error('getter trap'); } }, \
+               arg: { get v() { throw new Error('argument trap'); } }, \
+               ids: new Proxy([0], { get(t, k) { if (k === '0') throw new Error('item trap'); return t[k]; } }), \
+               length: new Proxy([0], { get(t, k) { if (k === 'length') throw new Error('length trap'); return t[k]; } }), \
+             }; return 1;",
+        )
+        .await?;
+    let cases = [
+        (
+            "window.edgewise.loadSample('cube', hostile.ownKeys)",
+            "rejected: loadSample(name, options): options could not be read: it threw 'Error: keys trap'",
+        ),
+        (
+            "window.edgewise.loadSample('cube', hostile.revoked)",
+            "rejected: loadSample(name, options): options could not be read: it threw 'TypeError:",
+        ),
+        (
+            "window.edgewise.loadSample('cube', hostile.getter)",
+            "rejected: loadSample(name, options): options.structure could not be read: it threw 'Error: getter trap'",
+        ),
+        (
+            "window.edgewise.run('vertexStar', hostile.arg)",
+            "rejected: run(name, args): args.v could not be read: it threw 'Error: argument trap'",
+        ),
+        (
+            "window.edgewise.run('vertexStar', hostile.revoked)",
+            "rejected: run(name, args): args could not be read: it threw 'TypeError:",
+        ),
+        (
+            "window.edgewise.edit('flip-edge', hostile.ids)",
+            "rejected: edit(op, ids): ids could not be read: it threw 'Error: item trap'",
+        ),
+        (
+            "window.edgewise.edit('flip-edge', hostile.length)",
+            "rejected: edit(op, ids): ids could not be read: it threw 'Error: length trap'",
+        ),
+        (
+            "window.edgewise.edit('flip-edge', new Array(2 ** 32 - 1))",
+            "rejected: edit(op, ids): ids must be at most three ids, not an array",
+        ),
+        (
+            "window.edgewise.select('edge', 3n)",
+            "rejected: select(kind, id): id must be a whole number from 0, not a BigInt",
+        ),
+        (
+            "window.edgewise.select(Symbol('edge'), 3)",
+            "rejected: select(kind, id): kind must be 'vertex', 'edge' or 'face', not a Symbol",
+        ),
+        (
+            "window.edgewise.loadMesh(hostile.revoked)",
+            "rejected: loadMesh(text, options): text must be a string, not an object",
+        ),
+    ];
+    for (call, expected) in cases {
+        let outcome = browser
+            .eval_async(&format!("window.outcome(() => {call})"))
+            .await?;
+        let outcome = outcome.as_str().unwrap_or_default();
+        assert!(outcome.starts_with(expected), "{call}: {outcome}");
+    }
+    // The page goes on: the cube is open, and a selection and an edit work.
+    assert_eq!(browser.state().await?["mesh"], "cube.htb");
+    browser.eval_async("window.edgewise.select('edge', 3)").await?;
+    assert_eq!(browser.state().await?["selection"]["id"], 3);
+    browser.eval_async("window.edgewise.edit('split-edge', [3])").await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
 #[tokio::test]
 async fn a_failed_load_keeps_the_mesh_and_the_algorithm_menu() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;

@@ -19,8 +19,8 @@ use edgewise_core::{
 };
 
 use super::arguments::{
-    MAX_NAME_CHARS, arguments, check_options, expected, option_bool, option_string, shown,
-    structure_option, text_argument, whole_number,
+    MAX_NAME_CHARS, arguments, check_options, expected, is_array, items, option_bool,
+    option_string, shown, structure_option, text_argument, whole_number,
 };
 use super::{after_a_paint, after_ms, with_app};
 use crate::{
@@ -284,15 +284,12 @@ fn read_edit(call: &'static str, op: &JsValue, ids: &JsValue) -> Result<Command,
         .into_iter()
         .find(|operation| operation.name() == name)
         .ok_or_else(|| expected(call, "op", &wanted, op))?;
-    let values: Vec<JsValue> = if js_sys::Array::is_array(ids) {
-        js_sys::Array::from(ids)
-            .iter()
-            .take(MAX_EDIT_IDS + 1)
-            .collect()
+    let (values, count) = if is_array(ids) {
+        items(call, "ids", ids, MAX_EDIT_IDS)?
     } else {
-        vec![ids.clone()]
+        (vec![ids.clone()], 1)
     };
-    if values.len() > MAX_EDIT_IDS {
+    if count > MAX_EDIT_IDS {
         return Err(expected(call, "ids", "at most three ids", ids));
     }
     let ids = values

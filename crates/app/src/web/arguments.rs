@@ -3,11 +3,64 @@
 //! that names the call, the argument and what was expected
 //! ("select(kind, id): id must be a whole number from 0, not 'abc'").
 
-use eframe::wasm_bindgen::{JsCast as _, JsValue};
+use eframe::wasm_bindgen::{self, JsCast as _, JsValue, prelude::wasm_bindgen};
 
 use edgewise_core::mesh::Structure;
 
 use crate::Argument;
+
+// Catching forms of the reflection calls the arguments go through. A page
+// can pass a Proxy whose traps throw, or a revoked one; js-sys's own
+// bindings let that exception escape the command, which must instead
+// return a rejected Promise.
+#[wasm_bindgen]
+extern "C" {
+    #[wasm_bindgen(catch, js_namespace = Array, js_name = isArray)]
+    fn is_array_or_throw(value: &JsValue) -> Result<bool, JsValue>;
+    #[wasm_bindgen(catch, js_namespace = Object, js_name = keys)]
+    fn keys_or_throw(value: &JsValue) -> Result<js_sys::Array, JsValue>;
+}
+
+/// Whether `value` is an array; a revoked Proxy is not.
+pub(super) fn is_array(value: &JsValue) -> bool {
+    is_array_or_throw(value).unwrap_or(false)
+}
+
+/// The first `most` items of an array argument and its length, read one by
+/// one (an array of length 2³² − 1 is not copied), refused when reading
+/// one throws.
+pub(super) fn items(
+    call: &str,
+    argument: &str,
+    array: &JsValue,
+    most: usize,
+) -> Result<(Vec<JsValue>, usize), String> {
+    let length = property(call, argument, array, "length")?
+        .as_f64()
+        .map_or(0, |n| n as usize);
+    let items = (0..length.min(most))
+        .map(|index| property(call, argument, array, &index.to_string()))
+        .collect::<Result<_, _>>()?;
+    Ok((items, length))
+}
+
+/// "edit(op, ids): ids could not be read: it threw 'TypeError: …'".
+fn unreadable(call: &str, argument: &str, error: &JsValue) -> String {
+    let thrown = error
+        .dyn_ref::<js_sys::Error>()
+        .map(|error| String::from(error.to_string()))
+        .or_else(|| error.as_string())
+        .unwrap_or_else(|| described(error));
+    format!(
+        "{call}: {argument} could not be read: it threw '{}'",
+        shown(&thrown)
+    )
+}
+
+/// `object[key]`, refused when the property's getter or the Proxy throws.
+fn property(call: &str, argument: &str, object: &JsValue, key: &str) -> Result<JsValue, String> {
+    js_sys::Reflect::get(object, &key.into()).map_err(|error| unreadable(call, argument, &error))
+}
 
 /// The longest name, file name or option value the API takes.
 pub(super) const MAX_NAME_CHARS: usize = 256;
@@ -32,7 +85,11 @@ pub(super) fn described(value: &JsValue) -> String {
         format!("{n}")
     } else if let Some(b) = value.as_bool() {
         format!("{b}")
-    } else if js_sys::Array::is_array(value) {
+    } else if value.is_bigint() {
+        "a BigInt".to_owned()
+    } else if value.is_symbol() {
+        "a Symbol".to_owned()
+    } else if is_array(value) {
         "an array".to_owned()
     } else if value.is_function() {
         "a function".to_owned()
@@ -85,10 +142,10 @@ pub(super) fn check_options(call: &str, options: &JsValue, known: &[&str]) -> Re
     if options.is_undefined() || options.is_null() {
         return Ok(());
     }
-    if !options.is_object() || js_sys::Array::is_array(options) {
+    if !options.is_object() || is_array(options) {
         return Err(expected(call, "options", "an object", options));
     }
-    let keys = js_sys::Object::keys(options.unchecked_ref::<js_sys::Object>());
+    let keys = keys_or_throw(options).map_err(|error| unreadable(call, "options", &error))?;
     for key in keys.iter() {
         let key = key.as_string().unwrap_or_default();
         if !known.contains(&key.as_str()) {
@@ -111,11 +168,12 @@ pub(super) fn option_string(
     if options.is_undefined() || options.is_null() {
         return Ok(None);
     }
-    let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
+    let argument = format!("options.{key}");
+    let value = property(call, &argument, options, key)?;
     if value.is_undefined() {
         return Ok(None);
     }
-    text_argument(call, &format!("options.{key}"), &value, MAX_NAME_CHARS).map(Some)
+    text_argument(call, &argument, &value, MAX_NAME_CHARS).map(Some)
 }
 
 /// `options[key]` as a Boolean, if present.
@@ -127,14 +185,15 @@ pub(super) fn option_bool(
     if options.is_undefined() || options.is_null() {
         return Ok(None);
     }
-    let value = js_sys::Reflect::get(options, &key.into()).unwrap_or(JsValue::UNDEFINED);
+    let argument = format!("options.{key}");
+    let value = property(call, &argument, options, key)?;
     if value.is_undefined() {
         return Ok(None);
     }
     value
         .as_bool()
         .map(Some)
-        .ok_or_else(|| expected(call, &format!("options.{key}"), "true or false", &value))
+        .ok_or_else(|| expected(call, &argument, "true or false", &value))
 }
 
 pub(super) fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
@@ -157,16 +216,15 @@ pub(super) fn arguments(call: &str, args: &JsValue) -> Result<Vec<(String, Argum
     }
     // Not `dyn_ref`: an object made by the page around an iframe belongs to
     // another realm, and fails an `instanceof Object` check.
-    if !args.is_object() || js_sys::Array::is_array(args) {
+    if !args.is_object() || is_array(args) {
         return Err(expected(call, "args", "an object such as {v: 0}", args));
     }
-    let object: &js_sys::Object = args.unchecked_ref();
+    let keys = keys_or_throw(args).map_err(|error| unreadable(call, "args", &error))?;
     let mut out = Vec::new();
-    for entry in js_sys::Object::entries(object).iter() {
-        let pair = js_sys::Array::from(&entry);
-        let key = pair.get(0).as_string().unwrap_or_default();
-        let value = pair.get(1);
+    for key in keys.iter() {
+        let key = key.as_string().unwrap_or_default();
         let what = format!("args.{}", shown(&key));
+        let value = property(call, &what, args, &key)?;
         let argument = if let Some(b) = value.as_bool() {
             Argument::Boolean(b)
         } else if value.as_f64().is_some() {
