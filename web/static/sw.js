@@ -5,8 +5,12 @@
 // in below. A new build therefore changes this file, the browser installs the
 // new worker beside the old one, and the page offers to reload (index.html).
 // The shell is served cache-first: the JavaScript and the wasm of one build
-// must never be mixed with another's. Other files of the site (meshes linked
-// with ?mesh=) go to the network first and fall back to a cached copy.
+// must never be mixed with another's. Their names carry the build too, and
+// the install fails (and the old worker stays) unless every file of this
+// build is on the server, so an upload that is not atomic (sw.js and
+// index.html before the JS and wasm) never mixes builds. Other files of the
+// site (meshes linked with ?mesh=) go to the network first and fall back to a
+// cached copy.
 
 const BUILD = '__EDGEWISE_BUILD__';
 const PREFIX = 'edgewise-';
@@ -15,8 +19,8 @@ const FILES_CACHE = `${PREFIX}files-${BUILD}`;
 const SHELL = [
   './',
   'index.html',
-  'edgewise_app.js',
-  'edgewise_app_bg.wasm',
+  `edgewise_app.${BUILD}.js`,
+  `edgewise_app_bg.${BUILD}.wasm`,
   'favicon.svg',
   'examples/embed.html',
 ];
@@ -26,9 +30,16 @@ const scoped = (path) => new URL(path, self.registration.scope).href;
 self.addEventListener('install', (event) => {
   // 'no-cache' revalidates with the server, so a stale HTTP cache cannot
   // slip an older wasm under this build's name.
+  // A file missing from the server fails the install, and the old worker
+  // stays in charge; its empty cache is not left behind.
   event.waitUntil(
-    caches.open(SHELL_CACHE).then((cache) =>
-      cache.addAll(SHELL.map((path) => new Request(scoped(path), { cache: 'no-cache' })))),
+    caches.open(SHELL_CACHE)
+      .then((cache) =>
+        cache.addAll(SHELL.map((path) => new Request(scoped(path), { cache: 'no-cache' }))))
+      .catch(async (err) => {
+        await caches.delete(SHELL_CACHE);
+        throw err;
+      }),
   );
   // No skipWaiting here: the page asks for it when the user chooses to reload.
 });

@@ -37,7 +37,9 @@ impl Profile {
 
 /// The package and binary that make up the browser app.
 const APP_PACKAGE: &str = "edgewise-app";
-/// The stem of the generated JS and wasm files; index.html imports `edgewise_app.js`.
+/// The stem of the generated JS and wasm files. The build's version goes
+/// into their names (`edgewise_app.<build>.js`, `edgewise_app_bg.<build>.wasm`),
+/// which index.html and sw.js name through [`BUILD_PLACEHOLDER`].
 const OUT_NAME: &str = "edgewise_app";
 
 /// Builds the app for the browser into `root/dist` and returns that path.
@@ -86,10 +88,12 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
     let examples = dist.join("examples");
     std::fs::create_dir_all(&examples)?;
     copy_dir(&root.join("web/examples"), &examples)?;
-    let build = stamp_service_worker(&dist)?;
-    eprintln!("==> build {build} stamped into sw.js");
+    let build = stamp_build(&dist)?;
+    eprintln!("==> build {build} stamped into the file names, index.html and sw.js");
 
-    let size = std::fs::metadata(&wasm_out).map(|m| m.len()).unwrap_or(0);
+    let size = std::fs::metadata(dist.join(format!("{OUT_NAME}_bg.{build}.wasm")))
+        .map(|m| m.len())
+        .unwrap_or(0);
     let gzipped = precompress(&dist)?;
     eprintln!(
         "==> dist/ is ready ({:.1} MB of wasm; {:.1} MB to download, gzipped)",
@@ -209,21 +213,18 @@ pub fn target_dir(root: &Path) -> PathBuf {
         .map_or_else(|| root.join("target"), |dir| root.join(PathBuf::from(dir)))
 }
 
-/// The text in web/static/sw.js that becomes the build's version.
+/// The text in index.html and web/static/sw.js that becomes the build's
+/// version.
 const BUILD_PLACEHOLDER: &str = "__EDGEWISE_BUILD__";
 
-/// Writes a version made from every file in `dist` into sw.js, so a new
-/// build changes the worker and browsers fetch the new app shell; an
-/// unchanged build keeps its version and its visitors' caches.
-fn stamp_service_worker(dist: &Path) -> anyhow::Result<String> {
+/// Makes a version from every file in `dist` and writes it into the JS and
+/// wasm file names (the JS loading the renamed wasm), index.html and sw.js.
+/// A new build thus changes the worker, and browsers fetch the new app
+/// shell; an unchanged build keeps its version and its visitors' caches. A
+/// page can start only its own build's files, whatever order a deploy
+/// uploads them in.
+fn stamp_build(dist: &Path) -> anyhow::Result<String> {
     let worker = dist.join("sw.js");
-    let text = std::fs::read_to_string(&worker)
-        .with_context(|| format!("cannot read {}", worker.display()))?;
-    anyhow::ensure!(
-        text.contains(BUILD_PLACEHOLDER),
-        "{} has no {BUILD_PLACEHOLDER} to stamp the build into",
-        worker.display()
-    );
     let mut files = Vec::new();
     list_files(dist, &mut files)?;
     files.retain(|f| *f != worker);
@@ -238,9 +239,42 @@ fn stamp_service_worker(dist: &Path) -> anyhow::Result<String> {
         );
     }
     let build = format!("{:016x}", hash.0);
-    std::fs::write(&worker, text.replace(BUILD_PLACEHOLDER, &build))
-        .with_context(|| format!("cannot write {}", worker.display()))?;
+
+    let wasm = format!("{OUT_NAME}_bg.wasm");
+    let js = dist.join(format!("{OUT_NAME}.js"));
+    replace_once(
+        &js,
+        &format!("'{wasm}'"),
+        &format!("'{OUT_NAME}_bg.{build}.wasm'"),
+    )?;
+    rename(&js, &dist.join(format!("{OUT_NAME}.{build}.js")))?;
+    rename(
+        &dist.join(&wasm),
+        &dist.join(format!("{OUT_NAME}_bg.{build}.wasm")),
+    )?;
+    for page in [dist.join("index.html"), worker] {
+        replace_once(&page, BUILD_PLACEHOLDER, &build)?;
+    }
     Ok(build)
+}
+
+/// Replaces the one `from` in `file`'s text; more than one (or none) means
+/// the file is not what the build expects.
+fn replace_once(file: &Path, from: &str, to: &str) -> anyhow::Result<()> {
+    let text =
+        std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
+    anyhow::ensure!(
+        text.matches(from).count() == 1,
+        "{} should name {from} exactly once",
+        file.display()
+    );
+    std::fs::write(file, text.replace(from, to))
+        .with_context(|| format!("cannot write {}", file.display()))
+}
+
+fn rename(from: &Path, to: &Path) -> anyhow::Result<()> {
+    std::fs::rename(from, to)
+        .with_context(|| format!("cannot rename {} to {}", from.display(), to.display()))
 }
 
 /// 64-bit FNV-1a: stable across Rust versions, unlike std's hasher, so the
@@ -301,7 +335,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_build_version_depends_on_the_files_only() {
+    fn the_build_version_depends_on_the_files_only_and_names_them() {
         let dist = std::env::temp_dir().join(format!("edgewise-stamp-{}", std::process::id()));
         std::fs::create_dir_all(dist.join("examples")).unwrap();
         let stamp = |wasm: &str| {
@@ -310,11 +344,32 @@ mod tests {
                 format!("const BUILD = '{BUILD_PLACEHOLDER}';"),
             )
             .unwrap();
-            std::fs::write(dist.join("app.wasm"), wasm).unwrap();
+            std::fs::write(
+                dist.join("index.html"),
+                format!("const BUILD = '{BUILD_PLACEHOLDER}';"),
+            )
+            .unwrap();
+            std::fs::write(
+                dist.join("edgewise_app.js"),
+                "new URL('edgewise_app_bg.wasm', import.meta.url)",
+            )
+            .unwrap();
+            std::fs::write(dist.join("edgewise_app_bg.wasm"), wasm).unwrap();
             std::fs::write(dist.join("examples/embed.html"), "<p>").unwrap();
-            let build = stamp_service_worker(&dist).unwrap();
-            let worker = std::fs::read_to_string(dist.join("sw.js")).unwrap();
-            assert_eq!(worker, format!("const BUILD = '{build}';"));
+            let build = stamp_build(&dist).unwrap();
+            for page in ["sw.js", "index.html"] {
+                let text = std::fs::read_to_string(dist.join(page)).unwrap();
+                assert_eq!(text, format!("const BUILD = '{build}';"));
+            }
+            let js = std::fs::read_to_string(dist.join(format!("edgewise_app.{build}.js")));
+            assert_eq!(
+                js.unwrap(),
+                format!("new URL('edgewise_app_bg.{build}.wasm', import.meta.url)")
+            );
+            let wasm_file = dist.join(format!("edgewise_app_bg.{build}.wasm"));
+            assert_eq!(std::fs::read_to_string(&wasm_file).unwrap(), wasm);
+            std::fs::remove_file(dist.join(format!("edgewise_app.{build}.js"))).unwrap();
+            std::fs::remove_file(wasm_file).unwrap();
             build
         };
         let first = stamp("one");

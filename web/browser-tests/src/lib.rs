@@ -185,6 +185,24 @@ impl Browser {
             .with_context(|| format!("cannot open {url}"))
     }
 
+    /// Opens a second tab and switches to it; [`Self::switch_to`] goes back
+    /// to the first with the handle of [`Self::tab`].
+    pub async fn new_tab(&self) -> anyhow::Result<fantoccini::wd::WindowHandle> {
+        let opened = self.client.new_window(true).await?;
+        self.client.switch_to_window(opened.handle.clone()).await?;
+        Ok(opened.handle)
+    }
+
+    /// The tab commands go to.
+    pub async fn tab(&self) -> anyhow::Result<fantoccini::wd::WindowHandle> {
+        Ok(self.client.window().await?)
+    }
+
+    /// Sends the next commands to `tab`.
+    pub async fn switch_to(&self, tab: fantoccini::wd::WindowHandle) -> anyhow::Result<()> {
+        Ok(self.client.switch_to_window(tab).await?)
+    }
+
     /// Waits until the app has defined `window.edgewise`, failing early with
     /// the page's own message if it shows one.
     pub async fn wait_until_ready(&self) -> anyhow::Result<()> {

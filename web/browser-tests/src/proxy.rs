@@ -1,6 +1,8 @@
 //! A small HTTP proxy in front of the test server, for the offline tests: it
 //! can cut the network (every connection is closed unanswered, as when the
-//! server is unreachable) and can serve a changed sw.js, as a new build would.
+//! server is unreachable), serve a changed sw.js, as a new build would, and
+//! publish the served build under another version, all at once or page
+//! first, as an upload that is not atomic does.
 //!
 //! Each test that needs it starts its own, on its own port, so the service
 //! worker it installs belongs to an origin no other test uses.
@@ -21,6 +23,19 @@ struct Settings {
     offline: bool,
     /// Appended to sw.js: a different worker, as after a new build.
     worker_suffix: Option<String>,
+    /// The served build published as another one.
+    next_build: Option<NextBuild>,
+}
+
+/// The served build, renamed: index.html and sw.js name `new` instead of
+/// `old`, and `*.<new>.*` files are the `*.<old>.*` ones with their text
+/// renamed too, once they have `arrived`; until then they are missing (404),
+/// as when the page and worker are uploaded first.
+#[derive(Clone)]
+struct NextBuild {
+    old: String,
+    new: String,
+    arrived: bool,
 }
 
 /// A proxy to the served dist/, listening on 127.0.0.1.
@@ -80,6 +95,17 @@ impl Proxy {
         self.settings().worker_suffix = Some(suffix.to_owned());
     }
 
+    /// Publishes the served build `old` as build `new` (a 16-digit version,
+    /// as the xtask makes). With `files_arrived` false only index.html and
+    /// sw.js are new, and the new JS and wasm are missing.
+    pub fn publish_as(&self, old: &str, new: &str, files_arrived: bool) {
+        self.settings().next_build = Some(NextBuild {
+            old: old.to_owned(),
+            new: new.to_owned(),
+            arrived: files_arrived,
+        });
+    }
+
     fn settings(&self) -> std::sync::MutexGuard<'_, Settings> {
         self.settings.lock().unwrap_or_else(PoisonError::into_inner)
     }
@@ -99,16 +125,32 @@ async fn forward(
     settings: &Mutex<Settings>,
 ) -> anyhow::Result<()> {
     let head = read_head(&mut client).await?;
-    let (offline, suffix) = {
+    let (offline, suffix, next_build) = {
         let s = settings.lock().unwrap_or_else(PoisonError::into_inner);
-        (s.offline, s.worker_suffix.clone())
+        (s.offline, s.worker_suffix.clone(), s.next_build.clone())
     };
     if offline {
         // Dropping the connection unanswered is what a dead network looks like.
         return Ok(());
     }
-    let head = String::from_utf8_lossy(&head).into_owned();
+    let mut head = String::from_utf8_lossy(&head).into_owned();
     let path = head.split_whitespace().nth(1).unwrap_or("/").to_owned();
+    let file = path.split(['?', '#']).next().unwrap_or_default().to_owned();
+    let renamed = next_build
+        .as_ref()
+        .filter(|next| file.contains(&format!(".{}.", next.new)));
+    if let Some(next) = renamed {
+        if !next.arrived {
+            client
+                .write_all(
+                    b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n",
+                )
+                .await?;
+            client.shutdown().await?;
+            return Ok(());
+        }
+        head = head.replacen(&next.new, &next.old, 1);
+    }
     let mut request = String::new();
     for (i, line) in head.split("\r\n").enumerate() {
         let name = line
@@ -116,10 +158,11 @@ async fn forward(
             .next()
             .unwrap_or_default()
             .to_ascii_lowercase();
-        // Bodies are asked for uncompressed, so that sw.js can be changed.
+        // Bodies are asked for uncompressed, so that sw.js can be changed,
+        // and always whole: a server's 304 would hide the change.
         let dropped = matches!(
             name.as_str(),
-            "connection" | "keep-alive" | "accept-encoding"
+            "connection" | "keep-alive" | "accept-encoding" | "if-modified-since" | "if-none-match"
         );
         if line.is_empty() || (i > 0 && dropped) {
             continue;
@@ -134,13 +177,21 @@ async fn forward(
     let mut response = Vec::new();
     server.read_to_end(&mut response).await?;
 
-    let is_worker = path
-        .split(['?', '#'])
-        .next()
-        .unwrap_or_default()
-        .ends_with("/sw.js");
+    let is_worker = file.ends_with("/sw.js");
     if let (true, Some(suffix)) = (is_worker, suffix) {
-        response = append_to_body(&response, suffix.as_bytes())?;
+        response = rewrite_body(&response, |body| [body, suffix.as_bytes()].concat())?;
+    }
+    let was_renamed = renamed.is_some();
+    let names_build = is_worker
+        || file.ends_with('/')
+        || file.ends_with(".html")
+        || (was_renamed && file.ends_with(".js"));
+    if let (true, Some(next)) = (names_build, &next_build) {
+        response = rewrite_body(&response, |body| {
+            String::from_utf8_lossy(body)
+                .replace(&next.old, &next.new)
+                .into_bytes()
+        })?;
     }
     client.write_all(&response).await?;
     client.shutdown().await?;
@@ -159,8 +210,9 @@ async fn read_head(client: &mut TcpStream) -> anyhow::Result<Vec<u8>> {
     Ok(head)
 }
 
-/// Appends `extra` to an HTTP response's body and fixes its Content-Length.
-fn append_to_body(response: &[u8], extra: &[u8]) -> anyhow::Result<Vec<u8>> {
+/// Rewrites an HTTP response's body with `change` and fixes its
+/// Content-Length.
+fn rewrite_body(response: &[u8], change: impl FnOnce(&[u8]) -> Vec<u8>) -> anyhow::Result<Vec<u8>> {
     let split = response
         .windows(4)
         .position(|w| w == b"\r\n\r\n")
@@ -174,12 +226,9 @@ fn append_to_body(response: &[u8], extra: &[u8]) -> anyhow::Result<Vec<u8>> {
             out.push_str("\r\n");
         }
     }
-    out.push_str(&format!(
-        "Content-Length: {}\r\n\r\n",
-        body.len() + extra.len()
-    ));
+    let body = change(body);
+    out.push_str(&format!("Content-Length: {}\r\n\r\n", body.len()));
     let mut bytes = out.into_bytes();
-    bytes.extend_from_slice(body);
-    bytes.extend_from_slice(extra);
+    bytes.extend_from_slice(&body);
     Ok(bytes)
 }

@@ -211,7 +211,9 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
 async fn exotic_arguments_give_rejected_promises() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
     browser.open("").await?;
-    browser.eval_async("window.edgewise.loadSample('cube')").await?;
+    browser
+        .eval_async("window.edgewise.loadSample('cube')")
+        .await?;
     // Each call runs inside the page; `outcome` tells a synchronous throw
     // from a rejection.
     browser
@@ -285,9 +287,13 @@ async fn exotic_arguments_give_rejected_promises() -> anyhow::Result<()> {
     }
     // The page goes on: the cube is open, and a selection and an edit work.
     assert_eq!(browser.state().await?["mesh"], "cube.htb");
-    browser.eval_async("window.edgewise.select('edge', 3)").await?;
+    browser
+        .eval_async("window.edgewise.select('edge', 3)")
+        .await?;
     assert_eq!(browser.state().await?["selection"]["id"], 3);
-    browser.eval_async("window.edgewise.edit('split-edge', [3])").await?;
+    browser
+        .eval_async("window.edgewise.edit('split-edge', [3])")
+        .await?;
     browser.assert_no_console_errors().await?;
     browser.close().await
 }

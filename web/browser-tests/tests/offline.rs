@@ -18,6 +18,51 @@ async fn launch_through(proxy: &Proxy) -> anyhow::Result<Browser> {
     .await
 }
 
+/// The build the page's worker caches, from its shell cache's name.
+async fn cached_builds(browser: &Browser) -> anyhow::Result<Vec<String>> {
+    let caches = browser.eval_async("caches.keys()").await?;
+    Ok(caches
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .filter_map(|name| name.strip_prefix("edgewise-shell-"))
+        .map(str::to_owned)
+        .collect())
+}
+
+/// The builds whose JS the page loaded (from the worker or the network).
+async fn loaded_builds(browser: &Browser) -> anyhow::Result<Vec<String>> {
+    let names = browser
+        .eval(
+            "return performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname) \
+             .filter((p) => /edgewise_app(_bg)?\\.[0-9a-f]{16}\\.(js|wasm)$/.test(p));",
+        )
+        .await?;
+    Ok(names
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .filter_map(|path| path.split('.').nth(1))
+        .map(str::to_owned)
+        .collect())
+}
+
+/// Asks the worker registration for an update and waits for the new worker
+/// to end its install: `installed`, or `redundant` when it failed.
+async fn update_outcome(browser: &Browser) -> anyhow::Result<Value> {
+    browser
+        .eval_async(
+            "navigator.serviceWorker.getRegistration().then((r) => new Promise((resolve) => { \
+               r.addEventListener('updatefound', () => { const w = r.installing; \
+                 w.addEventListener('statechange', () => { \
+                   if (w.state === 'installed' || w.state === 'redundant') resolve(w.state); }); }); \
+               r.update().catch((e) => resolve('update failed: ' + e)); }))",
+        )
+        .await
+}
+
 /// Waits until the worker has installed the shell and is active.
 async fn wait_for_active_worker(browser: &Browser) -> anyhow::Result<()> {
     let state = browser
@@ -62,11 +107,12 @@ async fn the_worker_controls_the_page_after_a_reload() -> anyhow::Result<()> {
             "caches.open('{shell}').then((c) => c.keys()).then((ks) => ks.map((r) => new URL(r.url).pathname))"
         ))
         .await?;
+    // The JS and wasm carry the build in their names too.
     for file in [
         "/",
         "/index.html",
-        "/edgewise_app.js",
-        "/edgewise_app_bg.wasm",
+        &format!("/edgewise_app.{build}.js"),
+        &format!("/edgewise_app_bg.{build}.wasm"),
         "/favicon.svg",
         "/examples/embed.html",
     ] {
@@ -184,5 +230,103 @@ async fn a_new_build_is_offered_with_a_reload_banner() -> anyhow::Result<()> {
         .await?;
 
     browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+/// An upload that puts index.html and sw.js on the server before the JS and
+/// wasm: the new worker's install fails and the old build keeps running,
+/// whole; once the files arrive the new build is offered, and Reload works in
+/// both open tabs (the second one finds the new worker already active).
+#[tokio::test]
+async fn an_upload_in_any_order_never_mixes_builds() -> anyhow::Result<()> {
+    const NEXT: &str = "0123456789abcdef";
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+    browser.open("").await?;
+    let builds = cached_builds(&browser).await?;
+    let [old] = builds.as_slice() else {
+        panic!("one shell cache expected: {builds:?}");
+    };
+    assert_eq!(loaded_builds(&browser).await?, [old.clone(), old.clone()]);
+
+    // The page and worker of the next build arrive first.
+    proxy.publish_as(old, NEXT, false);
+    assert_eq!(update_outcome(&browser).await?, "redundant");
+    browser.open("?sample=cube").await?;
+    assert_eq!(loaded_builds(&browser).await?, [old.clone(), old.clone()]);
+    assert_eq!(cached_builds(&browser).await?, [old.clone()]);
+    let banner = browser
+        .eval("return !document.getElementById('edgewise_update').hidden;")
+        .await?;
+    assert_eq!(banner, false, "a build that is not all there was offered");
+    assert_eq!(browser.state().await?["mesh"], "cube.htb");
+
+    // A second tab on the old build; then the JS and wasm arrive.
+    let first = browser.tab().await?;
+    let second = browser.new_tab().await?;
+    browser.open("").await?;
+    browser.switch_to(first.clone()).await?;
+    proxy.publish_as(old, NEXT, true);
+    assert_eq!(update_outcome(&browser).await?, "installed");
+    let banner_shown = "!document.getElementById('edgewise_update').hidden";
+    browser.wait_for(banner_shown, WORKER_TIMEOUT).await?;
+    let reload_here = "window.edgewiseBeforeUpdate = true; \
+         document.getElementById('edgewise_update_reload').click(); return null;";
+    browser.eval(reload_here).await?;
+    browser
+        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
+        .await?;
+    browser.wait_until_ready().await?;
+    assert_eq!(loaded_builds(&browser).await?, [NEXT, NEXT]);
+
+    // The other tab still offers the update; its Reload loads the new build.
+    browser.switch_to(second).await?;
+    browser.wait_for(banner_shown, WORKER_TIMEOUT).await?;
+    assert_eq!(loaded_builds(&browser).await?, [old.clone(), old.clone()]);
+    browser.eval(reload_here).await?;
+    browser
+        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
+        .await?;
+    browser.wait_until_ready().await?;
+    assert_eq!(loaded_builds(&browser).await?, [NEXT, NEXT]);
+    assert_eq!(cached_builds(&browser).await?, [NEXT]);
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+/// A first visit during such an upload: the page names the missing build
+/// and asks to reload in a minute, rather than starting anything.
+#[tokio::test]
+async fn a_first_visit_during_an_upload_says_to_reload() -> anyhow::Result<()> {
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+    let builds = cached_builds(&browser).await?;
+    let [old] = builds.as_slice() else {
+        panic!("one shell cache expected: {builds:?}");
+    };
+    // Another profile's first visit: no worker, no cache.
+    let fresh = launch_through(&proxy).await?;
+    proxy.publish_as(old, "0123456789abcdef", false);
+    fresh.goto("").await?;
+    fresh
+        .wait_for(
+            "document.getElementById('edgewise_error').dataset.visible === 'true'",
+            WORKER_TIMEOUT,
+        )
+        .await?;
+    let text = fresh
+        .eval("return document.getElementById('edgewise_error').textContent;")
+        .await?;
+    let text = text.as_str().unwrap_or_default();
+    assert!(
+        text.contains("the files of build 0123456789abcdef could not be fetched")
+            && text.contains("reload in a minute"),
+        "{text}"
+    );
+    fresh.close().await?;
     browser.close().await
 }
