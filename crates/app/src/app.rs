@@ -970,8 +970,22 @@ impl eframe::App for EdgewiseApp {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        self.frame_ui(ui, frame.info().cpu_usage);
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(&mut *self)
+    }
+}
+
+impl EdgewiseApp {
+    /// One frame of the app in `ui`, given how long eframe says the last
+    /// frame took. Without eframe (the `link` fuzz target) it runs in a
+    /// bare [`egui::Context`].
+    pub fn frame_ui(&mut self, ui: &mut egui::Ui, cpu_usage_seconds: Option<f32>) {
         self.frames += 1;
-        self.frame_cpu_ms = frame.info().cpu_usage.map(|seconds| seconds * 1000.0);
+        self.frame_cpu_ms = cpu_usage_seconds.map(|seconds| seconds * 1000.0);
         if !self.fonts_installed {
             crate::theme::install_fonts(ui.ctx());
             self.fonts_installed = true;
@@ -1000,13 +1014,6 @@ impl eframe::App for EdgewiseApp {
         self.ui_cache.finish(ui.ctx(), self.render_state.as_ref());
     }
 
-    #[cfg(target_arch = "wasm32")]
-    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
-        Some(&mut *self)
-    }
-}
-
-impl EdgewiseApp {
     /// The full layout: menus, panels, tables and the view.
     fn whole_ui(&mut self, ui: &mut egui::Ui) {
         let presenting = self.presentation;

@@ -185,8 +185,13 @@ fn check_run(algorithm: &std::sync::Arc<lang::Algorithm>, mesh: &Mesh, inputs: &
     .unwrap_or_else(|e| refused(e));
     check_trace(&trace, options);
     // Only the trace keeps its steps, so only it may stop for memory.
-    let expected = (!hit_memory_limit(trace.outcome()))
-        .then(|| (trace.outcome().clone(), trace.final_variables().to_vec(), traced.stats()));
+    let expected = (!hit_memory_limit(trace.outcome())).then(|| {
+        (
+            trace.outcome().clone(),
+            trace.final_variables().to_vec(),
+            traced.stats(),
+        )
+    });
     drop(trace);
     drop(traced);
 
@@ -198,7 +203,10 @@ fn check_run(algorithm: &std::sync::Arc<lang::Algorithm>, mesh: &Mesh, inputs: &
     }
     .unwrap_or_else(|e| refused(e));
     if let Some((outcome, variables, stats)) = expected {
-        assert_eq!(execution.outcome, outcome, "execute and run agree on the outcome");
+        assert_eq!(
+            execution.outcome, outcome,
+            "execute and run agree on the outcome"
+        );
         assert_eq!(
             execution.variables, variables,
             "execute and run agree on the final variables"

@@ -21,7 +21,7 @@ use base64::Engine as _;
 use crate::process::{self, cargo};
 
 /// Every fuzz target, in the order `cargo xtask fuzz` runs them.
-pub const TARGETS: [&str; 9] = [
+pub const TARGETS: [&str; 10] = [
     "obj",
     "ply",
     "wtb",
@@ -31,6 +31,7 @@ pub const TARGETS: [&str; 9] = [
     "vm",
     "convert",
     "course_link",
+    "link",
 ];
 
 /// The ids of the conversion seeds' operations, in turn.
@@ -163,8 +164,8 @@ fn run_target(root: &Path, target: &'static str, seconds: u64) -> anyhow::Result
     eprintln!("\n==> fuzzing {target} for {seconds}s");
     let mut cmd = nightly_cargo();
     cmd.current_dir(root).args(["fuzz", "run"]);
-    if target == "course_link" {
-        // Only this target needs the app, and so eframe and wgpu.
+    if matches!(target, "course_link" | "link") {
+        // Only these targets need the app, and so eframe and wgpu.
         cmd.args(["--features", "app"]);
     }
     cmd.arg(target)
@@ -452,6 +453,16 @@ pub fn make_seeds(root: &Path) -> anyhow::Result<()> {
         );
     }
 
+    // `link` opens the same links in a whole app.
+    let links: Vec<_> = set
+        .0
+        .iter()
+        .filter(|(target, ..)| target == "course_link")
+        .map(|(_, name, bytes)| (name.clone(), bytes.clone()))
+        .collect();
+    for (name, bytes) in links {
+        set.add("link", &name, bytes);
+    }
     set.write(&seeds)
 }
 
