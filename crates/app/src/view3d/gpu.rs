@@ -311,8 +311,26 @@ pub struct VertexData {
     pub count: u32,
 }
 
+/// The most of `data` that one buffer of at most `max_buffer_size` bytes
+/// holds. wgpu panics on a larger buffer, so a mesh grown past it (an
+/// editing run that makes a million edges) is drawn in part, never a dead
+/// page.
+pub fn fitting<'a, T>(label: &str, data: &'a [T], max_buffer_size: u64) -> &'a [T] {
+    let most = usize::try_from(max_buffer_size).unwrap_or(usize::MAX) / size_of::<T>().max(1);
+    if data.len() > most {
+        log::warn!(
+            "{label}: {} elements do not fit in one buffer; drawing the first {most}",
+            data.len()
+        );
+        &data[..most]
+    } else {
+        data
+    }
+}
+
 impl VertexData {
     pub fn new<T: Pod + Default>(device: &wgpu::Device, label: &str, data: &[T]) -> Self {
+        let data = fitting(label, data, device.limits().max_buffer_size);
         let fallback = [T::default()];
         let contents: &[T] = if data.is_empty() { &fallback } else { data };
         Self {
@@ -350,6 +368,13 @@ pub struct IndexData {
 
 impl IndexData {
     pub fn new(device: &wgpu::Device, label: &str, indices: &[u32]) -> Self {
+        let fitted = fitting(label, indices, device.limits().max_buffer_size);
+        // Cut down to whole lines and triangles.
+        let indices = if fitted.len() < indices.len() {
+            &fitted[..fitted.len() - fitted.len() % 6]
+        } else {
+            indices
+        };
         let contents: &[u32] = if indices.is_empty() { &[0] } else { indices };
         Self {
             buffer: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -479,4 +504,18 @@ pub fn draw_instanced(
     }
     pass.set_index_buffer(template.indices.slice(..), wgpu::IndexFormat::Uint16);
     pass.draw_indexed(0..template.index_count, 0, 0..instances);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fitting;
+
+    #[test]
+    fn what_does_not_fit_in_a_buffer_is_cut_not_a_panic() {
+        let data = vec![[0.0_f32; 4]; 1000];
+        assert_eq!(fitting("test", &data, 256).len(), 16);
+        assert_eq!(fitting("test", &data, 16_000).len(), 1000);
+        assert_eq!(fitting("test", &data, 15_999).len(), 999);
+        assert!(fitting("test", &data, 0).is_empty());
+    }
 }
