@@ -108,6 +108,8 @@ pub enum Command {
     Goto(usize),
     /// Stops the running algorithm.
     Abort,
+    /// Closes the algorithm panel, ending any run as Abort does (✖).
+    CloseAlgorithm,
     /// Sets or clears a breakpoint on a source line of the running algorithm.
     ToggleBreakpoint(u32),
     /// Goes to the next step on a breakpoint line (or the end).

@@ -104,6 +104,64 @@ fn an_edit_abandoned_half_way_is_taken_back() {
     assert!(harness.state_mut().restore_before_edit().is_err());
 }
 
+/// However a finished traced edit ends (Abort, ✖, choosing another
+/// algorithm and picking its input, a new load), the edit is in the history:
+/// undo gives back exactly the mesh it started from, and redo the edit.
+#[test]
+fn a_traced_edit_ended_any_way_is_undone_exactly() {
+    use edgewise_app::command::Command;
+    use edgewise_core::schema::{ElementKind, ElementRef};
+    let endings: [(&str, fn(&mut support::AppHarness)); 4] = [
+        ("Abort", |h| {
+            h.state_mut().abort_algorithm().expect("abort");
+        }),
+        ("✖", |h| {
+            h.state_mut()
+                .execute(Command::CloseAlgorithm)
+                .expect("close");
+        }),
+        ("a pick", |h| {
+            let app = h.state_mut();
+            app.run_algorithm("vertexAdjacentEdge", &[])
+                .expect("waits for v");
+            app.execute(Command::Pick(ElementRef::new(ElementKind::Vertex, 0)))
+                .expect("picked");
+            app.abort_algorithm().expect("abort");
+        }),
+        ("a new load", |h| {
+            h.state_mut().load_sample("cube", None).expect("loads");
+            h.run();
+            h.state_mut().undo().expect("undo the load");
+        }),
+    ];
+    for (way, end) in endings {
+        let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+        let before = harness.state().mesh().cloned().expect("a mesh");
+        start_flip(&mut harness);
+        harness.state_mut().trace_goto(usize::MAX).expect("goto");
+        harness.run();
+        let after = harness.state().mesh().cloned().expect("a mesh");
+        assert_ne!(after, before, "{way}");
+        end(&mut harness);
+        harness.run();
+        assert!(
+            !harness.state().state().trace.is_some(),
+            "{way}: the run ended"
+        );
+        assert_eq!(
+            harness.state().mesh(),
+            Some(&after),
+            "{way}: the edit stays"
+        );
+        harness.state_mut().undo().expect("undo the edit");
+        harness.run();
+        assert_eq!(harness.state().mesh(), Some(&before), "{way}: undo");
+        harness.state_mut().redo().expect("redo the edit");
+        harness.run();
+        assert_eq!(harness.state().mesh(), Some(&after), "{way}: redo");
+    }
+}
+
 #[test]
 fn a_refused_edit_changes_nothing_and_says_why() {
     let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));

@@ -297,9 +297,7 @@ impl EdgewiseApp {
             ui.selectable_value(&mut self.algorithm_tab, AlgorithmTab::Write, "Write");
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if ui.button("✖").on_hover_text("Close the panel").clicked() {
-                    self.show_algorithm_panel = false;
-                    // Closing the panel with nothing running is fine.
-                    let _idle = self.tab_mut().run.abort();
+                    self.issue(Command::CloseAlgorithm);
                 }
             });
         });

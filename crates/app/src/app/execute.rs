@@ -19,6 +19,7 @@ impl EdgewiseApp {
         if matches!(
             command,
             Command::Abort
+                | Command::CloseAlgorithm
                 | Command::RunAlgorithm { .. }
                 | Command::Start
                 | Command::Edit { .. }
@@ -77,7 +78,11 @@ impl EdgewiseApp {
             Command::OpenFile { name, bytes } => done(self.open_named_file(&name, bytes)),
             Command::ChooseStructure(structure) => done(self.resolve_structure_dialog(structure)),
             Command::Select(element) => done(self.set_selection(element)),
-            Command::SetStructure(structure) => done(self.convert_to(structure)),
+            Command::SetStructure(structure) => {
+                // The converted mesh is the one the run left, kept undoably.
+                self.tab_mut().end_run();
+                done(self.convert_to(structure))
+            }
             Command::LoadAlgorithms { source, file } => {
                 self.add_algorithms(&source, &file).map(Reply::Algorithms)
             }
@@ -102,6 +107,11 @@ impl EdgewiseApp {
             Command::StepOut => done(self.tab_mut().run.step_out()),
             Command::Goto(k) => done(self.tab_mut().run.goto(k)),
             Command::Abort => done(self.tab_mut().run.abort()),
+            Command::CloseAlgorithm => {
+                self.show_algorithm_panel = false;
+                self.tab_mut().end_run();
+                Ok(Reply::Done)
+            }
             Command::Cancel => done(self.cancel_pending()),
             Command::ToggleBreakpoint(line) => {
                 let run = &mut self.tabs[self.active_tab].run;

@@ -206,6 +206,9 @@ impl EdgewiseApp {
                 tab.structure = document.structure();
                 tab.view.show_prepared(preparation, frame);
                 let entry = format!("open {}", document.name);
+                // A traced edit is kept (or undone) before the new mesh
+                // replaces it, so undo gives it back.
+                tab.end_run();
                 let before = tab.document.replace(document);
                 tab.history.record(entry, Kind::Load, before, merge);
                 match broken {

@@ -225,6 +225,14 @@ impl Tab {
         }
     }
 
+    /// Ends the tab's run, whichever way it ends (Abort, ✖, a new load, a
+    /// conversion): its edit is kept undoably or undone, as
+    /// [`Self::finish_edit`] decides, and then the run stops.
+    pub(crate) fn end_run(&mut self) {
+        self.finish_edit();
+        self.run.mesh_changed();
+    }
+
     /// Ends an editing run: a run that finished and left a sound mesh keeps
     /// its result, undoable; any other goes back to the mesh it started
     /// from.

@@ -153,6 +153,11 @@ const COMMANDS: &[CommandEntry] = &[
         read: |_, _, _| Ok(Command::Abort),
     },
     CommandEntry {
+        name: "closeAlgorithm",
+        call: "closeAlgorithm()",
+        read: |_, _, _| Ok(Command::CloseAlgorithm),
+    },
+    CommandEntry {
         name: "cancel",
         call: "cancel()",
         read: |_, _, _| Ok(Command::Cancel),
