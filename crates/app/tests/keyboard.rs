@@ -9,17 +9,30 @@ use edgewise_core::mesh::{Structure, operations::Operation};
 use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
 use egui_kittest::kittest::Queryable as _;
 
-/// Presses `/`, types `text` and Enter.
-fn type_element(
+/// Presses `/` (with its text, as a browser sends it: in the same frame,
+/// or with `late_slash` in the next), types `text` and Enter.
+fn type_element_with(
     harness: &mut egui_kittest::Harness<'static, edgewise_app::EdgewiseApp>,
     text: &str,
+    late_slash: bool,
 ) {
     harness.key_press(egui::Key::Slash);
+    if late_slash {
+        harness.step();
+    }
+    harness.event(egui::Event::Text("/".to_owned()));
     harness.run();
     harness.event(egui::Event::Text(text.to_owned()));
     harness.run();
     harness.key_press(egui::Key::Enter);
     harness.run();
+}
+
+fn type_element(
+    harness: &mut egui_kittest::Harness<'static, edgewise_app::EdgewiseApp>,
+    text: &str,
+) {
+    type_element_with(harness, text, false);
 }
 
 #[test]
@@ -31,6 +44,13 @@ fn a_typed_element_is_selected_picked_and_answers() {
         harness.state().state().selection,
         Some(ElementRef::new(ElementKind::Edge, 2))
     );
+    // The `/` that focuses the box is never typed into it.
+    type_element_with(&mut harness, "v 1", true);
+    assert_eq!(
+        harness.state().state().selection,
+        Some(ElementRef::new(ElementKind::Vertex, 1))
+    );
+    assert_eq!(harness.state().state().error, None);
 
     // An algorithm waiting for its input takes the typed vertex.
     harness

@@ -41,7 +41,15 @@ impl EdgewiseApp {
     pub(super) fn element_box_ui(&mut self, ui: &mut egui::Ui) {
         let id = egui::Id::unique(ID);
         let slash = !ui.ctx().egui_wants_keyboard_input()
-            && ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::Slash));
+            && ui.input_mut(|i| {
+                let pressed = i.consume_key(egui::Modifiers::NONE, egui::Key::Slash);
+                if pressed {
+                    // The key's text must not reach the box it focuses.
+                    i.events
+                        .retain(|event| !matches!(event, egui::Event::Text(text) if text == "/"));
+                }
+                pressed
+            });
         if slash {
             ui.memory_mut(|memory| memory.request_focus(id));
         }
@@ -60,6 +68,11 @@ impl EdgewiseApp {
         let response = response.on_hover_text(
             "Type an element (vertex 1, e 3, f2) and Enter: the same as clicking it",
         );
+        // The browser may deliver the `/` that focused the box a frame
+        // later; no element starts with one.
+        if let Some(rest) = self.element_box.strip_prefix('/') {
+            self.element_box = rest.to_owned();
+        }
         if response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
             let typed = std::mem::take(&mut self.element_box);
             if !typed.trim().is_empty() {
