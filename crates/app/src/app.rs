@@ -88,6 +88,8 @@ pub struct EdgewiseApp {
     explain_shown_once: bool,
     /// This frame's panels, for "What am I looking at?".
     screen_parts: Vec<first_visit::Part>,
+    /// Where the parts were drawn in the last frame, for `state().layout`.
+    layout: crate::state::LayoutState,
     /// What the screen readers' copy was last built for.
     reader_copy: readers::ReaderCopy,
     embed_observed: embed_events::Observed,
@@ -169,6 +171,7 @@ impl EdgewiseApp {
             explaining: false,
             explain_shown_once: false,
             screen_parts: Vec::new(),
+            layout: crate::state::LayoutState::default(),
             reader_copy: readers::ReaderCopy::default(),
             embed_observed: embed_events::Observed::default(),
             chrome_height: 0.0,
@@ -520,6 +523,7 @@ impl EdgewiseApp {
             side_by_side: self.side_by_side,
             twin_selection: self.twin_selection(),
             embed: self.embed.is_some(),
+            layout: self.layout.clone(),
             diagnostics: self.tab().obj_editor.diagnostics.clone(),
             dialog: self
                 .structure_dialog()
@@ -1017,6 +1021,9 @@ impl EdgewiseApp {
     /// The full layout: menus, panels, tables and the view.
     fn whole_ui(&mut self, ui: &mut egui::Ui) {
         let presenting = self.presentation;
+        // Panels are bounded by the window, so no content (a long value, a
+        // wide table) can squeeze the 3D view away.
+        let window = ui.max_rect();
         let mut chrome = 0.0;
         let mut parts = Vec::new();
         let mut part = |rect: egui::Rect, (title, text): (&'static str, &'static str)| {
@@ -1053,7 +1060,7 @@ impl EdgewiseApp {
             let rect = egui::Panel::right("algorithm")
                 .resizable(true)
                 .default_size(480.0)
-                .min_size(300.0)
+                .size_range(side_panel_range(window.width(), 300.0))
                 .show(ui, |ui| {
                     self.cached_part_ui(ui, "algorithm panel", Self::algorithm_panel_ui);
                 })
@@ -1061,20 +1068,28 @@ impl EdgewiseApp {
                 .rect;
             part(rect, first_visit::ALGORITHM);
         }
+        let mut layout = crate::state::LayoutState {
+            window: window.into(),
+            ..Default::default()
+        };
         if self.show_obj_editor && presenting.is_none() {
-            egui::Panel::right("obj_editor")
+            let editor = egui::Panel::right("obj_editor")
                 .resizable(true)
                 .default_size(320.0)
+                .size_range(side_panel_range(window.width(), 200.0))
                 .show(ui, |ui| {
                     self.cached_part_ui(ui, "OBJ editor", Self::obj_editor_ui);
                 });
+            layout
+                .panels
+                .insert("objEditor", editor.response.rect.into());
         }
         if presenting.is_none_or(|p| p.tables) {
             chrome += part(
                 egui::Panel::bottom("tables")
                     .resizable(true)
                     .default_size(260.0)
-                    .min_size(120.0)
+                    .size_range(120.0_f32.min(window.height() * 0.2)..=window.height() * 0.4)
                     .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                     .response
                     .rect,
@@ -1096,6 +1111,19 @@ impl EdgewiseApp {
             }
         });
         part(central.response.rect, first_visit::VIEW);
+        for part in &parts {
+            let name = match part.title {
+                title if title == first_visit::TOP_BAR.0 => "topBar",
+                title if title == first_visit::ALGORITHM.0 => "algorithm",
+                title if title == first_visit::TABLES.0 => "tables",
+                _ => {
+                    layout.view = Some(part.rect.into());
+                    continue;
+                }
+            };
+            layout.panels.insert(name, part.rect.into());
+        }
+        self.layout = layout;
         self.screen_parts = parts;
         self.tour_progress(false);
         self.tour_ui(ui.ctx());
@@ -1103,6 +1131,13 @@ impl EdgewiseApp {
         self.files_overlay_ui(ui.ctx());
         self.pending_ui(ui.ctx());
     }
+}
+
+/// The widths a side panel may take in a window `window_width` wide: at
+/// most half of it, and `least` when the window has room.
+fn side_panel_range(window_width: f32, least: f32) -> egui::Rangef {
+    let most = window_width * 0.5;
+    egui::Rangef::new(least.min(most), most)
 }
 
 /// Per-element styles for `mesh` from a paint: an entry for each painted or

@@ -110,6 +110,45 @@ pub struct AppState {
     pub diagnostics: Vec<Diagnostic>,
     /// The dialog waiting for an answer, or null.
     pub dialog: Option<DialogState>,
+    /// Where the window's parts are, as of the last frame drawn.
+    pub layout: LayoutState,
+}
+
+/// A rectangle in CSS pixels of the page.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct RectState {
+    pub x: f32,
+    pub y: f32,
+    pub w: f32,
+    pub h: f32,
+}
+
+impl From<egui::Rect> for RectState {
+    fn from(rect: egui::Rect) -> Self {
+        Self {
+            x: rect.min.x,
+            y: rect.min.y,
+            w: rect.width(),
+            h: rect.height(),
+        }
+    }
+}
+
+impl RectState {
+    pub fn area(&self) -> f32 {
+        self.w * self.h
+    }
+}
+
+/// What is where: `{window, view, panels: {topBar, algorithm, objEditor,
+/// tables}}`, with only the panels on screen. Tests and embedding pages
+/// check with it that no panel squeezes the 3D view away.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct LayoutState {
+    pub window: RectState,
+    /// The 3D view (both views, side by side), or null before a frame.
+    pub view: Option<RectState>,
+    pub panels: BTreeMap<&'static str, RectState>,
 }
 
 /// A broken record: the row, the column (as the language names it) and

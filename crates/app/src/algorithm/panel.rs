@@ -501,7 +501,10 @@ fn variables_ui(ui: &mut egui::Ui, frame: &TraceFrame, theme: &Theme) {
                         theme.trace_colour(TraceRole::Variable).gamma_multiply(0.3),
                     );
                 }
-                ui.label(text);
+                // A long value (an array of vectors) is cut with "…" at the
+                // panel's edge, never widening it; hovering shows it whole.
+                ui.add(egui::Label::new(text).truncate())
+                    .on_hover_text(RichText::new(&variable.value).monospace());
                 ui.end_row();
             }
         });

@@ -1,0 +1,63 @@
+//! The layout holds whatever the panels show: a long value in the
+//! algorithm panel (loopSubdivide's `points`, an array of vectors) is cut at
+//! the panel's edge, the panel takes at most half the window, and the 3D
+//! view keeps its room, at the last step, after going back and in the next
+//! run.
+
+mod support;
+
+use edgewise_app::Argument;
+use edgewise_app::state::LayoutState;
+use edgewise_core::mesh::Structure;
+
+fn layout(harness: &support::AppHarness) -> LayoutState {
+    harness.state().state().layout
+}
+
+/// The algorithm panel is at most half the window, and the view at least a
+/// third of its width and of its height.
+fn assert_bounded(layout: &LayoutState, when: &str) {
+    let window = layout.window;
+    let panel = layout
+        .panels
+        .get("algorithm")
+        .expect("the algorithm panel shows");
+    assert!(panel.w <= window.w * 0.5 + 1.0, "{when}: {layout:?}");
+    let view = layout.view.expect("the view shows");
+    assert!(view.w >= window.w / 3.0, "{when}: {layout:?}");
+    assert!(view.h >= window.h / 3.0, "{when}: {layout:?}");
+}
+
+#[test]
+fn a_long_value_never_squeezes_the_view() {
+    let mut harness = support::harness_sized(1280.0, 800.0);
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", Some(Structure::HalfEdge))
+        .expect("opens");
+    harness.run();
+    let before = layout(&harness);
+    assert_eq!((before.window.w, before.window.h), (1280.0, 800.0));
+    let run = |harness: &mut support::AppHarness| {
+        harness
+            .state_mut()
+            .run_algorithm("loopSubdivide", &[("f".to_owned(), Argument::Number(0.0))])
+            .expect("starts");
+        harness.run();
+    };
+    run(&mut harness);
+    assert_bounded(&layout(&harness), "at the first step");
+    harness.state_mut().trace_goto(usize::MAX).expect("goto");
+    harness.run();
+    let trace = harness.state().state().trace.expect("tracing");
+    let points = trace.variables.get("points").expect("points");
+    assert!(points.len() > 100, "a long value: {points}");
+    assert_bounded(&layout(&harness), "at the last step");
+    harness.state_mut().trace_goto(0).expect("goto");
+    harness.run();
+    assert_bounded(&layout(&harness), "back at step 0");
+    harness.state_mut().abort_algorithm().expect("abort");
+    harness.run();
+    run(&mut harness);
+    assert_bounded(&layout(&harness), "in the next run");
+}
