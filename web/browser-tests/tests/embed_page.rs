@@ -131,3 +131,76 @@ async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// A view in a page never takes the keyboard on its own: the page keeps its
+/// arrow keys until the reader clicks the view; then → steps the view, and
+/// Escape hands the keys back to the page.
+#[tokio::test]
+async fn an_embedded_view_takes_the_keys_only_when_asked() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.goto("examples/embed.html").await?;
+    browser
+        .eval("document.getElementById('winged').scrollIntoView({block: 'center'}); return null;")
+        .await?;
+    let view = "document.getElementById('winged').contentWindow.edgewise";
+    browser
+        .wait_for(
+            &format!("{view} && {view}.state().frames >= 3 && {view}.state().trace?.step === 3"),
+            START_TIMEOUT,
+        )
+        .await?;
+    let active = "return document.activeElement.tagName + (document.activeElement.id ? '#' + document.activeElement.id : '');";
+    assert_eq!(
+        browser.eval(active).await?,
+        "BODY",
+        "the view took the focus"
+    );
+    let step = || async {
+        browser
+            .eval(&format!("return {view}.state().trace.step;"))
+            .await
+    };
+    browser.press_key("ArrowRight", 0).await?;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    assert_eq!(step().await?, 3, "the page's → reached the view");
+
+    // A click on the view gives it the keys, and shows a ring.
+    let centre = browser
+        .eval(
+            "const r = document.getElementById('winged').getBoundingClientRect(); \
+             return [r.left + r.width / 2, r.top + r.height / 2];",
+        )
+        .await?;
+    let (x, y) = (
+        centre[0].as_f64().unwrap_or_default(),
+        centre[1].as_f64().unwrap_or_default(),
+    );
+    // An empty corner of the view: a click there selects nothing.
+    browser.click_at(x, y - 100.0, "left").await?;
+    assert_eq!(browser.eval(active).await?, "IFRAME#winged");
+    let ring = browser
+        .eval(
+            "return getComputedStyle(document.getElementById('winged').contentDocument\
+             .getElementById('edgewise_keys')).display;",
+        )
+        .await?;
+    assert_eq!(ring, "block", "no ring shows that the view has the keys");
+    browser.press_key("ArrowRight", 0).await?;
+    browser
+        .wait_for(
+            &format!("{view}.state().trace.step === 4"),
+            Duration::from_secs(10),
+        )
+        .await?;
+    let shot = browser.screenshot("embed-page-keys").await?;
+    assert!(!shot.is_blank());
+
+    // Escape hands the keys back to the page.
+    browser.press_key("Escape", 0).await?;
+    assert_eq!(browser.eval(active).await?, "BODY", "Escape kept the keys");
+    browser.press_key("ArrowRight", 0).await?;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    assert_eq!(step().await?, 4, "→ still reached the view after Escape");
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
