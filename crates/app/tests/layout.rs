@@ -61,3 +61,47 @@ fn a_long_value_never_squeezes_the_view() {
     run(&mut harness);
     assert_bounded(&layout(&harness), "in the next run");
 }
+
+/// The Algorithm menu is longer than a 600 px window: it ends inside the
+/// window and scrolls to its last entry.
+#[test]
+fn the_algorithm_menu_scrolls_in_a_short_window() {
+    use egui_kittest::kittest::Queryable as _;
+    let mut harness = support::harness_sized(1280.0, 600.0);
+    harness
+        .state_mut()
+        .load_sample("cube", Some(Structure::HalfEdge))
+        .expect("opens");
+    harness.run();
+    harness.get_by_label("Algorithm").click();
+    harness.run();
+    let bottom = |harness: &support::AppHarness, label: &str| {
+        harness
+            .get_all_by_label(label)
+            .last()
+            .map(|node| node.rect().bottom())
+            .unwrap_or_else(|| panic!("no {label} in the menu"))
+    };
+    assert!(bottom(&harness, "Write or open an algorithm…") <= 600.0);
+    assert!(
+        bottom(&harness, "boundaryLoop") > 600.0,
+        "the menu fits the window: nothing to scroll"
+    );
+    if let Some(first) = harness.get_all_by_label("vertexAdjacentEdge").next() {
+        first.hover();
+    }
+    for _ in 0..20 {
+        harness.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: egui::vec2(0.0, -400.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Unknown,
+            modifiers: egui::Modifiers::NONE,
+        });
+        harness.run();
+    }
+    assert!(
+        bottom(&harness, "boundaryLoop") <= 600.0,
+        "the last entry cannot be scrolled into view"
+    );
+}

@@ -248,32 +248,14 @@ impl EdgewiseApp {
                 ui.weak("Open a mesh to run algorithms on it.");
                 return;
             };
-            for (label, ours) in [(structure.prose(), true), (other(structure).prose(), false)] {
-                ui.label(egui::RichText::new(format!("For {label} meshes")).strong());
-                // Helpers, which the others call, are left to the panel.
-                for entry in self.algorithms.library.entries() {
-                    let algorithm = &entry.algorithm;
-                    if (algorithm.structure == structure) != ours || algorithm.is_helper() {
-                        continue;
-                    }
-                    let button = ui.add_enabled(
-                        ours,
-                        egui::Button::new(egui::RichText::new(&algorithm.name).monospace()),
-                    );
-                    let button = if ours {
-                        button.on_hover_text(algorithm.signature())
-                    } else {
-                        button.on_disabled_hover_text(format!(
-                            "Written for {} meshes: switch the structure in the top bar to run it",
-                            algorithm.structure.prose()
-                        ))
-                    };
-                    if button.clicked() {
-                        chosen = Some(algorithm.name.clone());
-                    }
-                }
-                ui.separator();
-            }
+            // A library longer than the window scrolls (by wheel, drag or
+            // Tab, which scrolls the focused entry into view).
+            let room = ui.ctx().content_rect().bottom() - ui.max_rect().top() - 48.0;
+            egui::ScrollArea::vertical()
+                .max_height(room.max(120.0))
+                .show(ui, |ui| {
+                    self.algorithm_entries_ui(ui, structure, &mut chosen)
+                });
             if ui.button("Write or open an algorithm…").clicked() {
                 write = true;
             }
@@ -287,6 +269,45 @@ impl EdgewiseApp {
         if write {
             self.show_algorithm_panel = true;
             self.algorithm_tab = AlgorithmTab::Write;
+        }
+    }
+
+    /// The Algorithm menu's entries: the library for `structure`, then the
+    /// other structure's algorithms greyed with a hint.
+    fn algorithm_entries_ui(
+        &self,
+        ui: &mut egui::Ui,
+        structure: Structure,
+        chosen: &mut Option<String>,
+    ) {
+        for (label, ours) in [(structure.prose(), true), (other(structure).prose(), false)] {
+            ui.label(egui::RichText::new(format!("For {label} meshes")).strong());
+            // Helpers, which the others call, are left to the panel.
+            for entry in self.algorithms.library.entries() {
+                let algorithm = &entry.algorithm;
+                if (algorithm.structure == structure) != ours || algorithm.is_helper() {
+                    continue;
+                }
+                let button = ui.add_enabled(
+                    ours,
+                    egui::Button::new(egui::RichText::new(&algorithm.name).monospace()),
+                );
+                let button = if ours {
+                    button.on_hover_text(algorithm.signature())
+                } else {
+                    button.on_disabled_hover_text(format!(
+                        "Written for {} meshes: switch the structure in the top bar to run it",
+                        algorithm.structure.prose()
+                    ))
+                };
+                if button.has_focus() {
+                    button.scroll_to_me(None);
+                }
+                if button.clicked() {
+                    *chosen = Some(algorithm.name.clone());
+                }
+            }
+            ui.separator();
         }
     }
 
