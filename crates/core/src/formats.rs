@@ -204,8 +204,10 @@ pub fn load_as(bytes: &[u8], format: Format, structure: Structure) -> Result<Loa
         Format::Ply => ply::read(bytes)?,
         Format::Obj => obj::read(bytes)?,
     };
-    let (mesh, build_warnings) =
-        Mesh::build(&polygons, structure).map_err(|error| FormatError::from_build(&error))?;
+    // OBJ numbers vertices from 1, PLY from 0: messages follow the file.
+    let first_vertex = u32::from(format == Format::Obj);
+    let (mesh, build_warnings) = Mesh::build(&polygons, structure)
+        .map_err(|error| FormatError::from_build(&error, first_vertex))?;
     warnings.extend(build_warnings.iter().map(|warning| {
         // Vertex lines are only looked up here, for the rare warning.
         let line = match format {

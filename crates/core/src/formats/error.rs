@@ -173,8 +173,9 @@ impl FormatError {
     }
 
     /// A builder refusal, placed at the source line of the face that shows
-    /// the problem (the later face when two are involved).
-    pub(crate) fn from_build(error: &BuildError) -> Self {
+    /// the problem (the later face when two are involved), its vertices
+    /// numbered from `first_vertex` as the file numbers them.
+    pub(crate) fn from_build(error: &BuildError, first_vertex: u32) -> Self {
         let face: Option<FaceRef> = match error {
             BuildError::TooFewVertices { face, .. }
             | BuildError::RepeatedVertex { face, .. }
@@ -187,7 +188,7 @@ impl FormatError {
         let location = face
             .and_then(|face| face.line)
             .map_or(Location::File, Location::line);
-        Self::new(location, error.to_string())
+        Self::new(location, error.numbered_from(first_vertex).to_string())
     }
 }
 

@@ -96,14 +96,29 @@ pub enum BuildError {
 
 impl fmt::Display for BuildError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.write_numbered(f, 0)
+    }
+}
+
+impl BuildError {
+    /// The message with vertices numbered from `first`, as the input
+    /// numbers them: OBJ from 1, so that `f 6 7 3 2` is about vertices 6
+    /// and 7, not the tables' ids 5 and 6.
+    pub fn numbered_from(&self, first: u32) -> impl fmt::Display + '_ {
+        Numbered(move |f: &mut fmt::Formatter<'_>| self.write_numbered(f, first))
+    }
+
+    fn write_numbered(&self, f: &mut fmt::Formatter<'_>, base: u32) -> fmt::Result {
+        let vertex = |v: &VertexId| InputVertex(*v, base);
         match self {
             Self::TooFewVertices { face, count } => {
                 write!(f, "{face} has {count} vertices; a face needs at least 3")
             }
-            Self::RepeatedVertex { face, vertex } => {
+            Self::RepeatedVertex { face, vertex: v } => {
                 write!(
                     f,
-                    "{face} lists {vertex} more than once; a face needs distinct vertices"
+                    "{face} lists {} more than once; a face needs distinct vertices",
+                    vertex(v)
                 )
             }
             Self::IndexOutOfRange {
@@ -128,7 +143,9 @@ impl fmt::Display for BuildError {
             Self::NonManifoldEdge { start, end, faces } => {
                 write!(
                     f,
-                    "the edge between {start} and {end} is used by {} faces (",
+                    "the edge between {} and {} is used by {} faces (",
+                    vertex(start),
+                    vertex(end),
                     faces.len()
                 )?;
                 for (i, face) in faces.iter().enumerate() {
@@ -146,17 +163,20 @@ impl fmt::Display for BuildError {
                 second,
             } => write!(
                 f,
-                "{first} and {second} both go from {start} to {end}; faces sharing an edge must \
-                 traverse it in opposite directions (inconsistent orientation: reverse one of them)"
+                "{first} and {second} both go from {} to {}; faces sharing an edge must \
+                 traverse it in opposite directions (inconsistent orientation: reverse one of them)",
+                vertex(start),
+                vertex(end)
             ),
             Self::NonManifoldVertex {
-                vertex,
-                first,
+                vertex: v,
+                first: one,
                 second,
             } => write!(
                 f,
-                "{vertex} joins separate fans of faces ({first} and {second} are not connected \
-                 around it); the faces around a vertex must form one fan (non-manifold vertex)"
+                "{} joins separate fans of faces ({one} and {second} are not connected \
+                 around it); the faces around a vertex must form one fan (non-manifold vertex)",
+                vertex(v)
             ),
             Self::TooLarge {
                 element,
@@ -173,6 +193,27 @@ impl fmt::Display for BuildError {
 }
 
 impl std::error::Error for BuildError {}
+
+/// A vertex as its input numbers it: the id plus the input's first number.
+struct InputVertex(VertexId, u32);
+
+impl fmt::Display for InputVertex {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.1 == 0 || self.0.is_unset() {
+            return self.0.fmt(f);
+        }
+        write!(f, "vertex {}", u64::from(self.0.raw()) + u64::from(self.1))
+    }
+}
+
+/// A message written by a closure (a message in the input's numbering).
+struct Numbered<F>(F);
+
+impl<F: Fn(&mut fmt::Formatter<'_>) -> fmt::Result> fmt::Display for Numbered<F> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        (self.0)(f)
+    }
+}
 
 /// Something a build noticed but kept.
 #[derive(Clone, Debug, PartialEq, Eq)]
