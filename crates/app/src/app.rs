@@ -371,13 +371,15 @@ impl EdgewiseApp {
     fn obj_editor_ui(&mut self, ui: &mut egui::Ui) {
         ui.strong("OBJ");
         ui.weak("Edit the text: the mesh and its tables follow.");
-        if let Some(text) = self.tab_mut().obj_editor.ui(ui) {
+        if let Some(edited) = self.tab_mut().obj_editor.ui(ui) {
+            let text = edited.text;
             let loaded = Document::parse(text.as_bytes(), EDITOR_FILE, self.tab_mut().structure);
             self.tab_mut().obj_editor.set_error(loaded.as_ref().err());
-            let first = self.tab().document.is_none();
+            // Typing keeps the student's view; a pasted mesh is framed.
+            let frame = self.tab().document.is_none() || edited.pasted;
             let loaded = loaded.map_err(|err| err.render(EDITOR_FILE).trim_end().to_owned());
             // The editor marks its own problems; the view keeps the last good mesh.
-            let _marked_in_the_editor = self.open(loaded, first, true);
+            let _marked_in_the_editor = self.open(loaded, frame, true);
         }
     }
 

@@ -9,8 +9,20 @@ use edgewise_core::formats::{FormatError, Location};
 
 use crate::code_editor::{CodeEditor, Diagnostic};
 
-/// How long typing must pause before the text is rebuilt.
+/// How long typing must pause before the text is rebuilt, once a line is
+/// ended (Enter) or after a paste.
 const DEBOUNCE: Duration = Duration::from_millis(350);
+
+/// How long typing within a line must pause: `f 1 2 3` on the way to
+/// `f 1 2 3 4` is a valid triangle, and must not replace the last good mesh
+/// while the student is still typing the line.
+const LINE_PAUSE: Duration = Duration::from_millis(900);
+
+/// Text to build, and whether a paste made it (a new mesh, to be framed).
+pub struct Edited {
+    pub text: String,
+    pub pasted: bool,
+}
 
 /// The most text the editor holds: it lays out and rebuilds its whole text,
 /// so larger meshes are opened as files instead.
@@ -23,8 +35,10 @@ pub const EDITOR_FILE: &str = "editor.obj";
 #[derive(Default)]
 pub struct ObjEditor {
     pub text: String,
-    /// Seconds (egui time) of the last unbuilt edit.
-    pending_since: Option<f64>,
+    /// Seconds (egui time) of the last unbuilt edit, and how long it waits.
+    pending_since: Option<(f64, Duration)>,
+    /// Whether a paste is among the unbuilt edits.
+    pasted: bool,
     /// The problems of the last failed build that have a line.
     pub diagnostics: Vec<Diagnostic>,
     /// Problems of the last failed build without a line (the mesh as a whole).
@@ -64,8 +78,17 @@ impl ObjEditor {
     }
 
     /// Draws the editor. Returns the text to build once typing has paused.
-    pub fn ui(&mut self, ui: &mut egui::Ui) -> Option<String> {
+    pub fn ui(&mut self, ui: &mut egui::Ui) -> Option<Edited> {
         let now = ui.input(|i| i.time);
+        let (pasted, line_ended) = ui.input(|i| {
+            let pasted = i.events.iter().any(|e| matches!(e, egui::Event::Paste(_)));
+            let ended = i.events.iter().any(|e| match e {
+                egui::Event::Text(text) => text.contains('\n'),
+                egui::Event::Key { key, pressed, .. } => *pressed && *key == egui::Key::Enter,
+                _ => false,
+            });
+            (pasted, ended)
+        });
         for problem in &self.file_problems {
             ui.colored_label(ui.visuals().error_fg_color, problem);
         }
@@ -84,17 +107,26 @@ impl ObjEditor {
             self.refused = Some(format!("{refused}; open larger meshes with Open mesh…"));
         }
         if output.response.changed() {
-            self.pending_since = Some(now);
+            let pause = if pasted || line_ended {
+                DEBOUNCE
+            } else {
+                LINE_PAUSE
+            };
+            self.pending_since = Some((now, pause));
+            self.pasted |= pasted;
             self.refused = None;
         }
-        let since = self.pending_since?;
-        let wait = DEBOUNCE.as_secs_f64() - (now - since);
+        let (since, pause) = self.pending_since?;
+        let wait = pause.as_secs_f64() - (now - since);
         if wait > 0.0 {
             ui.ctx()
                 .request_repaint_after(Duration::from_secs_f64(wait));
             return None;
         }
         self.pending_since = None;
-        Some(self.text.clone())
+        Some(Edited {
+            text: self.text.clone(),
+            pasted: std::mem::take(&mut self.pasted),
+        })
     }
 }

@@ -204,3 +204,42 @@ fn a_broken_edit_is_marked_at_its_line_and_the_mesh_stays() {
     let state = harness.state().state();
     assert!(state.diagnostics.is_empty(), "{:?}", state.diagnostics);
 }
+
+/// A line still being typed waits for a longer pause before it replaces
+/// the last good mesh (`f 1 2 3` on the way to `f 1 2 3 4` is a valid
+/// triangle); Enter builds at once. A pasted mesh is framed by the camera.
+#[test]
+fn a_half_typed_line_waits_and_a_paste_is_framed() {
+    let mut harness = harness();
+    support::type_in_obj_editor(
+        &mut harness,
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 4\n",
+    );
+    assert_eq!(harness.state().state().counts.faces, 1);
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.type_text("f 2 3 4");
+    // The harness's frames are a quarter of a second apart.
+    harness.run_steps(2);
+    assert_eq!(
+        harness.state().state().counts.faces,
+        1,
+        "half a second into typing a line, the mesh changed"
+    );
+    harness.run_steps(4);
+    assert_eq!(harness.state().state().counts.faces, 2, "a pause builds it");
+
+    // A paste of a mesh far away: the camera frames it.
+    let far = "v 100 100 100\nv 101 100 100\nv 100 101 100\nf 1 2 3\n";
+    let editor = harness.get_by_role(egui::accesskit::Role::MultilineTextInput);
+    editor.focus();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.event(egui::Event::Paste(far.to_owned()));
+    harness.run_steps(40);
+    let state = harness.state().state();
+    assert_eq!(state.counts.vertices, 3, "the paste replaced the text");
+    let camera = harness.state().course_link().camera.expect("a camera");
+    assert!(
+        camera.target.iter().all(|&c| (99.0..=102.0).contains(&c)),
+        "the camera did not frame the pasted mesh: {camera:?}"
+    );
+}
