@@ -1194,6 +1194,39 @@ impl EdgewiseApp {
     }
 }
 
+/// Every key the app answers, as Help lists it.
+pub const HELP_KEYS: [(&str, &str); 14] = [
+    (
+        "/",
+        "go to an element: type e 3, vertex 1 or f2, then Enter",
+    ),
+    ("↑  ↓", "the row above or below in the selection's table"),
+    (
+        "n  p  t  f  v",
+        "half-edge walking: successor, predecessor, pair, face, end vertex",
+    ),
+    (
+        "Tab  Enter",
+        "move through the tables; follow the reference in a cell",
+    ),
+    ("E", "the edit menu of the selected element"),
+    ("Ctrl+Z  Ctrl+Y", "undo and redo (Ctrl+Shift+Z redoes too)"),
+    ("Space  →", "step the algorithm forward"),
+    ("←", "step back"),
+    ("O  U", "step over a call; step out of the current call"),
+    ("Home  End", "the first and the last step"),
+    ("P", "play or pause"),
+    (
+        "Shift+arrows  +  −  Shift+Home",
+        "turn, zoom and frame the camera",
+    ),
+    (
+        "Esc",
+        "close a menu; leave the presentation; in a page, give the keys back",
+    ),
+    ("double-click", "frame the mesh"),
+];
+
 fn help_text_ui(ui: &mut egui::Ui) {
     {
         ui.set_max_width(420.0);
@@ -1206,18 +1239,7 @@ fn help_text_ui(ui: &mut egui::Ui) {
         ui.separator();
         ui.strong("Keys");
         egui::Grid::new("help_keys").num_columns(2).show(ui, |ui| {
-            for (keys, what) in [
-                (
-                    "n  p  t  f  v",
-                    "half-edge walking: successor, predecessor, pair, face, end vertex",
-                ),
-                ("Space  →", "step the algorithm forward"),
-                ("←", "step back"),
-                ("Home  End", "the first and the last step"),
-                ("P", "play or pause"),
-                ("Esc", "leave the presentation"),
-                ("double-click", "frame the mesh"),
-            ] {
+            for (keys, what) in HELP_KEYS {
                 ui.monospace(keys);
                 ui.label(what);
                 ui.end_row();

@@ -278,3 +278,15 @@ fn tab_reaches_the_tables_and_enter_follows_a_reference() {
         "Enter on a cell selects its row or follows its reference: {selection:?}"
     );
 }
+
+/// Help lists the keys the app answers, the go-to box, the edit menu,
+/// stepping over and out, and undo among them.
+#[test]
+fn help_lists_every_key() {
+    let mut harness = support::harness_with("tetrahedron", None);
+    harness.get_by_label("Help").click();
+    harness.run();
+    for keys in ["/", "E", "O  U", "Ctrl+Z  Ctrl+Y", "↑  ↓", "Space  →", "P"] {
+        harness.get_by_label(keys);
+    }
+}
