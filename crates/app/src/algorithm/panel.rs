@@ -16,6 +16,7 @@ use egui::{Align, Color32, RichText, Sense, vec2};
 use super::{
     AlgorithmRun, Algorithms, Run, TraceFrame,
     highlight::{CodeStyle, Mark},
+    quiz::Shown,
 };
 use crate::{command::Command, theme::Theme};
 
@@ -97,7 +98,11 @@ impl Algorithms {
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
         header_ui(ui, &algorithm);
         let control = self.controls_ui(run, ui, step, steps, playing);
-        let answered = question_ui(run, ui, theme);
+        let everything = Shown {
+            code: true,
+            tables: true,
+        };
+        let answered = question_ui(run, ui, theme, everything);
         let control = control.or(answered);
         let breakpoints = self.breakpoints(run.algorithm());
         let Some(frame) = run.frame(theme).cloned() else {
@@ -117,17 +122,23 @@ impl Algorithms {
     }
 
     /// The step buttons, the step slider and the delay, and the question
-    /// asked at the step, for embedded views.
+    /// asked at the step, for embedded views (which show no code, and the
+    /// tables only if asked).
     pub fn trace_controls_ui(
         &mut self,
         run: &mut AlgorithmRun,
         ui: &mut egui::Ui,
         theme: &Theme,
+        tables: bool,
     ) -> Option<Command> {
         let session = run.session()?;
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
         let control = self.controls_ui(run, ui, step, steps, playing);
-        control.or(question_ui(run, ui, theme))
+        let shows = Shown {
+            code: false,
+            tables,
+        };
+        control.or(question_ui(run, ui, theme, shows))
     }
 
     fn controls_ui(
@@ -424,13 +435,18 @@ fn algorithm_hover(algorithm: &Algorithm) -> String {
 }
 
 /// The card of the question asked at the current step, if any.
-fn question_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui, theme: &Theme) -> Option<Command> {
+fn question_ui(
+    run: &mut AlgorithmRun,
+    ui: &mut egui::Ui,
+    theme: &Theme,
+    shows: Shown,
+) -> Option<Command> {
     let Run::Tracing(session) = &mut run.run else {
         return None;
     };
     let step = session.step();
     let quiz = session.quiz.as_mut()?;
-    quiz.question_ui(ui, &session.trace, step, theme)
+    quiz.question_ui(ui, &session.trace, step, theme, shows)
 }
 
 /// The message line's sentence, and the output once done, or the error.

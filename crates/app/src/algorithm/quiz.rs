@@ -166,13 +166,15 @@ impl Quiz {
     }
 
     /// The question card for `step`: the prompt, the ways to answer, then
-    /// the verdict and the steps that explain it.
+    /// the verdict and the steps that explain it. It names only the parts
+    /// the window `shows` (an embed may have no code and no tables).
     pub fn question_ui(
         &mut self,
         ui: &mut egui::Ui,
         trace: &Trace,
         step: usize,
         theme: &Theme,
+        shows: Shown,
     ) -> Option<Command> {
         let (answered_count, right) = self.score();
         let total = self.len();
@@ -188,19 +190,20 @@ impl Quiz {
             .corner_radius(4.0)
             .show(ui, |ui| {
                 ui.set_width(ui.available_width());
-                ui.label(
-                    RichText::new(format!(
+                let heading = if shows.code {
+                    format!(
                         "Question {} of {total} (line {})",
                         index + 1,
                         posed.line(trace)
-                    ))
-                    .small()
-                    .strong(),
-                );
+                    )
+                } else {
+                    format!("Question {} of {total}", index + 1)
+                };
+                ui.label(RichText::new(heading).small().strong());
                 ui.label(RichText::new(&posed.question.prompt).strong());
                 match answered {
                     None => {
-                        command = answer_buttons_ui(ui, expects, &mut self.number_text);
+                        command = answer_buttons_ui(ui, expects, &mut self.number_text, shows);
                         if ui
                             .small_button("Skip")
                             .on_hover_text("Show the next step without answering")
@@ -239,6 +242,15 @@ impl Quiz {
     }
 }
 
+/// What the window around a question card shows besides the view.
+#[derive(Clone, Copy, Debug)]
+pub struct Shown {
+    /// The algorithm's code, so a line number means something.
+    pub code: bool,
+    /// The tables, where an element can be clicked too.
+    pub tables: bool,
+}
+
 /// Why `given` cannot answer a question that `expects` another kind.
 fn wrong_kind(expects: Expects, given: Value) -> Option<String> {
     let fits = match expects {
@@ -260,11 +272,20 @@ fn wrong_kind(expects: Expects, given: Value) -> Option<String> {
 }
 
 /// The buttons or field for an unanswered question.
-fn answer_buttons_ui(ui: &mut egui::Ui, expects: Expects, number: &mut String) -> Option<Command> {
+fn answer_buttons_ui(
+    ui: &mut egui::Ui,
+    expects: Expects,
+    number: &mut String,
+    shows: Shown,
+) -> Option<Command> {
     let mut command = None;
     ui.horizontal_wrapped(|ui| match expects {
         Expects::Element => {
-            ui.label("Click the element in the view or the tables, or");
+            ui.label(if shows.tables {
+                "Click the element in the view or the tables, or"
+            } else {
+                "Click the element in the view, or"
+            });
             if ui.button("null").clicked() {
                 command = Some(Command::Answer(Value::Null));
             }

@@ -36,6 +36,7 @@ impl EdgewiseApp {
                         &mut self.tabs[self.active_tab].run,
                         ui,
                         &self.theme,
+                        embed.tables,
                     );
                     if let Some(command) = asked {
                         self.issue(command);
