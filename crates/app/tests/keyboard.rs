@@ -4,7 +4,6 @@
 
 mod support;
 
-use edgewise_app::command::Command;
 use edgewise_core::mesh::{Structure, operations::Operation};
 use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
 use egui_kittest::kittest::Queryable as _;
@@ -66,13 +65,11 @@ fn a_typed_element_is_selected_picked_and_answers() {
     );
 
     // A question waiting for an element takes it as the answer.
-    harness
-        .state_mut()
-        .execute(Command::SetQuestions(
-            "line 13: Which edge will e be?\n".to_owned(),
-        ))
-        .expect("asks");
-    harness.run();
+    support::ask(
+        &mut harness,
+        "line 13: Which edge will e be?
+",
+    );
     type_element(&mut harness, "e1");
     let answer = harness
         .state()

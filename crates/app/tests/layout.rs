@@ -110,7 +110,6 @@ fn the_algorithm_menu_scrolls_in_a_short_window() {
 /// terms: no source line, and "click the element in the view".
 #[test]
 fn an_embed_asks_only_about_what_it_shows() {
-    use edgewise_app::command::Command;
     use egui_kittest::kittest::Queryable as _;
     for tables in [false, true] {
         let mut harness = support::harness_with("tetrahedron", None);
@@ -118,13 +117,11 @@ fn an_embed_asks_only_about_what_it_shows() {
             .state_mut()
             .set_embed(Some(edgewise_app::Embed { tables }));
         support::run_vertex_adjacent_edge(&mut harness, 1);
-        harness
-            .state_mut()
-            .execute(Command::SetQuestions(
-                "line 13: Which edge will e be?\n".to_owned(),
-            ))
-            .expect("asks");
-        harness.run();
+        support::ask(
+            &mut harness,
+            "line 13: Which edge will e be?
+",
+        );
         harness.get_by_label("Question 1 of 1");
         let click = if tables {
             "Click the element in the view or the tables, or"

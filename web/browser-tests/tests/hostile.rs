@@ -209,11 +209,7 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
 /// goes on.
 #[tokio::test]
 async fn exotic_arguments_give_rejected_promises() -> anyhow::Result<()> {
-    let browser = Browser::launch().await?;
-    browser.open("").await?;
-    browser
-        .eval_async("window.edgewise.loadSample('cube')")
-        .await?;
+    let browser = Browser::launch_on_sample("cube").await?;
     // Each call runs inside the page; `outcome` tells a synchronous throw
     // from a rejection.
     browser

@@ -18,7 +18,26 @@ async fn launch_through(proxy: &Proxy) -> anyhow::Result<Browser> {
     .await
 }
 
-/// The build the page's worker caches, from its shell cache's name.
+/// A proxy of its own, a browser through it, the app open and its worker
+/// active.
+async fn start_with_worker() -> anyhow::Result<(Proxy, Browser)> {
+    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
+    let browser = launch_through(&proxy).await?;
+    browser.open("").await?;
+    wait_for_active_worker(&browser).await?;
+    Ok((proxy, browser))
+}
+
+/// The one build the worker caches.
+async fn the_build(browser: &Browser) -> anyhow::Result<String> {
+    let builds = cached_builds(browser).await?;
+    match builds.as_slice() {
+        [build] => Ok(build.clone()),
+        _ => anyhow::bail!("one shell cache expected: {builds:?}"),
+    }
+}
+
+/// The builds the page's worker caches, from its shell caches' names.
 async fn cached_builds(browser: &Browser) -> anyhow::Result<Vec<String>> {
     let caches = browser.eval_async("caches.keys()").await?;
     Ok(caches
@@ -74,10 +93,7 @@ async fn wait_for_active_worker(browser: &Browser) -> anyhow::Result<()> {
 
 #[tokio::test]
 async fn the_worker_controls_the_page_after_a_reload() -> anyhow::Result<()> {
-    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
-    let browser = launch_through(&proxy).await?;
-    browser.open("").await?;
-    wait_for_active_worker(&browser).await?;
+    let (proxy, browser) = start_with_worker().await?;
 
     browser.open("").await?;
     let worker = browser
@@ -135,10 +151,7 @@ async fn the_worker_controls_the_page_after_a_reload() -> anyhow::Result<()> {
 
 #[tokio::test]
 async fn the_app_starts_with_the_server_out_of_reach() -> anyhow::Result<()> {
-    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
-    let browser = launch_through(&proxy).await?;
-    browser.open("").await?;
-    wait_for_active_worker(&browser).await?;
+    let (proxy, browser) = start_with_worker().await?;
 
     proxy.set_offline(true);
     let probe = browser
@@ -178,10 +191,7 @@ async fn the_app_starts_with_the_server_out_of_reach() -> anyhow::Result<()> {
 
 #[tokio::test]
 async fn a_new_build_is_offered_with_a_reload_banner() -> anyhow::Result<()> {
-    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
-    let browser = launch_through(&proxy).await?;
-    browser.open("").await?;
-    wait_for_active_worker(&browser).await?;
+    let (proxy, browser) = start_with_worker().await?;
     browser.open("").await?;
 
     proxy.change_worker("\n// The next build.\n");
@@ -240,15 +250,9 @@ async fn a_new_build_is_offered_with_a_reload_banner() -> anyhow::Result<()> {
 #[tokio::test]
 async fn an_upload_in_any_order_never_mixes_builds() -> anyhow::Result<()> {
     const NEXT: &str = "0123456789abcdef";
-    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
-    let browser = launch_through(&proxy).await?;
+    let (proxy, browser) = start_with_worker().await?;
     browser.open("").await?;
-    wait_for_active_worker(&browser).await?;
-    browser.open("").await?;
-    let builds = cached_builds(&browser).await?;
-    let [old] = builds.as_slice() else {
-        panic!("one shell cache expected: {builds:?}");
-    };
+    let old = &the_build(&browser).await?;
     assert_eq!(loaded_builds(&browser).await?, [old.clone(), old.clone()]);
 
     // The page and worker of the next build arrive first.
@@ -300,14 +304,8 @@ async fn an_upload_in_any_order_never_mixes_builds() -> anyhow::Result<()> {
 /// and asks to reload in a minute, rather than starting anything.
 #[tokio::test]
 async fn a_first_visit_during_an_upload_says_to_reload() -> anyhow::Result<()> {
-    let proxy = Proxy::start(&std::env::var("EDGEWISE_URL")?).await?;
-    let browser = launch_through(&proxy).await?;
-    browser.open("").await?;
-    wait_for_active_worker(&browser).await?;
-    let builds = cached_builds(&browser).await?;
-    let [old] = builds.as_slice() else {
-        panic!("one shell cache expected: {builds:?}");
-    };
+    let (proxy, browser) = start_with_worker().await?;
+    let old = &the_build(&browser).await?;
     // Another profile's first visit: no worker, no cache.
     let fresh = launch_through(&proxy).await?;
     proxy.publish_as(old, "0123456789abcdef", false);

@@ -74,6 +74,18 @@ pub fn run_vertex_adjacent_edge(harness: &mut AppHarness, v: u32) {
     harness.run();
 }
 
+/// Sets the running trace's questions (`line 13: Which edge will e be?`)
+/// and runs a frame.
+pub fn ask(harness: &mut AppHarness, questions: &str) {
+    harness
+        .state_mut()
+        .execute(edgewise_app::command::Command::SetQuestions(
+            questions.to_owned(),
+        ))
+        .expect("asks");
+    harness.run();
+}
+
 /// A sample file of meshes/, loaded natively as `structure`.
 pub fn sample_mesh(file: &str, structure: Structure) -> Mesh {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
