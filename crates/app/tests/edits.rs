@@ -111,7 +111,8 @@ fn an_edit_abandoned_half_way_is_taken_back() {
 fn a_traced_edit_ended_any_way_is_undone_exactly() {
     use edgewise_app::command::Command;
     use edgewise_core::schema::{ElementKind, ElementRef};
-    let endings: [(&str, fn(&mut support::AppHarness)); 4] = [
+    type Ending = fn(&mut support::AppHarness);
+    let endings: [(&str, Ending); 4] = [
         ("Abort", |h| {
             h.state_mut().abort_algorithm().expect("abort");
         }),
@@ -145,7 +146,7 @@ fn a_traced_edit_ended_any_way_is_undone_exactly() {
         end(&mut harness);
         harness.run();
         assert!(
-            !harness.state().state().trace.is_some(),
+            harness.state().state().trace.is_none(),
             "{way}: the run ended"
         );
         assert_eq!(

@@ -51,7 +51,7 @@ const VM_INPUT_TIMEOUT_S: u32 = 60;
 
 /// The `vm` target's memory limit for libFuzzer (its default is 2,048 MB).
 /// A run may hold its 256 MB budget in up to a million small allocations;
-/// under AddressSanitizer, with its shadow memory, per-allocation records
+/// under `AddressSanitizer`, with its shadow memory, per-allocation records
 /// and a quarantine of freed memory, that came to 2,075 MB of RSS with
 /// 291 MB of it live.
 const VM_RSS_LIMIT_MB: u32 = 4096;

@@ -204,7 +204,7 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
 }
 
 /// Proxies whose traps throw, revoked proxies, throwing getters, Symbols,
-/// BigInts and a 2³²−1-long array: each command still returns a Promise
+/// `BigInt`s and a 2³²−1-long array: each command still returns a Promise
 /// (never throws at once), which rejects naming the argument, and the page
 /// goes on.
 #[tokio::test]

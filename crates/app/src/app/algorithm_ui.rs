@@ -254,7 +254,7 @@ impl EdgewiseApp {
             egui::ScrollArea::vertical()
                 .max_height(room.max(120.0))
                 .show(ui, |ui| {
-                    self.algorithm_entries_ui(ui, structure, &mut chosen)
+                    self.algorithm_entries_ui(ui, structure, &mut chosen);
                 });
             if ui.button("Write or open an algorithm…").clicked() {
                 write = true;
