@@ -44,7 +44,7 @@ pub(super) fn items(
     Ok((items, length))
 }
 
-/// "edit(op, ids): ids could not be read: it threw 'TypeError: …'".
+/// `edit(op, ids): ids could not be read: it threw 'TypeError: …'`.
 fn unreadable(call: &str, argument: &str, error: &JsValue) -> String {
     let thrown = error
         .dyn_ref::<js_sys::Error>()
