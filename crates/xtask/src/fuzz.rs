@@ -217,7 +217,11 @@ fn run_target(root: &Path, target: &'static str, seconds: u64) -> anyhow::Result
             executions = executions.or(Some(runs));
             done_seconds = Some(secs);
         }
-        if let Some(path) = line.split("Test unit written to ").nth(1) {
+        // libFuzzer also writes `slow-unit-*` files for inputs over 10 s,
+        // which are reports, not failures (the limit is `-timeout`).
+        if let Some(path) = line.split("Test unit written to ").nth(1)
+            && !path.contains("/slow-unit-")
+        {
             crashes.push(path.trim().to_owned());
         }
     }
