@@ -82,6 +82,21 @@ async fn update_outcome(browser: &Browser) -> anyhow::Result<Value> {
         .await
 }
 
+/// Clicks the update banner's Reload and waits until the page has loaded
+/// again and the app is ready.
+async fn reload_from_banner(browser: &Browser) -> anyhow::Result<()> {
+    browser
+        .eval(
+            "window.edgewiseBeforeUpdate = true; \
+             document.getElementById('edgewise_update_reload').click(); return null;",
+        )
+        .await?;
+    browser
+        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
+        .await?;
+    browser.wait_until_ready().await
+}
+
 /// Waits until the worker has installed the shell and is active.
 async fn wait_for_active_worker(browser: &Browser) -> anyhow::Result<()> {
     let state = browser
@@ -217,16 +232,7 @@ async fn a_new_build_is_offered_with_a_reload_banner() -> anyhow::Result<()> {
     assert!(!shot.is_blank());
 
     // Reload: the waiting worker takes over and the page loads again.
-    browser
-        .eval(
-            "window.edgewiseBeforeUpdate = true; \
-             document.getElementById('edgewise_update_reload').click(); return null;",
-        )
-        .await?;
-    browser
-        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
-        .await?;
-    browser.wait_until_ready().await?;
+    reload_from_banner(&browser).await?;
     let after = browser
         .eval(
             "return { banner: !document.getElementById('edgewise_update').hidden, \
@@ -276,24 +282,14 @@ async fn an_upload_in_any_order_never_mixes_builds() -> anyhow::Result<()> {
     assert_eq!(update_outcome(&browser).await?, "installed");
     let banner_shown = "!document.getElementById('edgewise_update').hidden";
     browser.wait_for(banner_shown, WORKER_TIMEOUT).await?;
-    let reload_here = "window.edgewiseBeforeUpdate = true; \
-         document.getElementById('edgewise_update_reload').click(); return null;";
-    browser.eval(reload_here).await?;
-    browser
-        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
-        .await?;
-    browser.wait_until_ready().await?;
+    reload_from_banner(&browser).await?;
     assert_eq!(loaded_builds(&browser).await?, [NEXT, NEXT]);
 
     // The other tab still offers the update; its Reload loads the new build.
     browser.switch_to(second).await?;
     browser.wait_for(banner_shown, WORKER_TIMEOUT).await?;
     assert_eq!(loaded_builds(&browser).await?, [old.clone(), old.clone()]);
-    browser.eval(reload_here).await?;
-    browser
-        .wait_for("window.edgewiseBeforeUpdate !== true", WORKER_TIMEOUT)
-        .await?;
-    browser.wait_until_ready().await?;
+    reload_from_banner(&browser).await?;
     assert_eq!(loaded_builds(&browser).await?, [NEXT, NEXT]);
     assert_eq!(cached_builds(&browser).await?, [NEXT]);
     browser.assert_no_console_errors().await?;
