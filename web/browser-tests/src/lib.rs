@@ -203,6 +203,20 @@ impl Browser {
         Ok(self.client.switch_to_window(tab).await?)
     }
 
+    /// Waits until the page shows its error box (a load that failed, a
+    /// browser without 3D) and returns the box's text.
+    pub async fn page_error(&self, timeout: Duration) -> anyhow::Result<String> {
+        self.wait_for(
+            "document.getElementById('edgewise_error').dataset.visible === 'true'",
+            timeout,
+        )
+        .await?;
+        let text = self
+            .eval("return document.getElementById('edgewise_error').textContent;")
+            .await?;
+        Ok(text.as_str().unwrap_or_default().to_owned())
+    }
+
     /// Waits until the app has defined `window.edgewise`, failing early with
     /// the page's own message if it shows one.
     pub async fn wait_until_ready(&self) -> anyhow::Result<()> {

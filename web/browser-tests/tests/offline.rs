@@ -306,16 +306,7 @@ async fn a_first_visit_during_an_upload_says_to_reload() -> anyhow::Result<()> {
     let fresh = launch_through(&proxy).await?;
     proxy.publish_as(old, "0123456789abcdef", false);
     fresh.goto("").await?;
-    fresh
-        .wait_for(
-            "document.getElementById('edgewise_error').dataset.visible === 'true'",
-            WORKER_TIMEOUT,
-        )
-        .await?;
-    let text = fresh
-        .eval("return document.getElementById('edgewise_error').textContent;")
-        .await?;
-    let text = text.as_str().unwrap_or_default();
+    let text = fresh.page_error(WORKER_TIMEOUT).await?;
     assert!(
         text.contains("the files of build 0123456789abcdef could not be fetched")
             && text.contains("reload in a minute"),

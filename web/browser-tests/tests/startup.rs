@@ -73,16 +73,7 @@ async fn a_wasm_file_that_fails_to_load_gives_a_clear_message() -> anyhow::Resul
     let browser = Browser::launch().await?;
     browser.block_urls(&["*.wasm"]).await?;
     browser.goto("").await?;
-    browser
-        .wait_for(
-            "document.getElementById('edgewise_error').dataset.visible === 'true'",
-            Duration::from_secs(60),
-        )
-        .await?;
-    let message = browser
-        .eval("return document.getElementById('edgewise_error').textContent;")
-        .await?;
-    let message = message.as_str().unwrap_or_default();
+    let message = browser.page_error(Duration::from_secs(60)).await?;
     assert!(
         message.starts_with("Edgewise could not load"),
         "unclear message: {message}"
@@ -107,16 +98,7 @@ async fn without_webgl_or_webgpu_the_page_explains_why() -> anyhow::Result<()> {
     })
     .await?;
     browser.goto("").await?;
-    browser
-        .wait_for(
-            "document.getElementById('edgewise_error').dataset.visible === 'true'",
-            Duration::from_secs(120),
-        )
-        .await?;
-    let message = browser
-        .eval("return document.getElementById('edgewise_error').textContent;")
-        .await?;
-    let message = message.as_str().unwrap_or_default();
+    let message = browser.page_error(Duration::from_secs(120)).await?;
     assert!(
         message.contains("WebGPU or WebGL2"),
         "unclear message: {message}"
