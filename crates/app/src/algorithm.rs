@@ -52,6 +52,9 @@ pub struct Algorithms {
     pub code_size: f32,
     /// The colouring of the algorithm on show, keyed by its source.
     highlighted: Option<(Arc<str>, highlight::Highlighted)>,
+    /// Where the step controls were drawn this frame, for
+    /// `state().layout.stepControls`; the app takes it after each frame.
+    pub step_controls: Option<egui::Rect>,
 }
 
 impl Default for Algorithms {
@@ -64,6 +67,7 @@ impl Default for Algorithms {
             editor: editor::AlgorithmEditor::default(),
             code_size: 14.0,
             highlighted: None,
+            step_controls: None,
         }
     }
 }

@@ -46,6 +46,7 @@ mod open_dialog;
 mod pending;
 mod pictures;
 mod readers;
+mod screen;
 pub mod settings_ui;
 mod statistics;
 pub(crate) mod tabs;
@@ -125,6 +126,12 @@ pub struct EdgewiseApp {
     jobs: pending::JobLog,
     focus_ring: focus_ring::FocusRing,
     ui_cache: UiCache,
+    /// The small-screen sheet's tab in front.
+    sheet: screen::Sheet,
+    /// The table shown when only one fits, as last chosen.
+    narrow_table: Option<ElementKind>,
+    /// Controls sized for a pointer or a finger.
+    sizing: screen::Sizing,
 }
 
 impl EdgewiseApp {
@@ -196,6 +203,9 @@ impl EdgewiseApp {
             jobs: pending::JobLog::default(),
             focus_ring: focus_ring::FocusRing::default(),
             ui_cache: UiCache::default(),
+            sheet: screen::Sheet::default(),
+            narrow_table: None,
+            sizing: screen::Sizing::default(),
         }
     }
 
@@ -626,49 +636,17 @@ impl EdgewiseApp {
         self.ui_cache.end(ui, name, mark);
     }
 
+    /// The top bar: every command, or on a small screen one menu that
+    /// holds them; then what is open.
     fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
-            ui.heading("Edgewise");
-            ui.separator();
-            self.files_menu_ui(ui);
-            let mut chosen = None;
-            ui.menu_button("Samples", |ui| {
-                for sample in samples::SAMPLES {
-                    if ui.button(sample.name).clicked() {
-                        chosen = Some(sample.name);
-                    }
-                }
-            });
-            if let Some(name) = chosen {
-                self.issue(Command::LoadSample {
-                    name: name.to_owned(),
-                    structure: None,
-                });
-            }
-            ui.separator();
-            let mut structure = self.tab().structure;
-            ui.selectable_value(&mut structure, Structure::WingedEdge, "Winged-edge");
-            ui.selectable_value(&mut structure, Structure::HalfEdge, "Half-edge");
-            if structure != self.tab().structure {
-                self.issue(Command::SetStructure(structure));
-            }
-            ui.separator();
-            if ui
-                .selectable_label(self.show_obj_editor, "OBJ editor")
-                .on_hover_text("Type or paste OBJ text; the mesh and tables follow as you type")
-                .clicked()
-            {
-                self.toggle_obj_editor();
-            }
-            self.algorithm_menu_ui(ui);
-            self.view_options_menu_ui(ui);
-            self.help_menu_ui(ui);
-            if ui
-                .add_enabled(self.tab().document.is_some(), egui::Button::new("Share…"))
-                .on_hover_text("A link to this view, or code to embed it in lecture notes")
-                .clicked()
-            {
-                self.show_share = true;
+            if self.layout.compact {
+                self.compact_menu_ui(ui);
+            } else {
+                ui.heading("Edgewise");
+                ui.separator();
+                self.commands_ui(ui);
+                self.measure_bar(ui.cursor().min.x);
             }
             ui.separator();
             if let Some(doc) = &self.tab().document {
@@ -695,8 +673,60 @@ impl EdgewiseApp {
         });
     }
 
+    /// The top bar's commands, in a row or down a menu.
+    fn commands_ui(&mut self, ui: &mut egui::Ui) {
+        let nested = egui::containers::menu::is_in_menu(ui);
+        self.files_menu_ui(ui);
+        let mut chosen = None;
+        self.menu_ui(ui, "Samples", |_, ui| {
+            for sample in samples::SAMPLES {
+                if ui.button(sample.name).clicked() {
+                    chosen = Some(sample.name);
+                }
+            }
+        });
+        if let Some(name) = chosen {
+            self.issue(Command::LoadSample {
+                name: name.to_owned(),
+                structure: None,
+            });
+        }
+        ui.separator();
+        let mut structure = self.tab().structure;
+        let winged = ui.selectable_value(&mut structure, Structure::WingedEdge, "Winged-edge");
+        self.record_command("Winged-edge", &winged, nested);
+        let half = ui.selectable_value(&mut structure, Structure::HalfEdge, "Half-edge");
+        self.record_command("Half-edge", &half, nested);
+        if structure != self.tab().structure {
+            self.issue(Command::SetStructure(structure));
+        }
+        ui.separator();
+        let editor = ui
+            .selectable_label(self.show_obj_editor, "OBJ editor")
+            .on_hover_text("Type or paste OBJ text; the mesh and tables follow as you type");
+        self.record_command("OBJ editor", &editor, nested);
+        if editor.clicked() {
+            self.toggle_obj_editor();
+        }
+        self.algorithm_menu_ui(ui);
+        self.view_options_menu_ui(ui);
+        self.help_menu_ui(ui);
+        let share = ui
+            .add_enabled(self.tab().document.is_some(), egui::Button::new("Share…"))
+            .on_hover_text("A link to this view, or code to embed it in lecture notes");
+        self.record_command("Share…", &share, nested);
+        if share.clicked() {
+            self.show_share = true;
+            ui.close();
+        }
+    }
+
     fn view_options_menu_ui(&mut self, ui: &mut egui::Ui) {
-        ui.menu_button("View", |ui| {
+        self.menu_ui(ui, "View", |this, ui| this.view_options_ui(ui));
+    }
+
+    fn view_options_ui(&mut self, ui: &mut egui::Ui) {
+        {
             let options = &mut self.view_options;
             ui.label("Draw ids");
             ui.horizontal(|ui| {
@@ -746,7 +776,7 @@ impl EdgewiseApp {
             {
                 self.new_tab();
             }
-        });
+        }
     }
 
     /// The message line along the bottom of the 3D view: what is under the
@@ -839,6 +869,7 @@ impl EdgewiseApp {
             return;
         }
         let mut response = TablesResponse::default();
+        let mut chosen_table = None;
         let scroll = std::mem::take(&mut self.tab_mut().table_scroll);
         let tab = &self.tabs[self.active_tab];
         let Some(document) = &tab.document else {
@@ -863,15 +894,40 @@ impl EdgewiseApp {
                 });
         };
         let edge_title = tables::edge_table_title(document.mesh());
-        StripBuilder::new(ui)
-            .size(Size::relative(0.17).at_least(150.0))
-            .size(Size::remainder().at_least(300.0))
-            .size(Size::relative(0.28).at_least(220.0))
-            .horizontal(|mut strip| {
-                strip.cell(|ui| table(ui, ElementKind::Face, "Faces"));
-                strip.cell(|ui| table(ui, ElementKind::Edge, edge_title));
-                strip.cell(|ui| table(ui, ElementKind::Vertex, "Vertices"));
+        let titles = [
+            (ElementKind::Face, "Faces"),
+            (ElementKind::Edge, edge_title),
+            (ElementKind::Vertex, "Vertices"),
+        ];
+        if ui.available_width() < TABLES_SIDE_BY_SIDE {
+            // Too narrow for three: one at a time, the selection's first.
+            let selected = document.selection().map(|s| s.kind);
+            let shown = self.narrow_table.or(selected).unwrap_or(ElementKind::Edge);
+            let mut chosen = shown;
+            ui.horizontal(|ui| {
+                for (kind, title) in titles {
+                    ui.selectable_value(&mut chosen, kind, title);
+                }
             });
+            if chosen != shown {
+                chosen_table = Some(chosen);
+            }
+            let title = titles.iter().find(|(k, _)| *k == shown).map_or("", |t| t.1);
+            table(ui, shown, title);
+        } else {
+            StripBuilder::new(ui)
+                .size(Size::relative(0.17).at_least(150.0))
+                .size(Size::remainder().at_least(300.0))
+                .size(Size::relative(0.28).at_least(220.0))
+                .horizontal(|mut strip| {
+                    for (kind, title) in titles {
+                        strip.cell(|ui| table(ui, kind, title));
+                    }
+                });
+        }
+        if chosen_table.is_some() {
+            self.narrow_table = chosen_table;
+        }
         self.tab_mut().table_hovered = response.hovered;
         if let Some(clicked) = response.clicked {
             self.element_clicked(Some(clicked));
@@ -915,7 +971,9 @@ impl EdgewiseApp {
         self.refresh_styles();
         self.sync_view_options();
         let rect = ui.available_rect_before_wrap();
-        let line_height = ui.text_style_height(&egui::TextStyle::Body) + 8.0;
+        // As tall as its go-to box, which is a touch target on a phone.
+        let line_height =
+            (ui.text_style_height(&egui::TextStyle::Body) + 8.0).max(ui.spacing().interact_size.y);
         let (view_rect, line_rect) =
             rect.split_top_bottom_at_y((rect.bottom() - line_height).max(rect.top()));
         let hovered = self.tab().hovered.or(self.tab().table_hovered);
@@ -1006,6 +1064,10 @@ impl EdgewiseApp {
         // Before any panel: the tables and the view draw the same moment.
         self.refresh_styles();
         self.presentation_keys(ui.ctx());
+        if crate::platform::fit_canvas() {
+            ui.ctx().request_repaint();
+        }
+        self.size_controls(ui.ctx());
         if let Some(embed) = self.embed {
             self.trace_keys(ui.ctx());
             self.embed_ui(ui, embed);
@@ -1026,6 +1088,12 @@ impl EdgewiseApp {
         // Panels are bounded by the window, so no content (a long value, a
         // wide table) can squeeze the 3D view away.
         let window = ui.max_rect();
+        let fit = self.fit(window.width());
+        self.layout = crate::state::LayoutState {
+            window: window.into(),
+            compact: fit.folded_bar,
+            ..Default::default()
+        };
         let mut chrome = 0.0;
         let mut parts = Vec::new();
         let mut part = |rect: egui::Rect, (title, text): (&'static str, &'static str)| {
@@ -1055,48 +1123,52 @@ impl EdgewiseApp {
         self.settings_window_ui(ui.ctx());
         self.statistics_window_ui(ui.ctx());
         self.share_window_ui(ui.ctx());
-        self.presentation_hint_ui(ui.ctx());
-        if (self.show_algorithm_panel || self.tab().run.is_active() || self.tab().diagnosis)
-            && presenting.is_none_or(|p| p.algorithm)
-        {
-            let rect = egui::Panel::right("algorithm")
-                .resizable(true)
-                .default_size(480.0)
-                .size_range(side_panel_range(window.width(), 300.0))
-                .show(ui, |ui| {
-                    self.cached_part_ui(ui, "algorithm panel", Self::algorithm_panel_ui);
-                })
-                .response
-                .rect;
-            part(rect, first_visit::ALGORITHM);
-        }
-        let mut layout = crate::state::LayoutState {
-            window: window.into(),
-            ..Default::default()
-        };
-        if self.show_obj_editor && presenting.is_none() {
-            let editor = egui::Panel::right("obj_editor")
-                .resizable(true)
-                .default_size(320.0)
-                .size_range(side_panel_range(window.width(), 200.0))
-                .show(ui, |ui| {
-                    self.cached_part_ui(ui, "OBJ editor", Self::obj_editor_ui);
-                });
-            layout
-                .panels
-                .insert("objEditor", editor.response.rect.into());
-        }
-        if presenting.is_none_or(|p| p.tables) {
-            chrome += part(
-                egui::Panel::bottom("tables")
+        let algorithm =
+            (self.show_algorithm_panel || self.tab().run.is_active() || self.tab().diagnosis)
+                && presenting.is_none_or(|p| p.algorithm);
+        let tables = presenting.is_none_or(|p| p.tables);
+        if fit.sheet {
+            let offered = self.sheet_tabs(tables, algorithm);
+            if let Some((rect, shown)) = self.sheet_ui(ui, &offered) {
+                chrome += part(rect, shown);
+            }
+        } else {
+            if algorithm {
+                let rect = egui::Panel::right("algorithm")
+                    .resizable(true)
+                    .default_size(480.0)
+                    .size_range(side_panel_range(window.width(), 300.0))
+                    .show(ui, |ui| {
+                        self.cached_part_ui(ui, "algorithm panel", Self::algorithm_panel_ui);
+                    })
+                    .response
+                    .rect;
+                self.layout.panels.insert("algorithm", rect.into());
+                part(rect, first_visit::ALGORITHM);
+            }
+            if self.show_obj_editor && presenting.is_none() {
+                let editor = egui::Panel::right("obj_editor")
+                    .resizable(true)
+                    .default_size(320.0)
+                    .size_range(side_panel_range(window.width(), 200.0))
+                    .show(ui, |ui| {
+                        self.cached_part_ui(ui, "OBJ editor", Self::obj_editor_ui);
+                    });
+                self.layout
+                    .panels
+                    .insert("objEditor", editor.response.rect.into());
+            }
+            if tables {
+                let rect = egui::Panel::bottom("tables")
                     .resizable(true)
                     .default_size(260.0)
                     .size_range(120.0_f32.min(window.height() * 0.2)..=window.height() * 0.4)
                     .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                     .response
-                    .rect,
-                first_visit::TABLES,
-            );
+                    .rect;
+                self.layout.panels.insert("tables", rect.into());
+                chrome += part(rect, first_visit::TABLES);
+            }
         }
         self.chrome_height = chrome;
         let central = egui::CentralPanel::default().show(ui, |ui| {
@@ -1113,20 +1185,13 @@ impl EdgewiseApp {
             }
         });
         part(central.response.rect, first_visit::VIEW);
-        for part in &parts {
-            let name = match part.title {
-                title if title == first_visit::TOP_BAR.0 => "topBar",
-                title if title == first_visit::ALGORITHM.0 => "algorithm",
-                title if title == first_visit::TABLES.0 => "tables",
-                _ => {
-                    layout.view = Some(part.rect.into());
-                    continue;
-                }
-            };
-            layout.panels.insert(name, part.rect.into());
+        self.layout.view = Some(central.response.rect.into());
+        self.layout.step_controls = self.algorithms.step_controls.take().map(Into::into);
+        if let Some(top_bar) = parts.iter().find(|p| p.title == first_visit::TOP_BAR.0) {
+            self.layout.panels.insert("topBar", top_bar.rect.into());
         }
-        self.layout = layout;
         self.screen_parts = parts;
+        self.presentation_hint_ui(ui.ctx());
         self.tour_progress(false);
         self.tour_ui(ui.ctx());
         self.explain_ui(ui.ctx());
@@ -1134,6 +1199,9 @@ impl EdgewiseApp {
         self.pending_ui(ui.ctx());
     }
 }
+
+/// The least width, in points, in which the three tables fit side by side.
+const TABLES_SIDE_BY_SIDE: f32 = 690.0;
 
 /// The widths a side panel may take in a window `window_width` wide: at
 /// most half of it, and `least` when the window has room.
@@ -1181,12 +1249,12 @@ pub(crate) fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> Scene
 /// A short guide: what to click, the keys, and what the colours mean.
 impl EdgewiseApp {
     fn help_menu_ui(&mut self, ui: &mut egui::Ui) {
-        ui.menu_button("Help", |ui| {
+        self.menu_ui(ui, "Help", |this, ui| {
             if ui.button("What am I looking at?").clicked() {
-                self.explaining = true;
+                this.explaining = true;
             }
             if ui.button("Things to try").clicked() {
-                self.tour = Some(first_visit::Tour::default());
+                this.tour = Some(first_visit::Tour::default());
             }
             ui.separator();
             help_text_ui(ui);
@@ -1229,7 +1297,7 @@ pub const HELP_KEYS: [(&str, &str); 14] = [
 
 fn help_text_ui(ui: &mut egui::Ui) {
     {
-        ui.set_max_width(420.0);
+        ui.set_max_width(420.0_f32.min(ui.ctx().content_rect().width() - 32.0));
         ui.strong("Edgewise");
         ui.label(
             "Click a vertex, an edge or a face, in the 3D view or in a table: it is \

@@ -140,15 +140,84 @@ impl RectState {
     }
 }
 
-/// What is where: `{window, view, panels: {topBar, algorithm, objEditor,
-/// tables}}`, with only the panels on screen. Tests and embedding pages
-/// check with it that no panel squeezes the 3D view away.
+/// What is where, with only what is on screen: `{window, view,
+/// stepControls, panels: {topBar, algorithm, objEditor, tables}, overlays,
+/// menus, topBar, compact}`. Tests and embedding pages check with it that
+/// no panel squeezes the 3D view away, no overlay covers a control, and
+/// every command can be reached.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct LayoutState {
     pub window: RectState,
     /// The 3D view (both views, side by side), or null before a frame.
     pub view: Option<RectState>,
+    /// Step, Back, Play, the slider and Abort, while a trace runs.
+    #[serde(rename = "stepControls")]
+    pub step_controls: Option<RectState>,
     pub panels: BTreeMap<&'static str, RectState>,
+    /// Cards drawn over the rest: the welcome card, the presentation hint.
+    pub overlays: Vec<NamedRect>,
+    /// The menus open, each with its entries and how many are in sight.
+    pub menus: Vec<MenuLayout>,
+    /// The top bar's commands; on a small screen, the menu button that holds
+    /// the rest.
+    #[serde(rename = "topBar")]
+    pub top_bar: Vec<NamedRect>,
+    /// The small-screen layout: one menu button, the panels as tabs under
+    /// the view.
+    pub compact: bool,
+    /// The commands of the menu being drawn, for its [`MenuLayout`].
+    #[serde(skip)]
+    pub menu_commands: Vec<NamedRect>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NamedRect {
+    pub name: &'static str,
+    pub rect: RectState,
+}
+
+/// An open menu: its rectangle, its entries (buttons, checkboxes, sub-menus)
+/// and how many of them are in sight without scrolling.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MenuLayout {
+    pub name: &'static str,
+    pub rect: RectState,
+    pub entries: usize,
+    #[serde(rename = "visibleEntries")]
+    pub visible_entries: usize,
+    /// Whether the last entry is in sight (after scrolling, it must be).
+    #[serde(rename = "lastEntryVisible")]
+    pub last_entry_visible: bool,
+    /// The top bar's commands this menu holds, on a small screen.
+    pub commands: Vec<NamedRect>,
+}
+
+impl MenuLayout {
+    /// Reads what `ui`, a menu's contents after they are drawn, holds: the
+    /// clickable widgets on its layer.
+    pub fn of(ui: &egui::Ui, name: &'static str) -> Self {
+        let layer = ui.layer_id();
+        let visible_area = ui.ctx().content_rect().intersect(ui.clip_rect());
+        let (mut entries, mut visible, mut last_visible) = (0, 0, false);
+        ui.ctx().viewport(|viewport| {
+            for widget in viewport.this_pass.widgets.get_layer(layer) {
+                if !widget.sense.senses_click() || widget.sense.senses_drag() {
+                    continue;
+                }
+                entries += 1;
+                last_visible = visible_area.contains_rect(widget.rect);
+                visible += usize::from(last_visible);
+            }
+        });
+        Self {
+            name,
+            rect: ui.min_rect().intersect(visible_area).into(),
+            entries,
+            visible_entries: visible,
+            last_entry_visible: last_visible,
+            commands: Vec::new(),
+        }
+    }
 }
 
 /// A broken record: the row, the column (as the language names it) and

@@ -21,7 +21,7 @@ use crate::{
 };
 
 /// The id of the canvas in index.html.
-const CANVAS_ID: &str = "edgewise_canvas";
+pub(crate) const CANVAS_ID: &str = "edgewise_canvas";
 /// The loading message shown by index.html until the app runs.
 const LOADING_ID: &str = "edgewise_loading";
 /// The box that shows start-up failures and panics.

@@ -64,6 +64,9 @@ pub struct LaunchOptions {
     pub without_3d: bool,
     /// The app's URL, when not `EDGEWISE_URL` (a [`proxy::Proxy`]'s).
     pub base_url: Option<String>,
+    /// A true device pixel ratio (`--force-device-scale-factor`), as a
+    /// phone's or a high-density laptop's screen has.
+    pub device_scale_factor: Option<f64>,
 }
 
 impl Default for LaunchOptions {
@@ -72,9 +75,68 @@ impl Default for LaunchOptions {
             window_size: (1280, 800),
             without_3d: false,
             base_url: None,
+            device_scale_factor: None,
         }
     }
 }
+
+/// A screen the layout must hold on: its size in CSS pixels, its device
+/// pixel ratio, and whether it is touched rather than clicked.
+#[derive(Clone, Copy, Debug)]
+pub struct Screen {
+    pub name: &'static str,
+    pub width: u32,
+    pub height: u32,
+    pub ratio: f64,
+    pub touch: bool,
+}
+
+/// The screens students and lecturers use: laptops and projectors at
+/// ratios 1 and 2, a tablet and a phone.
+pub const SCREENS: [Screen; 6] = [
+    Screen {
+        name: "desktop-1280x800@1",
+        width: 1280,
+        height: 800,
+        ratio: 1.0,
+        touch: false,
+    },
+    Screen {
+        name: "desktop-1280x800@2",
+        width: 1280,
+        height: 800,
+        ratio: 2.0,
+        touch: false,
+    },
+    Screen {
+        name: "desktop-1920x1080@1",
+        width: 1920,
+        height: 1080,
+        ratio: 1.0,
+        touch: false,
+    },
+    Screen {
+        name: "desktop-1920x1080@2",
+        width: 1920,
+        height: 1080,
+        ratio: 2.0,
+        touch: false,
+    },
+    Screen {
+        name: "tablet-820x1180@2",
+        width: 820,
+        height: 1180,
+        ratio: 2.0,
+        touch: true,
+    },
+    Screen {
+        name: "phone-390x844@3",
+        width: 390,
+        height: 844,
+        ratio: 3.0,
+        touch: true,
+    },
+];
 
 /// A headless Chromium session on the served app.
 pub struct Browser {
@@ -124,6 +186,9 @@ impl Browser {
             format!("--window-size={width},{height}"),
             format!("--user-data-dir={}", profile.0.display()),
         ];
+        if let Some(ratio) = options.device_scale_factor {
+            args.push(format!("--force-device-scale-factor={ratio}"));
+        }
         if options.without_3d {
             args.push("--disable-3d-apis".to_owned());
             args.push("--disable-webgl".to_owned());
@@ -332,6 +397,70 @@ impl Browser {
             .with_context(|| format!("CDP command {command} failed"))
     }
 
+    /// Sizes the window so that the page's viewport is `width` × `height`
+    /// CSS pixels: `--window-size` counts the browser's own bars too.
+    pub async fn fit_viewport(&self, width: u32, height: u32) -> anyhow::Result<()> {
+        for _ in 0..3 {
+            let inner = self
+                .eval("return [innerWidth, innerHeight, outerWidth, outerHeight];")
+                .await?;
+            let at = |i: usize| inner[i].as_i64().unwrap_or(0);
+            let (dw, dh) = (i64::from(width) - at(0), i64::from(height) - at(1));
+            if dw == 0 && dh == 0 {
+                return Ok(());
+            }
+            let outer = |size: i64, extra: i64| u32::try_from(size + extra).unwrap_or(1);
+            self.client
+                .set_window_size(outer(at(2), dw), outer(at(3), dh))
+                .await
+                .context("cannot size the window")?;
+        }
+        let inner = self.eval("return [innerWidth, innerHeight];").await?;
+        bail!("the viewport stays {inner} instead of {width}×{height}")
+    }
+
+    /// Makes the page a `screen` as `DevTools`' device mode does
+    /// (`Emulation.setDeviceMetricsOverride`, and touch for a touch screen);
+    /// the page must be loaded again to start on it.
+    pub async fn emulate(&self, screen: &Screen) -> anyhow::Result<()> {
+        self.cdp(
+            "Emulation.setDeviceMetricsOverride",
+            json!({ "width": screen.width, "height": screen.height,
+                    "deviceScaleFactor": screen.ratio, "mobile": screen.touch }),
+        )
+        .await?;
+        self.touch_screen(screen.touch).await
+    }
+
+    /// Turns a touch screen on or off: the page sees touch points and a
+    /// coarse pointer, and [`Self::tap_at`] works.
+    pub async fn touch_screen(&self, on: bool) -> anyhow::Result<()> {
+        self.cdp(
+            "Emulation.setTouchEmulationEnabled",
+            json!({ "enabled": on, "maxTouchPoints": if on { 5 } else { 1 } }),
+        )
+        .await?;
+        Ok(())
+    }
+
+    /// Taps with one finger at `(x, y)` CSS pixels of the page.
+    pub async fn tap_at(&self, x: f64, y: f64) -> anyhow::Result<()> {
+        let point = json!([{ "x": x, "y": y, "id": 1 }]);
+        self.cdp(
+            "Input.dispatchTouchEvent",
+            json!({ "type": "touchStart", "touchPoints": point }),
+        )
+        .await?;
+        // No frame between: under a software renderer a large page's frame
+        // can outlast egui's longest click.
+        self.cdp(
+            "Input.dispatchTouchEvent",
+            json!({ "type": "touchEnd", "touchPoints": [] }),
+        )
+        .await?;
+        Ok(())
+    }
+
     /// Clicks with `button` (`"left"`, `"right"`) at `(x, y)` CSS pixels of
     /// the page, as a real mouse does: moved, pressed, released.
     pub async fn click_at(&self, x: f64, y: f64, button: &str) -> anyhow::Result<()> {
@@ -340,6 +469,9 @@ impl Browser {
             json!({ "type": "mouseMoved", "x": x, "y": y }),
         )
         .await?;
+        // A frame between, as a hand takes: a slow frame (a large canvas
+        // under a software renderer) then sees the pointer arrive first.
+        self.next_frame().await?;
         for kind in ["mousePressed", "mouseReleased"] {
             self.cdp(
                 "Input.dispatchMouseEvent",
@@ -348,6 +480,13 @@ impl Browser {
             .await?;
         }
         Ok(())
+    }
+
+    /// Waits for the page's next animation frame.
+    pub async fn next_frame(&self) -> anyhow::Result<()> {
+        self.eval_async("new Promise((r) => requestAnimationFrame(r))")
+            .await
+            .map(drop)
     }
 
     /// Where the app draws an element, in CSS pixels of the page: its
@@ -467,8 +606,6 @@ impl Browser {
         Ok(())
     }
 
-    /// Takes a screenshot, saves it as screenshots/`name`.png for people to
-    /// look at, and returns its pixels.
     /// Runs the statements `start`, then reads the canvas as drawn by the
     /// first animation frame after which `condition` (a JavaScript
     /// expression) holds, inside that frame: a `WebDriver` call waits for
@@ -508,6 +645,8 @@ impl Browser {
         Screenshot::decode(&bytes, path)
     }
 
+    /// Takes a screenshot, saves it as screenshots/`name`.png for people to
+    /// look at, and returns its pixels.
     pub async fn screenshot(&self, name: &str) -> anyhow::Result<Screenshot> {
         let bytes = self
             .client

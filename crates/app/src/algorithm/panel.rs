@@ -149,6 +149,19 @@ impl Algorithms {
         steps: usize,
         playing: bool,
     ) -> Option<Command> {
+        let shown = ui.scope(|ui| self.step_buttons_ui(run, ui, step, steps, playing));
+        self.step_controls = Some(shown.response.rect);
+        shown.inner
+    }
+
+    fn step_buttons_ui(
+        &mut self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+        step: usize,
+        steps: usize,
+        playing: bool,
+    ) -> Option<Command> {
         let now = ui.input(|i| i.time);
         let mut command = None;
         ui.horizontal_wrapped(|ui| {

@@ -242,20 +242,13 @@ impl EdgewiseApp {
             .map(crate::document::Document::structure);
         let mut chosen = None;
         let mut write = false;
-        ui.menu_button("Algorithm", |ui| {
-            ui.set_min_width(260.0);
+        self.menu_ui(ui, "Algorithm", |this, ui| {
+            ui.set_min_width(260.0_f32.min(ui.ctx().content_rect().width() - 32.0));
             let Some(structure) = structure else {
                 ui.weak("Open a mesh to run algorithms on it.");
                 return;
             };
-            // A library longer than the window scrolls (by wheel, drag or
-            // Tab, which scrolls the focused entry into view).
-            let room = ui.ctx().content_rect().bottom() - ui.max_rect().top() - 48.0;
-            egui::ScrollArea::vertical()
-                .max_height(room.max(120.0))
-                .show(ui, |ui| {
-                    self.algorithm_entries_ui(ui, structure, &mut chosen);
-                });
+            this.algorithm_entries_ui(ui, structure, &mut chosen);
             if ui.button("Write or open an algorithm…").clicked() {
                 write = true;
             }

@@ -224,7 +224,7 @@ impl EdgewiseApp {
             .constrain(true)
             .show(ctx, |ui| {
                 egui::Frame::menu(ui.style()).show(ui, |ui| {
-                    ui.set_max_width(460.0);
+                    ui.set_max_width(460.0_f32.min(ctx.content_rect().width() - 24.0));
                     ui.strong(format!("Edit {}", menu.element));
                     let mut focused = !focus_first;
                     for entry in &menu.entries {
@@ -264,7 +264,9 @@ impl EdgewiseApp {
                         ui.weak("No mesh is open.");
                     }
                 });
+                crate::state::MenuLayout::of(ui, "Edit")
             });
+        self.layout.menus.push(area.inner.clone());
         let clicked_outside = ctx.input(|i| i.pointer.any_click())
             && !area
                 .response

@@ -23,6 +23,10 @@ impl EdgewiseApp {
     /// The embedded layout: step controls under the view when a trace runs,
     /// the tables if asked for, and the view filling the rest.
     pub(super) fn embed_ui(&mut self, ui: &mut egui::Ui, embed: Embed) {
+        self.layout = crate::state::LayoutState {
+            window: ui.max_rect().into(),
+            ..Default::default()
+        };
         let mut chrome = 0.0;
         if self.tab().run.session().is_some() {
             chrome += egui::Panel::bottom("embed_controls")
@@ -57,9 +61,11 @@ impl EdgewiseApp {
                 .height();
         }
         self.chrome_height = chrome;
-        egui::CentralPanel::default().show(ui, |ui| {
+        let view = egui::CentralPanel::default().show(ui, |ui| {
             self.error_ui(ui);
             self.view_ui(ui);
         });
+        self.layout.view = Some(view.response.rect.into());
+        self.layout.step_controls = self.algorithms.step_controls.take().map(Into::into);
     }
 }

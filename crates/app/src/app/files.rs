@@ -152,10 +152,13 @@ impl EdgewiseApp {
 
     /// The top bar's Open mesh… and Save as… entries.
     pub(crate) fn files_menu_ui(&mut self, ui: &mut egui::Ui) {
-        self.open_button_ui(ui);
+        let nested = egui::containers::menu::is_in_menu(ui);
+        let open = ui.scope(|ui| self.open_button_ui(ui)).response;
+        self.record_command("Open mesh…", &open, nested);
         let mut chosen = None;
-        ui.add_enabled_ui(self.tab().document.is_some(), |ui| {
-            ui.menu_button("Save as…", |ui| {
+        let has_mesh = self.tab().document.is_some();
+        ui.add_enabled_ui(has_mesh, |ui| {
+            self.menu_ui(ui, "Save as…", |this, ui| {
                 for format in SaveFormat::ALL {
                     if ui.button(format.label()).clicked() {
                         chosen = Some(Command::SaveAs(format));
@@ -169,7 +172,7 @@ impl EdgewiseApp {
                 {
                     chosen = Some(Command::SavePicture);
                 }
-                let running = self.tab().run.session().is_some();
+                let running = this.tab().run.session().is_some();
                 if ui
                     .add_enabled(running, egui::Button::new("Handout of the run (.pdf)"))
                     .on_hover_text("A page per step of the algorithm's run, for printing")
@@ -178,9 +181,8 @@ impl EdgewiseApp {
                 {
                     chosen = Some(Command::SaveHandout);
                 }
-                self.files.io.save_note_ui(ui);
+                this.files.io.save_note_ui(ui);
             })
-            .response
             .on_disabled_hover_text("Open a mesh first");
         });
         if let Some(command) = chosen {

@@ -91,20 +91,28 @@ impl EdgewiseApp {
         }
     }
 
-    /// The hint, bottom right over the view.
+    /// The hint, in the top right corner of the 3D view: over the view
+    /// alone, so it covers none of the controls its steps ask for.
     pub(super) fn tour_ui(&mut self, ctx: &egui::Context) {
         let Some(tour) = self.tour.clone() else {
             return;
         };
+        let Some(view) = self.layout.view else {
+            return;
+        };
+        let corner = egui::pos2(view.x + view.w - 12.0, view.y + 12.0);
         let mut dismiss = false;
         let window = egui::Id::unique(TOUR_WINDOW);
-        egui::Window::new("Welcome to Edgewise")
+        let shown = egui::Window::new("Welcome to Edgewise")
             .id(window)
-            .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-16.0, 48.0))
+            .pivot(egui::Align2::RIGHT_TOP)
+            .fixed_pos(corner)
             .resizable(false)
             .collapsible(true)
+            // On a phone it would cover the view: its title bar opens it.
+            .default_open(!self.layout.compact)
             .show(ctx, |ui| {
-                ui.set_max_width(320.0);
+                ui.set_max_width(320.0_f32.min(view.w - 48.0).max(160.0));
                 ui.label(
                     "This is the tetrahedron of the winged-edge paper's Table 2: the 3D \
                      view above, the records the structure stores below. Try:",
@@ -131,6 +139,12 @@ impl EdgewiseApp {
                     }
                 });
             });
+        if let Some(shown) = shown {
+            self.layout.overlays.push(crate::state::NamedRect {
+                name: "welcome",
+                rect: shown.response.rect.into(),
+            });
+        }
         if dismiss {
             self.dismiss_tour();
         }

@@ -212,15 +212,24 @@ impl EdgewiseApp {
         }
     }
 
-    /// A quiet reminder of how to leave, when the menu bar is hidden.
-    pub(super) fn presentation_hint_ui(&self, ctx: &egui::Context) {
+    /// A quiet reminder of how to leave, when the menu bar is hidden: in
+    /// the view's top right corner, clear of the panels' controls.
+    pub(super) fn presentation_hint_ui(&mut self, ctx: &egui::Context) {
+        let Some(view) = self.layout.view else {
+            return;
+        };
         if self.presentation.is_some_and(|p| !p.menu) {
-            egui::Area::new(egui::Id::unique("presentation_hint"))
-                .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-8.0, 8.0))
+            let shown = egui::Area::new(egui::Id::unique("presentation_hint"))
+                .pivot(egui::Align2::RIGHT_TOP)
+                .fixed_pos(egui::pos2(view.x + view.w - 8.0, view.y + 8.0))
                 .interactable(false)
                 .show(ctx, |ui| {
                     ui.weak("Esc leaves the presentation");
                 });
+            self.layout.overlays.push(crate::state::NamedRect {
+                name: "presentationHint",
+                rect: shown.response.rect.into(),
+            });
         }
     }
 }

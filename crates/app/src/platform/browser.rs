@@ -240,6 +240,47 @@ pub fn left_fullscreen() -> bool {
     was && !now
 }
 
+/// Keeps the canvas's backing store at its CSS size times
+/// `devicePixelRatio`, and says whether it had to be resized. eframe sizes
+/// it from the resize observer's device-pixel box, which under Chromium's
+/// device emulation (`DevTools`' device mode) is the real screen's and not
+/// the emulated ratio's: the UI, laid out at the emulated ratio, would fill
+/// a corner of the canvas. A difference of a pixel or two is rounding, and
+/// the observer's size, exact on a real screen, is kept.
+pub fn fit_canvas() -> bool {
+    use wasm_bindgen::JsCast as _;
+    let Some(window) = web_sys::window() else {
+        return false;
+    };
+    let Some(canvas) = window
+        .document()
+        .and_then(|d| d.get_element_by_id(crate::web::CANVAS_ID))
+        .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+    else {
+        return false;
+    };
+    let ratio = window.device_pixel_ratio();
+    let wanted = |css: i32| (f64::from(css) * ratio).round() as u32;
+    let (width, height) = (
+        wanted(canvas.client_width()),
+        wanted(canvas.client_height()),
+    );
+    let off = |have: u32, want: u32| f64::from(have.abs_diff(want)) > ratio + 1.0;
+    if width == 0 || height == 0 || !(off(canvas.width(), width) || off(canvas.height(), height)) {
+        return false;
+    }
+    canvas.set_width(width);
+    canvas.set_height(height);
+    true
+}
+
+/// Whether the browser's main pointer is a finger (a phone, a tablet).
+pub fn coarse_pointer() -> bool {
+    web_sys::window()
+        .and_then(|w| w.match_media("(pointer: coarse)").ok().flatten())
+        .is_some_and(|query| query.matches())
+}
+
 /// The page's address without query or fragment.
 pub fn page_base() -> String {
     web_sys::window()

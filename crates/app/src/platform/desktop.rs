@@ -104,6 +104,16 @@ pub fn load_settings(_key: &str) -> Option<String> {
 /// Settings last the session natively.
 pub fn store_settings(_key: &str, _json: &str) {}
 
+/// A window's surface is sized by winit.
+pub fn fit_canvas() -> bool {
+    false
+}
+
+/// A desktop's pointer is a mouse; a touch seen says otherwise.
+pub fn coarse_pointer() -> bool {
+    false
+}
+
 /// Enters or leaves fullscreen for a presentation.
 pub fn set_fullscreen(ctx: &egui::Context, on: bool) {
     ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(on));
