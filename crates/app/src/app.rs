@@ -722,7 +722,7 @@ impl EdgewiseApp {
     }
 
     fn view_options_menu_ui(&mut self, ui: &mut egui::Ui) {
-        self.menu_ui(ui, "View", |this, ui| this.view_options_ui(ui));
+        self.menu_ui(ui, "View", Self::view_options_ui);
     }
 
     fn view_options_ui(&mut self, ui: &mut egui::Ui) {

@@ -79,8 +79,9 @@ fn each_change_is_told_once() {
         "{events:?}"
     );
 
-    // A narrower window asks for less height, by the view's 5:3.
-    harness.set_size(egui::vec2(500.0, 600.0));
+    // A narrower window asks for less height, by the view's 5:3 (above
+    // the small-screen layout's width).
+    harness.set_size(egui::vec2(720.0, 600.0));
     harness.run();
     let events = harness.state_mut().take_embed_events();
     let [EmbedEvent::Resize { height: narrow }] = events[..] else {
@@ -88,6 +89,6 @@ fn each_change_is_told_once() {
     };
     assert_eq!(
         wide - narrow,
-        preferred_height(800.0, 0.0) - preferred_height(500.0, 0.0)
+        preferred_height(800.0, 0.0) - preferred_height(720.0, 0.0)
     );
 }

@@ -60,6 +60,16 @@ impl Rect {
             && self.y + self.h <= outer.y + outer.h + 1.0
     }
 
+    /// A pixel inside each edge: rectangles that only touch do not meet.
+    fn inset(self) -> Self {
+        Self {
+            x: self.x + 1.0,
+            y: self.y + 1.0,
+            w: self.w - 2.0,
+            h: self.h - 2.0,
+        }
+    }
+
     fn centre(self) -> (f64, f64) {
         (self.x + self.w / 2.0, self.y + self.h / 2.0)
     }
@@ -122,27 +132,14 @@ impl Seen<'_> {
         for (name, panel) in panels {
             let panel = Rect::of(panel)?;
             for (other, rect) in panels.iter().filter(|(other, _)| *other > name) {
-                let rect = Rect::of(rect)?;
-                let overlap = Rect {
-                    x: rect.x + 1.0,
-                    y: rect.y + 1.0,
-                    w: rect.w - 2.0,
-                    h: rect.h - 2.0,
-                };
                 ensure!(
-                    !panel.intersects(overlap),
+                    !panel.intersects(Rect::of(rect)?.inset()),
                     "the {name} and {other} panels do not overlap; {at}"
                 );
             }
             ensure!(panel.inside(window), "the {name} panel is on screen; {at}");
-            let inner = Rect {
-                x: view.x + 1.0,
-                y: view.y + 1.0,
-                w: view.w - 2.0,
-                h: view.h - 2.0,
-            };
             ensure!(
-                !panel.intersects(inner),
+                !panel.intersects(view.inset()),
                 "the {name} panel leaves the view alone; {at}"
             );
         }
@@ -205,12 +202,11 @@ impl Seen<'_> {
         if let Some(button) = find(bar, name) {
             self.press(button?.centre()).await?;
         } else {
-            let fold =
-                find(bar, "☰ Menu").with_context(|| format!("no {name} or ☰ Menu: {layout}"))?;
+            let fold = find(bar, "Menu").with_context(|| format!("no {name} or Menu: {layout}"))?;
             self.press(fold?.centre()).await?;
-            self.menu_opens("☰ Menu").await?;
+            self.menu_opens("Menu").await?;
             let layout = self.layout().await?;
-            let menu = menu(&layout, "☰ Menu")?;
+            let menu = menu(&layout, "Menu")?;
             let commands = menu["commands"].as_array().context("commands")?;
             let window = Rect::of(&layout["window"])?;
             for command in commands {

@@ -59,7 +59,7 @@ pub(super) struct Sheet {
 
 /// How controls are sized (for a pointer, or for a finger) and how wide
 /// the top bar is.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(super) struct Sizing {
     /// A touch has been seen, or the browser says its pointer is coarse.
     touch: bool,
@@ -67,6 +67,18 @@ pub(super) struct Sizing {
     /// The width, in points, the top bar needs to show every command, as
     /// last measured unfolded.
     bar_width: f32,
+}
+
+impl Default for Sizing {
+    fn default() -> Self {
+        Self {
+            touch: false,
+            applied: None,
+            // As measured in the app's fonts, so that the first frames do
+            // not fold and unfold the bar (and the embedding page's frame).
+            bar_width: 912.0,
+        }
+    }
 }
 
 /// How the window is laid out at a width of `width` points.
@@ -89,17 +101,27 @@ impl EdgewiseApp {
                     .any(|event| matches!(event, egui::Event::Touch { .. }))
         });
         self.sizing.touch |= touched || crate::platform::coarse_pointer();
-        let touch = self.sizing.touch || self.layout.compact;
-        if self.sizing.applied != Some(touch) {
-            // egui's own height, for a mouse.
-            let height = if touch {
-                TOUCH_TARGET
-            } else {
-                egui::style::Spacing::default().interact_size.y
-            };
-            ctx.global_style_mut(|style| style.spacing.interact_size.y = height);
-            self.sizing.applied = Some(touch);
+        let narrow = ctx.content_rect().width() < COMPACT_WIDTH;
+        let touch = self.sizing.touch || narrow;
+        // Not in the middle of a press: the first tap, which tells a touch
+        // screen, must still land on the control it was aimed at.
+        let pressing = ctx
+            .input(|i| i.pointer.any_down() || i.pointer.any_pressed() || i.pointer.any_released());
+        if self.sizing.applied == Some(touch) {
+            return;
         }
+        if pressing {
+            ctx.request_repaint();
+            return;
+        }
+        // egui's own height, for a mouse.
+        let height = if touch {
+            TOUCH_TARGET
+        } else {
+            egui::style::Spacing::default().interact_size.y
+        };
+        ctx.global_style_mut(|style| style.spacing.interact_size.y = height);
+        self.sizing.applied = Some(touch);
     }
 
     /// How a window `width` points wide is laid out.
@@ -118,7 +140,7 @@ impl EdgewiseApp {
 
     /// The top bar's menu of everything on a small screen.
     pub(super) fn compact_menu_ui(&mut self, ui: &mut egui::Ui) {
-        self.menu_ui(ui, "☰ Menu", Self::commands_ui);
+        self.menu_ui(ui, "Menu", Self::commands_ui);
     }
 
     /// A menu button of the top bar: the button is listed in
@@ -224,7 +246,9 @@ impl EdgewiseApp {
                 }
             })
             .response
-            .rect;
+            .rect
+            // What shows: content taller than the sheet is cut at the window.
+            .intersect(ui.ctx().content_rect());
         self.layout.panels.insert(front.panel(), rect.into());
         Some((rect, front.part()))
     }
