@@ -1143,7 +1143,10 @@ impl EdgewiseApp {
                     })
                     .response
                     .rect;
-                self.layout.panels.insert("algorithm", rect.into());
+                // What shows: content wider than the panel is cut.
+                self.layout
+                    .panels
+                    .insert("algorithm", rect.intersect(window).into());
                 part(rect, first_visit::ALGORITHM);
             }
             if self.show_obj_editor && presenting.is_none() {
@@ -1156,7 +1159,7 @@ impl EdgewiseApp {
                     });
                 self.layout
                     .panels
-                    .insert("objEditor", editor.response.rect.into());
+                    .insert("objEditor", editor.response.rect.intersect(window).into());
             }
             if tables {
                 let rect = egui::Panel::bottom("tables")
@@ -1166,7 +1169,9 @@ impl EdgewiseApp {
                     .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                     .response
                     .rect;
-                self.layout.panels.insert("tables", rect.into());
+                self.layout
+                    .panels
+                    .insert("tables", rect.intersect(window).into());
                 chrome += part(rect, first_visit::TABLES);
             }
         }
