@@ -726,56 +726,54 @@ impl EdgewiseApp {
     }
 
     fn view_options_ui(&mut self, ui: &mut egui::Ui) {
+        let options = &mut self.view_options;
+        ui.label("Draw ids");
+        ui.horizontal(|ui| {
+            ui.selectable_value(&mut options.draw_ids, DrawIds::Highlighted, "Highlighted");
+            ui.selectable_value(&mut options.draw_ids, DrawIds::Always, "Always");
+            ui.selectable_value(&mut options.draw_ids, DrawIds::Never, "Never");
+        });
+        ui.add(egui::Slider::new(&mut options.mesh_scale, 0.25..=4.0).text("Mesh scale"));
+        ui.add(egui::Slider::new(&mut options.label_scale, 0.5..=3.0).text("Label scale"));
+        ui.checkbox(&mut options.show_axes, "Axes");
+        ui.checkbox(&mut options.show_orientation, "Face orientation");
+        ui.checkbox(&mut options.solid_faces, "Solid faces");
+        if ui
+            .button("Statistics")
+            .on_hover_text("V, E, F, V − E + F, genus, boundary loops, components and warnings")
+            .clicked()
         {
-            let options = &mut self.view_options;
-            ui.label("Draw ids");
-            ui.horizontal(|ui| {
-                ui.selectable_value(&mut options.draw_ids, DrawIds::Highlighted, "Highlighted");
-                ui.selectable_value(&mut options.draw_ids, DrawIds::Always, "Always");
-                ui.selectable_value(&mut options.draw_ids, DrawIds::Never, "Never");
-            });
-            ui.add(egui::Slider::new(&mut options.mesh_scale, 0.25..=4.0).text("Mesh scale"));
-            ui.add(egui::Slider::new(&mut options.label_scale, 0.5..=3.0).text("Label scale"));
-            ui.checkbox(&mut options.show_axes, "Axes");
-            ui.checkbox(&mut options.show_orientation, "Face orientation");
-            ui.checkbox(&mut options.solid_faces, "Solid faces");
-            if ui
-                .button("Statistics")
-                .on_hover_text("V, E, F, V − E + F, genus, boundary loops, components and warnings")
-                .clicked()
-            {
-                self.show_statistics = true;
-            }
-            if ui.button("Frame the mesh").clicked() {
-                self.tab_mut().view.frame_all();
-            }
-            let mut side_by_side = self.side_by_side;
-            if ui
-                .checkbox(&mut side_by_side, "Winged-edge and half-edge side by side")
-                .changed()
-            {
-                self.issue(Command::SetSideBySide(side_by_side));
-            }
-            ui.separator();
-            let theme_label = if self.theme.dark {
-                "Light theme"
-            } else {
-                "Dark theme"
-            };
-            if ui.button(theme_label).clicked() {
-                self.toggle_theme();
-            }
-            if ui.button("Settings…").clicked() {
-                self.show_settings = true;
-            }
-            self.present_menu_ui(ui);
-            if ui
-                .button("New tab")
-                .on_hover_text("Open another mesh beside this one, in a tab")
-                .clicked()
-            {
-                self.new_tab();
-            }
+            self.show_statistics = true;
+        }
+        if ui.button("Frame the mesh").clicked() {
+            self.tab_mut().view.frame_all();
+        }
+        let mut side_by_side = self.side_by_side;
+        if ui
+            .checkbox(&mut side_by_side, "Winged-edge and half-edge side by side")
+            .changed()
+        {
+            self.issue(Command::SetSideBySide(side_by_side));
+        }
+        ui.separator();
+        let theme_label = if self.theme.dark {
+            "Light theme"
+        } else {
+            "Dark theme"
+        };
+        if ui.button(theme_label).clicked() {
+            self.toggle_theme();
+        }
+        if ui.button("Settings…").clicked() {
+            self.show_settings = true;
+        }
+        self.present_menu_ui(ui);
+        if ui
+            .button("New tab")
+            .on_hover_text("Open another mesh beside this one, in a tab")
+            .clicked()
+        {
+            self.new_tab();
         }
     }
 
@@ -1130,7 +1128,7 @@ impl EdgewiseApp {
         if fit.sheet {
             let offered = self.sheet_tabs(tables, algorithm);
             if let Some((rect, shown)) = self.sheet_ui(ui, &offered) {
-                chrome += part(rect, shown);
+                chrome += part(rect.intersect(window), shown);
             }
         } else {
             if algorithm {
@@ -1143,10 +1141,7 @@ impl EdgewiseApp {
                     })
                     .response
                     .rect;
-                // What shows: content wider than the panel is cut.
-                self.layout
-                    .panels
-                    .insert("algorithm", rect.intersect(window).into());
+                self.layout.panels.insert("algorithm", rect.into());
                 part(rect, first_visit::ALGORITHM);
             }
             if self.show_obj_editor && presenting.is_none() {
@@ -1159,7 +1154,7 @@ impl EdgewiseApp {
                     });
                 self.layout
                     .panels
-                    .insert("objEditor", editor.response.rect.intersect(window).into());
+                    .insert("objEditor", editor.response.rect.into());
             }
             if tables {
                 let rect = egui::Panel::bottom("tables")
@@ -1169,9 +1164,7 @@ impl EdgewiseApp {
                     .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                     .response
                     .rect;
-                self.layout
-                    .panels
-                    .insert("tables", rect.intersect(window).into());
+                self.layout.panels.insert("tables", rect.into());
                 chrome += part(rect, first_visit::TABLES);
             }
         }
@@ -1194,6 +1187,11 @@ impl EdgewiseApp {
         self.layout.step_controls = self.algorithms.step_controls.take().map(Into::into);
         if let Some(top_bar) = parts.iter().find(|p| p.title == first_visit::TOP_BAR.0) {
             self.layout.panels.insert("topBar", top_bar.rect.into());
+        }
+        // What shows: a panel's content larger than the panel is cut at the
+        // window, and egui reports the panel as large as its content.
+        for panel in self.layout.panels.values_mut() {
+            *panel = panel.within(window);
         }
         self.screen_parts = parts;
         self.presentation_hint_ui(ui.ctx());

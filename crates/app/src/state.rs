@@ -138,6 +138,13 @@ impl RectState {
     pub fn area(&self) -> f32 {
         self.w * self.h
     }
+
+    /// The part of this rectangle inside `bounds`.
+    pub fn within(self, bounds: egui::Rect) -> Self {
+        egui::Rect::from_min_size(egui::pos2(self.x, self.y), egui::vec2(self.w, self.h))
+            .intersect(bounds)
+            .into()
+    }
 }
 
 /// What is where, with only what is on screen: `{window, view,
@@ -194,7 +201,9 @@ pub struct MenuLayout {
 
 impl MenuLayout {
     /// Reads what `ui`, a menu's contents after they are drawn, holds: the
-    /// clickable widgets on its layer.
+    /// clickable widgets on its layer. An entry is in sight when it is on
+    /// screen and its parent's clip (a scroll area's viewport) cuts none of
+    /// it.
     pub fn of(ui: &egui::Ui, name: &'static str) -> Self {
         let layer = ui.layer_id();
         let visible_area = ui.ctx().content_rect().intersect(ui.clip_rect());
@@ -205,7 +214,8 @@ impl MenuLayout {
                     continue;
                 }
                 entries += 1;
-                last_visible = visible_area.contains_rect(widget.rect);
+                last_visible = visible_area.contains_rect(widget.rect)
+                    && widget.interact_rect.height() >= widget.rect.height() - 0.5;
                 visible += usize::from(last_visible);
             }
         });

@@ -86,6 +86,18 @@ fn the_algorithm_menu_scrolls_in_a_short_window() {
         bottom(&harness, "Write or open an algorithm…") > 600.0,
         "the menu fits the window: nothing to scroll"
     );
+    let menu = |harness: &support::AppHarness| {
+        layout(harness)
+            .menus
+            .into_iter()
+            .find(|m| m.name == "Algorithm")
+            .expect("state().layout lists the open Algorithm menu")
+    };
+    let before = menu(&harness);
+    assert!(
+        !before.last_entry_visible && before.visible_entries < before.entries,
+        "entries scrolled out of the menu are not in sight: {before:?}"
+    );
     if let Some(first) = harness.get_all_by_label("vertexAdjacentEdge").next() {
         first.hover();
     }
@@ -103,6 +115,7 @@ fn the_algorithm_menu_scrolls_in_a_short_window() {
         bottom(&harness, "Write or open an algorithm…") <= 600.0,
         "the last entry cannot be scrolled into view"
     );
+    assert!(menu(&harness).last_entry_visible, "{:?}", menu(&harness));
 }
 
 /// An embedded view without code or tables asks its questions in its own

@@ -469,9 +469,6 @@ impl Browser {
             json!({ "type": "mouseMoved", "x": x, "y": y }),
         )
         .await?;
-        // A frame between, as a hand takes: a slow frame (a large canvas
-        // under a software renderer) then sees the pointer arrive first.
-        self.next_frame().await?;
         for kind in ["mousePressed", "mouseReleased"] {
             self.cdp(
                 "Input.dispatchMouseEvent",

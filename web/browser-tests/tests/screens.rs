@@ -85,12 +85,9 @@ struct Seen<'a> {
 impl Seen<'_> {
     async fn layout(&self) -> anyhow::Result<Value> {
         // Two frames, so that the layout is of what the last command did.
-        self.browser
-            .eval_async(
-                "new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))\
-                 .then(() => window.edgewise.state().layout)",
-            )
-            .await
+        self.browser.next_frame().await?;
+        self.browser.next_frame().await?;
+        Ok(self.browser.state().await?["layout"].take())
     }
 
     /// Clicks or taps, as the screen is used. A click's press and release

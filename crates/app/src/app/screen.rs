@@ -91,8 +91,9 @@ pub(super) struct Fit {
 }
 
 impl EdgewiseApp {
-    /// Sizes the controls for touch once a touch is seen, the browser
-    /// reports a coarse pointer, or the layout is compact.
+    /// Sizes the controls for touch once a touch is seen, when the browser
+    /// reports a coarse pointer (asked once, at the first frame), or on a
+    /// small screen.
     pub(super) fn size_controls(&mut self, ctx: &egui::Context) {
         let touched = ctx.input(|i| {
             i.any_touches()
@@ -100,16 +101,17 @@ impl EdgewiseApp {
                     .iter()
                     .any(|event| matches!(event, egui::Event::Touch { .. }))
         });
-        self.sizing.touch |= touched || crate::platform::coarse_pointer();
+        let first_frame = self.sizing.applied.is_none();
+        self.sizing.touch |= touched || (first_frame && crate::platform::coarse_pointer());
         let narrow = ctx.content_rect().width() < COMPACT_WIDTH;
         let touch = self.sizing.touch || narrow;
+        if self.sizing.applied == Some(touch) {
+            return;
+        }
         // Not in the middle of a press: the first tap, which tells a touch
         // screen, must still land on the control it was aimed at.
         let pressing = ctx
             .input(|i| i.pointer.any_down() || i.pointer.any_pressed() || i.pointer.any_released());
-        if self.sizing.applied == Some(touch) {
-            return;
-        }
         if pressing {
             ctx.request_repaint();
             return;
@@ -246,9 +248,7 @@ impl EdgewiseApp {
                 }
             })
             .response
-            .rect
-            // What shows: content taller than the sheet is cut at the window.
-            .intersect(ui.ctx().content_rect());
+            .rect;
         self.layout.panels.insert(front.panel(), rect.into());
         Some((rect, front.part()))
     }
