@@ -55,6 +55,9 @@ pub struct Algorithms {
     /// Where the step controls were drawn this frame, for
     /// `state().layout.stepControls`; the app takes it after each frame.
     pub step_controls: Option<egui::Rect>,
+    /// The panel is a small screen's sheet, which scrolls: the source keeps
+    /// a least height instead of taking what the controls leave.
+    pub in_sheet: bool,
 }
 
 impl Default for Algorithms {
@@ -68,6 +71,7 @@ impl Default for Algorithms {
             code_size: 14.0,
             highlighted: None,
             step_controls: None,
+            in_sheet: false,
         }
     }
 }

@@ -1087,6 +1087,7 @@ impl EdgewiseApp {
         // wide table) can squeeze the 3D view away.
         let window = ui.max_rect();
         let fit = self.fit(window.width());
+        self.algorithms.in_sheet = fit.sheet;
         self.layout = crate::state::LayoutState {
             window: window.into(),
             compact: fit.folded_bar,

@@ -99,7 +99,10 @@ pub fn table_ui(
     let rows = mesh.count(kind);
     let drawn_id = ui.make_persistent_id(("edgewise drawn rows", kind));
     let drawn = ui.data(|d| d.get_temp::<DrawnRows>(drawn_id));
-    let pitch = ROW_HEIGHT + ui.spacing().item_spacing.y;
+    // On a touch screen a row is as tall as a touch target, so that its id
+    // (a button) lies inside its own row.
+    let row_height = ROW_HEIGHT.max(ui.spacing().interact_size.y);
+    let pitch = row_height + ui.spacing().item_spacing.y;
 
     let mut table = TableBuilder::new(ui)
         .id_salt(kind)
@@ -147,7 +150,7 @@ pub fn table_ui(
                 .ui_mut()
                 .data(|d| d.get_temp::<CellEdit>(cell_edit_id()))
                 .and_then(|edit| edit.cell);
-            body.rows(ROW_HEIGHT, rows, |mut row| {
+            body.rows(row_height, rows, |mut row| {
                 drawn_now.first = drawn_now.first.min(row.index());
                 drawn_now.last = drawn_now.last.max(row.index());
                 let id = row.index() as u32;

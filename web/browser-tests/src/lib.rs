@@ -32,6 +32,21 @@ pub const FIRE_MOUSE: &str = "
   };
 ";
 
+/// JavaScript that declares `fireTouch(type, x, y)`: the touch event `type`
+/// (`'start'`, `'move'`, `'end'`) of one finger at client `(x, y)` on the
+/// canvas, as a touch screen sends it.
+pub const FIRE_TOUCH: &str = "
+  const fireTouch = (type, x, y) => {
+    const canvas = document.querySelector('canvas');
+    const touch = new Touch({ identifier: 1, target: canvas, clientX: x, clientY: y,
+                              pageX: x, pageY: y, screenX: x, screenY: y });
+    const held = type === 'end' ? [] : [touch];
+    canvas.dispatchEvent(new TouchEvent('touch' + type, {
+      touches: held, targetTouches: held, changedTouches: [touch],
+      bubbles: true, cancelable: true }));
+  };
+";
+
 /// Statements that press the mouse in the middle of `canvas` (declared by
 /// [`Browser::canvas_when`]) and drag it left and right, a pointer move per
 /// animation frame, until `window.__release` is set; the mouse is then
@@ -443,22 +458,39 @@ impl Browser {
         Ok(())
     }
 
-    /// Taps with one finger at `(x, y)` CSS pixels of the page.
+    /// Taps with one finger at `(x, y)` CSS pixels of the page. The touch
+    /// starts and ends in one task, so that both reach the same frame: under
+    /// a software renderer a large page's frame can outlast egui's longest
+    /// click.
     pub async fn tap_at(&self, x: f64, y: f64) -> anyhow::Result<()> {
-        let point = json!([{ "x": x, "y": y, "id": 1 }]);
-        self.cdp(
-            "Input.dispatchTouchEvent",
-            json!({ "type": "touchStart", "touchPoints": point }),
-        )
-        .await?;
-        // No frame between: under a software renderer a large page's frame
-        // can outlast egui's longest click.
-        self.cdp(
-            "Input.dispatchTouchEvent",
-            json!({ "type": "touchEnd", "touchPoints": [] }),
-        )
-        .await?;
-        Ok(())
+        self.eval(&format!(
+            "{FIRE_TOUCH}
+             fireTouch('start', {x}, {y});
+             fireTouch('end', {x}, {y});
+             return null;"
+        ))
+        .await
+        .map(drop)
+    }
+
+    /// Drags one finger from `(x, y)` by `dy` CSS pixels, a move per
+    /// animation frame, as a thumb scrolls a list.
+    pub async fn swipe(&self, x: f64, y: f64, dy: f64) -> anyhow::Result<()> {
+        self.eval_async(&format!(
+            "(async () => {{
+             {FIRE_TOUCH}
+             fireTouch('start', {x}, {y});
+             const steps = 8;
+             for (let i = 1; i <= steps; i++) {{
+               await new Promise((r) => requestAnimationFrame(r));
+               fireTouch('move', {x}, {y} + {dy} * i / steps);
+             }}
+             await new Promise((r) => requestAnimationFrame(r));
+             fireTouch('end', {x}, {y} + {dy});
+             }})()"
+        ))
+        .await
+        .map(drop)
     }
 
     /// Clicks with `button` (`"left"`, `"right"`) at `(x, y)` CSS pixels of

@@ -20,6 +20,10 @@ use super::{
 };
 use crate::{command::Command, theme::Theme};
 
+/// The least height of the source listing, in points: a dozen lines, when
+/// the panel is a phone's sheet and everything above it scrolls away.
+const SOURCE_LEAST_HEIGHT: f32 = 240.0;
+
 impl Algorithms {
     /// Draws the algorithm view. Returns what the user asked for, for the
     /// app to carry out.
@@ -96,29 +100,61 @@ impl Algorithms {
         let session = run.session()?;
         let algorithm = Arc::clone(session.trace.algorithm());
         let (step, steps, playing) = (session.step(), session.steps(), session.playing);
+        if self.in_sheet {
+            // A phone's sheet: the step controls stay put at its top and the
+            // rest scrolls beneath them, so a step is always one tap away.
+            let control = self.controls_ui(run, ui, step, steps, playing);
+            let rest = egui::ScrollArea::vertical()
+                .id_salt("sheet_trace")
+                .auto_shrink(false)
+                .show(ui, |ui| {
+                    header_ui(ui, &algorithm);
+                    self.trace_state_ui(run, ui, &algorithm, theme)
+                })
+                .inner;
+            return control.or(rest);
+        }
         header_ui(ui, &algorithm);
         let control = self.controls_ui(run, ui, step, steps, playing);
+        control.or(self.trace_state_ui(run, ui, &algorithm, theme))
+    }
+
+    /// The question asked at the step, the step's status, the variables, the
+    /// source with its current line, and the legend.
+    fn trace_state_ui(
+        &mut self,
+        run: &mut AlgorithmRun,
+        ui: &mut egui::Ui,
+        algorithm: &Arc<Algorithm>,
+        theme: &Theme,
+    ) -> Option<Command> {
         let everything = Shown {
             code: true,
             tables: true,
         };
         let answered = question_ui(run, ui, theme, everything);
-        let control = control.or(answered);
         let breakpoints = self.breakpoints(run.algorithm());
         let Some(frame) = run.frame(theme).cloned() else {
-            return control;
+            return answered;
         };
         status_ui(ui, &frame, theme);
         ui.add_space(4.0);
         variables_ui(ui, &frame, theme);
         ui.separator();
-        // The legend first, at the bottom, so the source takes the height
-        // its rows leave, however many the panel's width wraps them into.
-        egui::Panel::bottom("algorithm_legend")
-            .frame(egui::Frame::NONE.inner_margin(egui::Margin::symmetric(0, 4)))
-            .show(ui, |ui| legend_ui(ui, theme));
-        let toggled = self.source_ui(run, ui, &algorithm, &frame, &breakpoints, theme);
-        control.or(toggled)
+        // Where the panel has room, the legend goes first, at the bottom, so
+        // the source takes the height its rows leave, however many rows the
+        // panel's width wraps the legend into. In a phone's sheet, which
+        // scrolls, the source keeps a least height and the legend follows.
+        if !self.in_sheet {
+            egui::Panel::bottom("algorithm_legend")
+                .frame(egui::Frame::NONE.inner_margin(egui::Margin::symmetric(0, 4)))
+                .show(ui, |ui| legend_ui(ui, theme));
+        }
+        let toggled = self.source_ui(run, ui, algorithm, &frame, &breakpoints, theme);
+        if self.in_sheet {
+            legend_ui(ui, theme);
+        }
+        answered.or(toggled)
     }
 
     /// The step buttons, the step slider and the delay, and the question
@@ -292,78 +328,81 @@ impl Algorithms {
         let highlighted = self.highlighted(&source).clone();
         let mut toggled = None;
         let mut scrolled = false;
-        egui::ScrollArea::both()
+        let mut area = egui::ScrollArea::both()
             .id_salt("algorithm_source")
             .auto_shrink([false, false])
-            .max_height(ui.available_height())
-            .show(ui, |ui| {
-                ui.spacing_mut().item_spacing.y = 0.0;
-                for (number, range) in lines {
-                    let current = frame.step > 0 && number == frame.line;
-                    let background = ui.painter().add(egui::Shape::Noop);
-                    let row = ui.horizontal(|ui| {
-                        let (rect, response) =
-                            ui.allocate_exact_size(vec2(gutter, row_height), Sense::click());
-                        let has_breakpoint = breakpoints.contains(&number);
-                        let painter = ui.painter();
-                        if has_breakpoint {
-                            painter.circle_filled(
-                                rect.left_center() + vec2(8.0, 0.0),
-                                row_height * 0.28,
-                                Color32::from_rgb(0xd0, 0x30, 0x30),
-                            );
-                        }
-                        painter.text(
-                            rect.right_center() - vec2(6.0, 0.0),
-                            egui::Align2::RIGHT_CENTER,
-                            number.to_string(),
-                            style.font.clone(),
-                            ui.visuals().weak_text_color(),
+            .max_height(ui.available_height());
+        if self.in_sheet {
+            area = area.min_scrolled_height(SOURCE_LEAST_HEIGHT);
+        }
+        area.show(ui, |ui| {
+            ui.spacing_mut().item_spacing.y = 0.0;
+            for (number, range) in lines {
+                let current = frame.step > 0 && number == frame.line;
+                let background = ui.painter().add(egui::Shape::Noop);
+                let row = ui.horizontal(|ui| {
+                    let (rect, response) =
+                        ui.allocate_exact_size(vec2(gutter, row_height), Sense::click());
+                    let has_breakpoint = breakpoints.contains(&number);
+                    let painter = ui.painter();
+                    if has_breakpoint {
+                        painter.circle_filled(
+                            rect.left_center() + vec2(8.0, 0.0),
+                            row_height * 0.28,
+                            Color32::from_rgb(0xd0, 0x30, 0x30),
                         );
-                        let response = response.on_hover_text(if has_breakpoint {
-                            "Remove the breakpoint"
-                        } else {
-                            "Set a breakpoint: Play stops on this line"
-                        });
-                        response.widget_info(|| {
-                            egui::WidgetInfo::labeled(
-                                egui::Role::Button,
-                                true,
-                                format!("breakpoint line {number}"),
-                            )
-                        });
-                        if response.clicked() {
-                            toggled = Some(number);
-                        }
-                        let marks = if current { emphasis.as_slice() } else { &[] };
-                        let job = highlighted.layout(&source, range.clone(), marks, &style);
-                        ui.add(egui::Label::new(job).extend());
+                    }
+                    painter.text(
+                        rect.right_center() - vec2(6.0, 0.0),
+                        egui::Align2::RIGHT_CENTER,
+                        number.to_string(),
+                        style.font.clone(),
+                        ui.visuals().weak_text_color(),
+                    );
+                    let response = response.on_hover_text(if has_breakpoint {
+                        "Remove the breakpoint"
+                    } else {
+                        "Set a breakpoint: Play stops on this line"
                     });
-                    let rect = row.response.rect;
-                    if current {
-                        ui.painter().set(
-                            background,
-                            egui::Shape::rect_filled(
-                                egui::Rect::from_min_max(
-                                    rect.min,
-                                    egui::pos2(ui.max_rect().right(), rect.max.y),
-                                ),
-                                2.0,
-                                line_fill,
+                    response.widget_info(|| {
+                        egui::WidgetInfo::labeled(
+                            egui::Role::Button,
+                            true,
+                            format!("breakpoint line {number}"),
+                        )
+                    });
+                    if response.clicked() {
+                        toggled = Some(number);
+                    }
+                    let marks = if current { emphasis.as_slice() } else { &[] };
+                    let job = highlighted.layout(&source, range.clone(), marks, &style);
+                    ui.add(egui::Label::new(job).extend());
+                });
+                let rect = row.response.rect;
+                if current {
+                    ui.painter().set(
+                        background,
+                        egui::Shape::rect_filled(
+                            egui::Rect::from_min_max(
+                                rect.min,
+                                egui::pos2(ui.max_rect().right(), rect.max.y),
                             ),
+                            2.0,
+                            line_fill,
+                        ),
+                    );
+                    if needs_scroll {
+                        // At once, as the tables do (`tables::table_ui`).
+                        ui.scroll_to_rect_animation(
+                            rect,
+                            Some(Align::Center),
+                            egui::style::ScrollAnimation::none(),
                         );
-                        if needs_scroll {
-                            // At once, as the tables do (`tables::table_ui`).
-                            ui.scroll_to_rect_animation(
-                                rect,
-                                Some(Align::Center),
-                                egui::style::ScrollAnimation::none(),
-                            );
-                            scrolled = true;
-                        }
+                        scrolled = true;
                     }
                 }
-            });
+            }
+        });
         if scrolled || frame.step == 0 {
             run.scrolled_to = Some((0, scroll_key as usize));
         }

@@ -318,8 +318,12 @@ impl EdgewiseApp {
         ui.separator();
         match self.algorithm_tab {
             AlgorithmTab::Run => {
-                self.mesh_status_ui(ui);
-                ui.separator();
+                // A phone's sheet keeps its height for the trace: the top bar
+                // already counts the mesh's elements.
+                if !(self.algorithms.in_sheet && self.tab().run.is_active()) {
+                    self.mesh_status_ui(ui);
+                    ui.separator();
+                }
                 let tab = &mut self.tabs[self.active_tab];
                 let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
                 if let Some(command) = self

@@ -31,6 +31,9 @@ const EDGE_OPERATIONS: [Operation; 6] = [
 /// dangling edges), so that a huge face keeps the menu on screen.
 const MAX_ENTRIES: usize = 24;
 
+/// The width an entry leaves for its small trace button and the gap before it.
+const TRACE_BUTTON_ROOM: f32 = 64.0;
+
 /// One operation on the element, and why it would be refused, if it would.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct MenuEntry {
@@ -230,7 +233,15 @@ impl EdgewiseApp {
                     for entry in &menu.entries {
                         ui.horizontal(|ui| {
                             let enabled = entry.refusal.is_none();
-                            let button = ui.add_enabled(enabled, egui::Button::new(&entry.label));
+                            // A long entry wraps on a phone rather than
+                            // pushing its trace button off the screen.
+                            let room = ui.available_width() - TRACE_BUTTON_ROOM;
+                            let button = ui
+                                .scope(|ui| {
+                                    ui.set_max_width(room);
+                                    ui.add_enabled(enabled, egui::Button::new(&entry.label).wrap())
+                                })
+                                .inner;
                             let button = match &entry.refusal {
                                 Some(reason) => button.on_disabled_hover_text(reason),
                                 None => button,
