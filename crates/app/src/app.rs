@@ -653,7 +653,7 @@ impl EdgewiseApp {
                 let mesh = doc.mesh();
                 let summary = format!(
                     "{}: {} vertices, {} edges, {} faces",
-                    doc.name,
+                    shown_name(&doc.name, mesh.structure()),
                     mesh.vertex_count(),
                     mesh.edge_count(),
                     mesh.face_count()
@@ -792,7 +792,7 @@ impl EdgewiseApp {
         let document = self.tab().document.as_ref()?;
         let text = if let Some(text) = self.algorithm_message() {
             text
-        } else if let Some(pick) = hovered {
+        } else if let Some(pick) = hovered.filter(|&h| document.selection() != Some(h)) {
             format!("{}: click to select", titled(document.mesh(), pick))
         } else if let Some(first) = document.highlights().first() {
             let refs: Vec<String> = document.highlights()[1..]
@@ -913,15 +913,20 @@ impl EdgewiseApp {
             let title = titles.iter().find(|(k, _)| *k == shown).map_or("", |t| t.1);
             table(ui, shown, title);
         } else {
-            StripBuilder::new(ui)
-                .size(Size::relative(0.17).at_least(150.0))
-                .size(Size::remainder().at_least(300.0))
-                .size(Size::relative(0.28).at_least(220.0))
-                .horizontal(|mut strip| {
-                    for (kind, title) in titles {
-                        strip.cell(|ui| table(ui, kind, title));
-                    }
-                });
+            // Each table's share of the width is what its references need,
+            // so that a narrow panel (beside a run) cuts the labels first.
+            let structure = document.mesh().structure();
+            let needs = titles.map(|(kind, _)| tables::references_width(ui, structure, kind));
+            let total: f32 = needs.iter().sum();
+            let mut strip = StripBuilder::new(ui);
+            for need in needs {
+                strip = strip.size(Size::relative(need / total));
+            }
+            strip.horizontal(|mut strip| {
+                for (kind, title) in titles {
+                    strip.cell(|ui| table(ui, kind, title));
+                }
+            });
         }
         if chosen_table.is_some() {
             self.narrow_table = chosen_table;
@@ -937,10 +942,7 @@ impl EdgewiseApp {
         if let Some((element, column, typed)) = response.set_cell {
             let command = typed.map(|target| Command::SetCell {
                 element,
-                column: column
-                    .language_name()
-                    .unwrap_or(column.record_name())
-                    .to_owned(),
+                column: column.lookup_name().to_owned(),
                 target,
             });
             match command {
@@ -1204,6 +1206,22 @@ impl EdgewiseApp {
     }
 }
 
+/// A mesh's name as the top bar shows it: a table file of the other
+/// structure says what it is shown as ("tetrahedron.wtb, shown as
+/// half-edge"), so a student never reads one structure's name over the
+/// other's tables.
+fn shown_name(name: &str, structure: Structure) -> std::borrow::Cow<'_, str> {
+    let other = structure.other();
+    let extension = std::path::Path::new(name)
+        .extension()
+        .and_then(std::ffi::OsStr::to_str);
+    if extension.is_some_and(|e| e.eq_ignore_ascii_case(other.table_extension())) {
+        format!("{name}, shown as {}", structure.prose()).into()
+    } else {
+        name.into()
+    }
+}
+
 /// The least width, in points, in which the three tables fit side by side.
 const TABLES_SIDE_BY_SIDE: f32 = 690.0;
 
@@ -1352,4 +1370,26 @@ fn table_neighbour(
     };
     ids.map(|id| ElementRef::new(kind, id))
         .find(|&element| mesh.contains(element))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_table_file_of_the_other_structure_says_what_it_is_shown_as() {
+        assert_eq!(
+            shown_name("tetrahedron.wtb", Structure::HalfEdge),
+            "tetrahedron.wtb, shown as half-edge"
+        );
+        assert_eq!(
+            shown_name("tetrahedron.wtb", Structure::WingedEdge),
+            "tetrahedron.wtb"
+        );
+        assert_eq!(
+            shown_name("cube.HTB", Structure::WingedEdge),
+            "cube.HTB, shown as winged-edge"
+        );
+        assert_eq!(shown_name("bunny.obj", Structure::HalfEdge), "bunny.obj");
+    }
 }

@@ -5,7 +5,7 @@
 //! a link: clicking it selects that element, so a student can walk the
 //! structure from the tables alone.
 
-use edgewise_core::mesh::{Mesh, VertexId};
+use edgewise_core::mesh::{Mesh, Structure, VertexId};
 use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
 use egui::{RichText, emath::GuiRounding as _};
 use egui_extras::TableBuilder;
@@ -13,6 +13,73 @@ use egui_extras::TableBuilder;
 use crate::{paint::Paint, selection::Role};
 
 const ROW_HEIGHT: f32 = 20.0;
+/// The least width of a column after the id column, in points.
+const COLUMN_LEAST_WIDTH: f32 = 40.0;
+
+/// A table's column headers: the id, the columns, the labels.
+struct Headers {
+    full: Vec<&'static str>,
+    /// As the journal's Table 1 shortens them, for narrow tables.
+    short: Vec<&'static str>,
+    /// Whether each column is derived, shown dimmed.
+    derived: Vec<bool>,
+}
+
+impl Headers {
+    fn of(structure: Structure, kind: ElementKind) -> Self {
+        let mut headers = Self {
+            full: vec!["id"],
+            short: vec!["id"],
+            derived: vec![false],
+        };
+        for entry in Column::table(structure, kind) {
+            let (full, short): (&[&str], &[&str]) = match entry.column {
+                Column::Position => (&Column::COORDINATES, &Column::COORDINATES),
+                _ => (
+                    std::slice::from_ref(&entry.header),
+                    std::slice::from_ref(&entry.short),
+                ),
+            };
+            headers.full.extend(full);
+            headers.short.extend(short);
+            headers
+                .derived
+                .extend(full.iter().map(|_| entry.storage == Storage::Derived));
+        }
+        headers.full.push("labels");
+        headers.short.push("labels");
+        headers.derived.push(false);
+        headers
+    }
+}
+
+/// The width a table of `kind` needs for its references to show, with short
+/// headers and without its labels (the last column, which may scroll away).
+/// Side by side, the tables share the width in these proportions.
+pub fn references_width(ui: &egui::Ui, structure: Structure, kind: ElementKind) -> f32 {
+    let headers = Headers::of(structure, kind);
+    let references = &headers.short[..headers.short.len() - 1];
+    headers_width(ui, references)
+}
+
+/// How wide a table is whose headers are `titles`, each column at least as
+/// wide as its header.
+fn headers_width(ui: &egui::Ui, titles: &[&str]) -> f32 {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let gap = ui.spacing().item_spacing.x;
+    titles
+        .iter()
+        .map(|title| {
+            let width = ui.fonts_mut(|f| {
+                f.layout_no_wrap((*title).to_owned(), font.clone(), egui::Color32::WHITE)
+                    .size()
+                    .x
+            });
+            (width + gap).max(COLUMN_LEAST_WIDTH)
+        })
+        .sum()
+}
+
 /// Shown for a missing (boundary) face.
 const NONE: &str = "∅";
 
@@ -82,20 +149,18 @@ pub fn table_ui(
         1.5,
         crate::view3d::Palette::new(ui.visuals().dark_mode).hover,
     );
-    let entries = Column::table(mesh.structure(), kind);
-    let mut headers = vec!["id"];
-    // Whether each header's column is derived, shown dimmed.
-    let mut derived = vec![false];
-    for entry in entries {
-        let names: &[&str] = match entry.column {
-            Column::Position => &Column::COORDINATES,
-            _ => std::slice::from_ref(&entry.header),
-        };
-        headers.extend(names);
-        derived.extend(names.iter().map(|_| entry.storage == Storage::Derived));
-    }
-    headers.push("labels");
-    derived.push(false);
+    let Headers {
+        full: headers,
+        short: shorts,
+        derived,
+    } = Headers::of(mesh.structure(), kind);
+    // The journal's short headers where the full ones would not fit, so
+    // that every column shows without scrolling sideways.
+    let shown = if headers_width(ui, &headers) > ui.available_width() {
+        &shorts
+    } else {
+        &headers
+    };
     let rows = mesh.count(kind);
     let drawn_id = ui.make_persistent_id(("edgewise drawn rows", kind));
     let drawn = ui.data(|d| d.get_temp::<DrawnRows>(drawn_id));
@@ -132,15 +197,18 @@ pub fn table_ui(
         table = table.column(if i + 1 == headers.len() {
             egui_extras::Column::remainder().at_least(60.0)
         } else {
-            egui_extras::Column::auto().at_least(if i == 0 { 36.0 } else { 48.0 })
+            egui_extras::Column::auto().at_least(if i == 0 { 36.0 } else { COLUMN_LEAST_WIDTH })
         });
     }
     table
         .header(ROW_HEIGHT, |mut header| {
-            for (i, title) in headers.iter().enumerate() {
+            for (i, (title, full)) in shown.iter().zip(&headers).enumerate() {
                 header.col(|ui| {
                     let text = RichText::new(*title).strong();
-                    ui.label(if derived[i] { text.weak() } else { text });
+                    let label = ui.label(if derived[i] { text.weak() } else { text });
+                    if title != full {
+                        label.on_hover_text(*full);
+                    }
                 });
             }
         })

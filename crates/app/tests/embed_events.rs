@@ -92,3 +92,61 @@ fn each_change_is_told_once() {
         preferred_height(800.0, 0.0) - preferred_height(720.0, 0.0)
     );
 }
+
+/// An embed's height holds while its questions are asked, answered and
+/// skipped: the card keeps one height for the run, so the text of the page
+/// around the frame does not move.
+#[test]
+fn an_embeds_height_holds_while_questions_come_and_go() {
+    use edgewise_app::command::Command;
+    use edgewise_core::lang::Value;
+    let mut harness = support::harness_sized(720.0, 600.0);
+    harness
+        .state_mut()
+        .set_embed(Some(edgewise_app::Embed { tables: false }));
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", None)
+        .expect("opens");
+    support::run_vertex_adjacent_edge(&mut harness, 1);
+    harness
+        .state_mut()
+        .execute(Command::SetQuestions(
+            include_str!("../../../algorithms/questions/vertex-adjacent-edge.txt").to_owned(),
+        ))
+        .expect("the set reads");
+    harness.run();
+    harness.state_mut().take_embed_events();
+    let mut asked = 0;
+    loop {
+        let trace = harness.state().state().trace.expect("tracing");
+        if trace.done {
+            break;
+        }
+        if let Some(question) = trace.question {
+            asked += 1;
+            // Answers of each kind, some right and some wrong, so that
+            // both verdicts show.
+            let given = match question.expects {
+                "boolean" => Value::Boolean(asked % 2 == 0),
+                "number" => Value::Integer(asked),
+                _ if asked % 2 == 0 => Value::Edge(5),
+                _ => Value::Null,
+            };
+            harness
+                .state_mut()
+                .execute(Command::Answer(given))
+                .unwrap_or_else(|e| panic!("{}: {e}", question.prompt));
+            harness.run();
+        }
+        harness.state_mut().trace_step(1).expect("steps");
+        harness.run();
+        let events = harness.state_mut().take_embed_events();
+        assert!(
+            !names(&events).contains(&"resize"),
+            "at step {}: {events:?}",
+            trace.step
+        );
+    }
+    assert!(asked >= 4, "{asked} questions asked");
+}

@@ -143,3 +143,36 @@ fn an_embed_asks_only_about_what_it_shows() {
         harness.get_by_label(click);
     }
 }
+
+/// With a run open at 1280×800 every column of the winged-edge table shows
+/// inside the tables panel, headed as the journal shortens it ("R succ."),
+/// so the right traversal that vertexAdjacentEdge reads is in sight.
+#[test]
+fn every_edge_column_shows_beside_a_run() {
+    use egui_kittest::kittest::Queryable as _;
+    let mut harness = support::harness_sized(1280.0, 800.0);
+    harness
+        .state_mut()
+        .load_sample("cube", Some(Structure::WingedEdge))
+        .expect("opens");
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), Argument::Number(0.0))],
+        )
+        .expect("starts");
+    harness.run();
+    // The edge table ends where the vertex table's title begins.
+    let vertices = harness.get_by_label("Vertices").rect().left();
+    let edges = harness.get_by_label("Edges").rect().left();
+    for header in [
+        "L face", "R face", "L pred.", "L succ.", "R pred.", "R succ.",
+    ] {
+        let rect = harness.get_by_label(header).rect();
+        assert!(
+            rect.left() >= edges && rect.right() <= vertices,
+            "{header} at {rect:?} shows between {edges} and {vertices}"
+        );
+    }
+}

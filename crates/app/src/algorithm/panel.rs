@@ -24,6 +24,10 @@ use crate::{command::Command, theme::Theme};
 /// the panel is a phone's sheet and everything above it scrolls away.
 const SOURCE_LEAST_HEIGHT: f32 = 240.0;
 
+/// The height an embed keeps for its question card, in points: the
+/// heading, a two-line prompt, the answer buttons and the verdict.
+const EMBED_CARD_HEIGHT: f32 = 150.0;
+
 impl Algorithms {
     /// Draws the algorithm view. Returns what the user asked for, for the
     /// app to carry out.
@@ -174,7 +178,25 @@ impl Algorithms {
             code: false,
             tables,
         };
-        control.or(question_ui(run, ui, theme, shows))
+        if run.session().is_none_or(|s| s.quiz.is_none()) {
+            return control;
+        }
+        // The card keeps one height for the whole run, with or without a
+        // question at the step, so that the page around an embed does not
+        // move as questions come and go (a longer card scrolls).
+        let width = ui.available_width();
+        let answered = ui
+            .allocate_ui(vec2(width, EMBED_CARD_HEIGHT), |ui| {
+                ui.set_min_height(EMBED_CARD_HEIGHT);
+                egui::ScrollArea::vertical()
+                    .id_salt("embed_question")
+                    .max_height(EMBED_CARD_HEIGHT)
+                    .auto_shrink(false)
+                    .show(ui, |ui| question_ui(run, ui, theme, shows))
+                    .inner
+            })
+            .inner;
+        control.or(answered)
     }
 
     fn controls_ui(

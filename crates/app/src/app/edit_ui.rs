@@ -67,8 +67,15 @@ impl EdgewiseApp {
                 .color(colour)
                 .strong(),
             );
+            // In the language's names (successorEdge), at the panel's size.
             for issue in broken.iter().take(LISTED) {
-                ui.label(egui::RichText::new(issue.to_string()).color(colour).small());
+                let line = format!(
+                    "{} {}: {}",
+                    issue.element,
+                    issue.field.lookup_name(),
+                    issue.message
+                );
+                ui.label(egui::RichText::new(line).color(colour));
             }
             if tab.broken_total > LISTED {
                 ui.weak(format!("… and {} more", tab.broken_total - LISTED));

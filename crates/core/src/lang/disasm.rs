@@ -68,12 +68,12 @@ fn instruction_text(algorithm: &Algorithm, op: Op) -> String {
     let name = |reg| algorithm.register_name(reg);
     match op {
         Op::Lookup { dst, base, field } => {
-            let field = field.language_name().unwrap_or(field.record_name());
+            let field = field.lookup_name();
             format!("lookup   {} := {}.{field}", name(dst), name(base))
         }
         Op::Assign { var, src } => format!("assign   {} := {}", name(var), name(src)),
         Op::Write { base, field, src } => {
-            let field = field.language_name().unwrap_or(field.record_name());
+            let field = field.lookup_name();
             format!("write    {}.{field} := {}", name(base), name(src))
         }
         Op::New { dst, kind } => format!("new      {} := {}", name(dst), Type::of_kind(kind)),

@@ -1290,7 +1290,7 @@ impl Trace {
                 old,
                 new,
             } => {
-                let field = field.language_name().unwrap_or(field.record_name());
+                let field = field.lookup_name();
                 format!("write {element}.{field} := {new} (was {old})")
             }
             StepKind::New { element } => format!("new {element}"),

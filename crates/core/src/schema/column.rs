@@ -73,6 +73,9 @@ pub struct TableColumn {
     pub column: Column,
     /// The table header in the app and in `edgewise tables`.
     pub header: &'static str,
+    /// The header where the table is narrow, shortened as the journal's
+    /// Table 1 shortens it ("L pred." for the left traversal's predecessor).
+    pub short: &'static str,
     pub storage: Storage,
 }
 
@@ -244,44 +247,50 @@ mod layout {
     use super::Storage::{Derived, Stored};
     use super::TableColumn;
 
-    const fn col(column: super::Column, header: &'static str) -> TableColumn {
+    const fn col(column: super::Column, header: &'static str, short: &'static str) -> TableColumn {
         TableColumn {
             column,
             header,
+            short,
             storage: Stored,
         }
     }
 
-    const fn derived(column: super::Column, header: &'static str) -> TableColumn {
+    const fn derived(
+        column: super::Column,
+        header: &'static str,
+        short: &'static str,
+    ) -> TableColumn {
         TableColumn {
             column,
             header,
+            short,
             storage: Derived,
         }
     }
 
     pub(super) const VERTEX: &[TableColumn] = &[
-        col(Position, "position"),
-        col(IncidentEdge, "incident edge"),
+        col(Position, "position", "position"),
+        col(IncidentEdge, "incident edge", "inc. edge"),
     ];
-    pub(super) const FACE: &[TableColumn] = &[col(IncidentEdge, "incident edge")];
+    pub(super) const FACE: &[TableColumn] = &[col(IncidentEdge, "incident edge", "inc. edge")];
     pub(super) const WINGED_EDGE: &[TableColumn] = &[
-        col(StartVertex, "start"),
-        col(EndVertex, "end"),
-        col(LeftFace, "left face"),
-        col(RightFace, "right face"),
-        col(LeftPredecessor, "left pred"),
-        col(LeftSuccessor, "left succ"),
-        col(RightPredecessor, "right pred"),
-        col(RightSuccessor, "right succ"),
+        col(StartVertex, "start", "start"),
+        col(EndVertex, "end", "end"),
+        col(LeftFace, "left face", "L face"),
+        col(RightFace, "right face", "R face"),
+        col(LeftPredecessor, "left pred", "L pred."),
+        col(LeftSuccessor, "left succ", "L succ."),
+        col(RightPredecessor, "right pred", "R pred."),
+        col(RightSuccessor, "right succ", "R succ."),
     ];
     pub(super) const HALF_EDGE: &[TableColumn] = &[
-        col(EndVertex, "end vertex"),
-        col(Face, "face"),
-        col(PairEdge, "pair"),
-        col(SuccessorEdge, "successor"),
-        derived(StartVertex, "start vertex"),
-        derived(PredecessorEdge, "predecessor"),
+        col(EndVertex, "end vertex", "end"),
+        col(Face, "face", "face"),
+        col(PairEdge, "pair", "pair"),
+        col(SuccessorEdge, "successor", "succ."),
+        derived(StartVertex, "start vertex", "start"),
+        derived(PredecessorEdge, "predecessor", "pred."),
     ];
 }
 
@@ -395,6 +404,12 @@ impl Column {
         language_names()
             .find(|&(_, column, _)| column == self)
             .map(|(name, _, _)| name)
+    }
+
+    /// The name an algorithm reads the column by, or the record's where the
+    /// language has none: what the app and traces say to students.
+    pub fn lookup_name(self) -> &'static str {
+        self.language_name().unwrap_or(self.record_name())
     }
 
     /// Resolves a lookup name (any case, any alias) on an element of `kind`
@@ -551,11 +566,9 @@ impl fmt::Display for LookupError {
         match self {
             Self::NoSuchElement(element) => write!(f, "{element} does not exist in this mesh"),
             Self::Deleted(element) => write!(f, "{element} was deleted"),
-            Self::NotApplicable { element, column } => write!(
-                f,
-                "{element} has no {}",
-                column.language_name().unwrap_or(column.record_name())
-            ),
+            Self::NotApplicable { element, column } => {
+                write!(f, "{element} has no {}", column.lookup_name())
+            }
         }
     }
 }
