@@ -157,7 +157,7 @@ pub const SCREENS: [Screen; 6] = [
 pub struct Browser {
     client: Client,
     base_url: String,
-    _driver: tokio::process::Child,
+    driver: tokio::process::Child,
     _profile: TempDir,
 }
 
@@ -182,6 +182,9 @@ impl Browser {
             .stdout(std::process::Stdio::null())
             .stderr(std::process::Stdio::null())
             .kill_on_drop(true)
+            // Chromium joins chromedriver's group, so that dropping the
+            // session ends both (see `Drop for Browser`).
+            .process_group(0)
             .spawn()
             .with_context(|| format!("cannot start {chromedriver}"))?;
         let profile = TempDir::new("edgewise-chromium")?;
@@ -224,7 +227,7 @@ impl Browser {
         Ok(Self {
             client,
             base_url,
-            _driver: driver,
+            driver,
             _profile: profile,
         })
     }
@@ -688,9 +691,26 @@ impl Browser {
     /// Closes the browser session.
     pub async fn close(self) -> anyhow::Result<()> {
         self.client
+            .clone()
             .close()
             .await
             .context("cannot close the browser")
+    }
+}
+
+/// A test that fails drops its browser without closing it: chromedriver is
+/// killed, and the Chromium it started would go on drawing the app (a
+/// software-rendered frame loop per failed test, slowing every test after
+/// it). The whole process group goes instead.
+impl Drop for Browser {
+    fn drop(&mut self) {
+        if let Some(group) = self.driver.id() {
+            std::process::Command::new("kill")
+                .args(["-s", "KILL", "--", &format!("-{group}")])
+                .stderr(std::process::Stdio::null())
+                .status()
+                .ok();
+        }
     }
 }
 

@@ -255,7 +255,7 @@ impl Seen<'_> {
             let (x, y) = rect.centre();
             if self.screen.touch {
                 // A thumb pushes the list up.
-                self.browser.swipe(x, y, -rect.h / 3.0).await?;
+                self.browser.swipe(x, y, -rect.h * 0.6).await?;
                 continue;
             }
             self.browser
