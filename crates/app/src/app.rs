@@ -918,15 +918,18 @@ impl EdgewiseApp {
             let structure = document.mesh().structure();
             let needs = titles.map(|(kind, _)| tables::references_width(ui, structure, kind));
             let total: f32 = needs.iter().sum();
-            let mut strip = StripBuilder::new(ui);
-            for need in needs {
-                strip = strip.size(Size::relative(need / total));
-            }
-            strip.horizontal(|mut strip| {
-                for (kind, title) in titles {
-                    strip.cell(|ui| table(ui, kind, title));
-                }
-            });
+            // The edge table takes the remainder, which leaves out the
+            // spacing between the cells (relative sizes do not).
+            let [faces, _, vertices] = needs;
+            StripBuilder::new(ui)
+                .size(Size::relative(faces / total))
+                .size(Size::remainder())
+                .size(Size::relative(vertices / total))
+                .horizontal(|mut strip| {
+                    for (kind, title) in titles {
+                        strip.cell(|ui| table(ui, kind, title));
+                    }
+                });
         }
         if chosen_table.is_some() {
             self.narrow_table = chosen_table;

@@ -409,15 +409,17 @@ impl CourseLink {
     }
 }
 
-/// An `<iframe>` for a page author to paste: lazy, titled, allowed to go
-/// full screen, and never wider than the page.
-pub fn embed_snippet(url: &str, width: u32, height: u32) -> String {
+/// An `<iframe>` for a page author to paste: lazy, titled with what it
+/// shows (a screen reader's name for the frame), allowed to go full screen,
+/// and never wider than the page.
+pub fn embed_snippet(url: &str, (width, height): (u32, u32), title: &str) -> String {
     format!(
         "<iframe src=\"{}\" width=\"{width}\" height=\"{height}\" \
-         title=\"Edgewise: an interactive mesh view\" allow=\"fullscreen\" allowfullscreen \
+         title=\"{}\" allow=\"fullscreen\" allowfullscreen \
          loading=\"lazy\" style=\"border: 1px solid #c8c6bf; border-radius: 6px; \
          max-width: 100%;\"></iframe>",
-        escape_attribute(url)
+        escape_attribute(url),
+        escape_attribute(title)
     )
 }
 

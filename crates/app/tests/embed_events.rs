@@ -150,3 +150,42 @@ fn an_embeds_height_holds_while_questions_come_and_go() {
     }
     assert!(asked >= 4, "{asked} questions asked");
 }
+
+/// The Share dialog's embed code is sized for what the embed shows: in a
+/// frame of that size, with the tables, the step controls and a question
+/// card, the 3D view keeps its 5:3 (the fixed 720×480 had left it 100 px).
+/// Its title names the mesh, the algorithm and the step.
+#[test]
+fn the_embed_code_is_sized_and_titled_for_what_it_shows() {
+    use edgewise_app::command::Command;
+    let mut harness = support::harness_tracing("tetrahedron", None, 1);
+    harness
+        .state_mut()
+        .execute(Command::SetQuestions(
+            include_str!("../../../algorithms/questions/vertex-adjacent-edge.txt").to_owned(),
+        ))
+        .expect("the set reads");
+    harness.state_mut().trace_step(2).expect("steps");
+    harness.run();
+    let app = harness.state();
+    assert_eq!(
+        app.embed_title(),
+        "Edgewise: vertexAdjacentEdge on tetrahedron.wtb, step 2 of 22"
+    );
+    let (width, height) = app.embed_size(true);
+    assert_eq!(width, 720);
+    let bare = harness.state().embed_size(false).1;
+    assert!(height > bare, "the tables add height: {height} vs {bare}");
+
+    harness
+        .state_mut()
+        .set_embed(Some(edgewise_app::Embed { tables: true }));
+    harness.set_size(egui::vec2(width as f32, height as f32));
+    harness.run();
+    harness.run();
+    let view = harness.state().state().layout.view.expect("the view shows");
+    assert!(
+        view.h >= 0.6 * view.w * 0.9,
+        "the view keeps about 5:3 in a {width}×{height} frame: {view:?}"
+    );
+}

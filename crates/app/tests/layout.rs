@@ -163,6 +163,12 @@ fn every_edge_column_shows_beside_a_run() {
         )
         .expect("starts");
     harness.run();
+    let layout = layout(&harness);
+    let (tables, algorithm) = (layout.panels["tables"], layout.panels["algorithm"]);
+    assert!(
+        tables.x + tables.w <= algorithm.x + 1.0,
+        "the tables stop at the algorithm panel: {layout:?}"
+    );
     // The edge table ends where the vertex table's title begins.
     let vertices = harness.get_by_label("Vertices").rect().left();
     let edges = harness.get_by_label("Edges").rect().left();

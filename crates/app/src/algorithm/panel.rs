@@ -26,7 +26,7 @@ const SOURCE_LEAST_HEIGHT: f32 = 240.0;
 
 /// The height an embed keeps for its question card, in points: the
 /// heading, a two-line prompt, the answer buttons and the verdict.
-const EMBED_CARD_HEIGHT: f32 = 150.0;
+pub(crate) const EMBED_CARD_HEIGHT: f32 = 150.0;
 
 impl Algorithms {
     /// Draws the algorithm view. Returns what the user asked for, for the

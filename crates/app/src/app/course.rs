@@ -256,6 +256,46 @@ impl EdgewiseApp {
         self.course_link().to_url_checked(base)
     }
 
+    /// The embed code's size for what the embedded view will show, as the
+    /// embedded app asks for it: 720 px wide, the view at 5:3, the step
+    /// controls and the question card of a run, and the tables if asked.
+    pub fn embed_size(&self, tables: bool) -> (u32, u32) {
+        const WIDTH: f32 = 720.0;
+        let mut chrome = 0.0;
+        if let Some(session) = self.tab().run.session() {
+            chrome += super::embed::CONTROLS_HEIGHT;
+            if session.quiz.is_some() {
+                chrome += crate::algorithm::panel::EMBED_CARD_HEIGHT;
+            }
+        }
+        if tables {
+            chrome += super::embed::TABLES_HEIGHT;
+        }
+        (
+            WIDTH as u32,
+            super::embed_events::preferred_height(WIDTH, chrome),
+        )
+    }
+
+    /// The embed's title, which names the frame for screen readers and in
+    /// the page's source: the mesh, and the algorithm and step of a run.
+    pub fn embed_title(&self) -> String {
+        let tab = self.tab();
+        let Some(document) = &tab.document else {
+            return "Edgewise: an interactive mesh view".to_owned();
+        };
+        let mesh = super::shown_name(&document.name, document.structure());
+        match tab.run.session() {
+            Some(session) => format!(
+                "Edgewise: {} on {mesh}, step {} of {}",
+                session.trace.algorithm().name,
+                session.step(),
+                session.steps()
+            ),
+            None => format!("Edgewise: {mesh}, {} tables", document.structure().prose()),
+        }
+    }
+
     /// The Share window: the link to copy, and an iframe snippet for notes.
     pub(super) fn share_window_ui(&mut self, ctx: &egui::Context) {
         if !self.show_share {
@@ -298,7 +338,10 @@ impl EdgewiseApp {
                         embed.tables = Some(self.share_embed_tables);
                         let snippet = embed
                             .to_url_checked(&base)
-                            .map(|url| course_link::embed_snippet(&url, 720, 480));
+                            .map(|url| {
+                                let size = self.embed_size(self.share_embed_tables);
+                                course_link::embed_snippet(&url, size, &self.embed_title())
+                            });
                         match snippet {
                             Ok(snippet) => {
                                 ui.ctx().copy_text(snippet);

@@ -4,6 +4,13 @@
 
 use super::EdgewiseApp;
 
+/// About how tall an embed's step controls are, in points: the algorithm's
+/// name, the step buttons, the step slider and the delay.
+pub(crate) const CONTROLS_HEIGHT: f32 = 100.0;
+
+/// The starting height of an embed's tables, in points.
+pub(crate) const TABLES_HEIGHT: f32 = 200.0;
+
 /// What an embedded view shows besides the 3D view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Embed {
@@ -53,7 +60,7 @@ impl EdgewiseApp {
         if embed.tables {
             chrome += egui::Panel::bottom("tables")
                 .resizable(true)
-                .default_size(200.0)
+                .default_size(TABLES_HEIGHT)
                 .min_size(100.0)
                 .show(ui, |ui| self.cached_part_ui(ui, "tables", Self::tables_ui))
                 .response

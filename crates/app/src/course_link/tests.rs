@@ -262,9 +262,13 @@ fn view_options_round_trip_through_a_link() {
 #[test]
 fn the_embed_snippet_is_a_lazy_titled_iframe() {
     assert_eq!(
-        embed_snippet("https://example.org/?embed=1&sample=cube\"", 640, 420),
+        embed_snippet(
+            "https://example.org/?embed=1&sample=cube\"",
+            (640, 420),
+            "Edgewise: \"cube\""
+        ),
         "<iframe src=\"https://example.org/?embed=1&amp;sample=cube&quot;\" width=\"640\" \
-         height=\"420\" title=\"Edgewise: an interactive mesh view\" allow=\"fullscreen\" \
+         height=\"420\" title=\"Edgewise: &quot;cube&quot;\" allow=\"fullscreen\" \
          allowfullscreen loading=\"lazy\" style=\"border: 1px solid #c8c6bf; border-radius: \
          6px; max-width: 100%;\"></iframe>"
     );
