@@ -262,10 +262,8 @@ mod layout {
         short: &'static str,
     ) -> TableColumn {
         TableColumn {
-            column,
-            header,
-            short,
             storage: Derived,
+            ..col(column, header, short)
         }
     }
 
