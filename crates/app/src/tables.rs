@@ -156,11 +156,8 @@ pub fn table_ui(
     } = Headers::of(mesh.structure(), kind);
     // The journal's short headers where the full ones would not fit, so
     // that every column shows without scrolling sideways.
-    let shown = if headers_width(ui, &headers) > ui.available_width() {
-        &shorts
-    } else {
-        &headers
-    };
+    let short = headers_width(ui, &headers) > ui.available_width();
+    let shown = if short { &shorts } else { &headers };
     let rows = mesh.count(kind);
     let drawn_id = ui.make_persistent_id(("edgewise drawn rows", kind));
     let drawn = ui.data(|d| d.get_temp::<DrawnRows>(drawn_id));
@@ -170,7 +167,10 @@ pub fn table_ui(
     let pitch = row_height + ui.spacing().item_spacing.y;
 
     let mut table = TableBuilder::new(ui)
-        .id_salt(kind)
+        // Resizable columns keep their widths: sized for the full headers
+        // (the table across the window), they would push the last references
+        // off a narrow table, so each set of headers keeps its own.
+        .id_salt((kind, short))
         // Rows are told apart by `RowBand`'s hairlines: stripes cost pixels.
         .striped(false)
         .resizable(true)

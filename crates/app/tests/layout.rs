@@ -153,8 +153,11 @@ fn every_edge_column_shows_beside_a_run() {
     let mut harness = support::harness_sized(1280.0, 800.0);
     harness
         .state_mut()
-        .load_sample("cube", Some(Structure::WingedEdge))
+        .load_sample("tetrahedron", Some(Structure::WingedEdge))
         .expect("opens");
+    // Shown first across the whole window, with full headers, as a link
+    // opens it before the run starts.
+    harness.run();
     harness
         .state_mut()
         .run_algorithm(
@@ -181,4 +184,14 @@ fn every_edge_column_shows_beside_a_run() {
             "{header} at {rect:?} shows between {edges} and {vertices}"
         );
     }
+    // And the vertex table's last reference before the panel's edge.
+    let incident = harness
+        .get_all_by_label("inc. edge")
+        .map(|node| node.rect())
+        .max_by(|a, b| a.right().total_cmp(&b.right()))
+        .expect("the vertex table's incident edge");
+    assert!(
+        incident.right() <= tables.x + tables.w,
+        "inc. edge at {incident:?} shows within {tables:?}"
+    );
 }
