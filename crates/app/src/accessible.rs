@@ -2,16 +2,21 @@
 //! it: the three tables as HTML tables with captions and headers, each row's
 //! roles as words (a second cue beside colour), and the message line's
 //! sentence (the step, or the selection and its references), announced as
-//! it changes. The browser platform puts them in a visually hidden part of
+//! it changes; and the algorithm panel as controls: the algorithms with
+//! their inputs, the step buttons, the current line and the variables. The browser platform puts them in a visually hidden part of
 //! the page (index.html); natively egui's AccessKit output serves instead.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write as _;
 
-use edgewise_core::mesh::{Mesh, VertexId};
+use edgewise_core::lang::{Routine, types::Type};
+use edgewise_core::mesh::{Mesh, Structure, VertexId};
 use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _};
 
-use crate::{state::HighlightState, tables};
+use crate::{
+    algorithm::TraceFrame, course_link::escape_attribute as escape, state::HighlightState, tables,
+    trace_role::TraceRole,
+};
 
 /// Rows mirrored per table; a larger mesh's caption says how many are left
 /// out (its rows are still read in the app's tables through AccessKit).
@@ -104,20 +109,145 @@ pub fn tables_html(mesh: &Mesh, roles: &BTreeMap<ElementRef, String>) -> String 
 }
 
 /// Each highlighted row's roles in words, once each: its role cell's text.
-pub fn role_words(highlights: &[HighlightState]) -> BTreeMap<ElementRef, String> {
-    let mut roles: BTreeMap<ElementRef, Vec<&str>> = BTreeMap::new();
+/// A variable's role names it ("variable e"), from `variable_names`.
+pub fn role_words(
+    highlights: &[HighlightState],
+    variable_names: &HashMap<ElementRef, String>,
+) -> BTreeMap<ElementRef, String> {
+    let mut roles: BTreeMap<ElementRef, Vec<String>> = BTreeMap::new();
     for highlight in highlights {
-        let entry = roles
-            .entry(ElementRef::new(highlight.kind, highlight.id))
-            .or_default();
-        if !entry.contains(&highlight.role.as_str()) {
-            entry.push(&highlight.role);
+        let element = ElementRef::new(highlight.kind, highlight.id);
+        let words = match variable_names.get(&element) {
+            Some(names) if highlight.role == TraceRole::Variable.key() => {
+                let noun = if names.contains(", ") {
+                    "variables"
+                } else {
+                    "variable"
+                };
+                format!("{noun} {names}")
+            }
+            _ => highlight.role.clone(),
+        };
+        let entry = roles.entry(element).or_default();
+        if !entry.contains(&words) {
+            entry.push(words);
         }
     }
     roles
         .into_iter()
         .map(|(element, words)| (element, words.join(", ")))
         .collect()
+}
+
+/// The algorithm panel as the page's copy shows it while a run is open.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunCopy {
+    /// "vertexAdjacentEdge, step 2 of 22, playing".
+    pub status: String,
+    /// "Line 13: e := v.incidentEdge;".
+    pub line: String,
+    /// Each variable's name, type and value ("Edge 3", "null").
+    pub variables: Vec<(String, &'static str, String)>,
+}
+
+impl RunCopy {
+    pub fn new(frame: &TraceFrame, algorithm: &Routine, playing: bool) -> Self {
+        let mut status = format!("{}, step {} of {}", algorithm.name, frame.step, frame.steps);
+        if frame.done {
+            status.push_str(", done");
+        } else if playing {
+            status.push_str(", playing");
+        }
+        let code = (frame.line as usize)
+            .checked_sub(1)
+            .and_then(|index| algorithm.source.lines().nth(index))
+            .map_or("", str::trim);
+        Self {
+            status,
+            line: format!("Line {}: {code}", frame.line),
+            variables: frame
+                .variables
+                .iter()
+                .map(|v| (v.name.clone(), v.ty, v.value.clone()))
+                .collect(),
+        }
+    }
+
+    /// The variables as a description list, every text escaped: names and
+    /// values come from a user's algorithm.
+    pub fn variables_html(&self) -> String {
+        let mut html = String::from("<dl>");
+        for (name, ty, value) in &self.variables {
+            let _ = write!(
+                html,
+                "<dt>{}, {}</dt><dd>{}</dd>",
+                escape(name),
+                escape(ty),
+                escape(value)
+            );
+        }
+        html.push_str("</dl>");
+        html
+    }
+}
+
+/// The algorithms for `structure` as forms: each input a labelled field,
+/// and a button that runs it. index.html calls `window.edgewise.run` with
+/// the fields' values. An input the page cannot give (an Array, a Vector)
+/// is left for the app to ask.
+pub fn algorithms_html<'a>(
+    algorithms: impl IntoIterator<Item = &'a Routine>,
+    structure: Structure,
+) -> String {
+    let mut html = String::new();
+    for algorithm in algorithms {
+        if algorithm.structure != structure {
+            continue;
+        }
+        let name = escape(&algorithm.name);
+        let _ = write!(
+            html,
+            "<form class=\"edgewise-a11y-run\" data-algorithm=\"{name}\"><fieldset><legend>{name}</legend>"
+        );
+        if let Some(description) = &algorithm.description {
+            let _ = write!(html, "<p>{}</p>", escape(description));
+        }
+        for param in algorithm.params() {
+            let field = escape(&param.name);
+            let ty = param.ty.to_string();
+            match param.ty {
+                Type::Vertex | Type::Edge | Type::Face => {
+                    let _ = write!(
+                        html,
+                        "<label>{field}, a {ty} id <input name=\"{field}\" type=\"number\" min=\"0\" step=\"1\" value=\"0\" required></label>"
+                    );
+                }
+                Type::Integer => {
+                    let _ = write!(
+                        html,
+                        "<label>{field}, an Integer <input name=\"{field}\" type=\"number\" step=\"1\" value=\"0\" required></label>"
+                    );
+                }
+                Type::Boolean => {
+                    let _ = write!(
+                        html,
+                        "<label><input name=\"{field}\" type=\"checkbox\"> {field}, a Boolean</label>"
+                    );
+                }
+                _ => {
+                    let _ = write!(html, "<p>{field}, {}: chosen in the app</p>", escape(&ty));
+                }
+            }
+        }
+        let _ = write!(
+            html,
+            "<button type=\"submit\">Run {name}</button></fieldset></form>"
+        );
+    }
+    if html.is_empty() {
+        html.push_str("<p>No algorithm works on this mesh's structure.</p>");
+    }
+    html
 }
 
 /// The HTML id of `element`'s role cell in [`tables_html`].
@@ -219,7 +349,7 @@ mod tests {
             role: "selected".to_owned(),
             colour: "#ff0000".to_owned(),
         }];
-        let html = tables_html(&mesh, &role_words(&highlights));
+        let html = tables_html(&mesh, &role_words(&highlights, &HashMap::new()));
         assert_eq!(html.matches("<table>").count(), 3);
         assert!(html.contains("<caption>Faces: 4 rows</caption>"), "{html}");
         assert!(
@@ -262,24 +392,30 @@ mod tests {
             role: role.to_owned(),
             colour: "#ff0000".to_owned(),
         };
-        let before = role_words(&[
-            highlight(ElementKind::Edge, 3, "selected"),
-            highlight(ElementKind::Edge, 4, "next edge"),
-            highlight(ElementKind::Vertex, 1, "end vertex"),
-            highlight(ElementKind::Vertex, 1, "end vertex"),
-            highlight(ElementKind::Face, 900, "face"),
-        ]);
+        let before = role_words(
+            &[
+                highlight(ElementKind::Edge, 3, "selected"),
+                highlight(ElementKind::Edge, 4, "next edge"),
+                highlight(ElementKind::Vertex, 1, "end vertex"),
+                highlight(ElementKind::Vertex, 1, "end vertex"),
+                highlight(ElementKind::Face, 900, "face"),
+            ],
+            &HashMap::new(),
+        );
         assert_eq!(
             before[&ElementRef::new(ElementKind::Vertex, 1)],
             "end vertex"
         );
-        let after = role_words(&[
-            highlight(ElementKind::Edge, 4, "next edge"),
-            highlight(ElementKind::Edge, 5, "selected"),
-            highlight(ElementKind::Vertex, 1, "end vertex"),
-            highlight(ElementKind::Vertex, 1, "start vertex"),
-            highlight(ElementKind::Face, 901, "face"),
-        ]);
+        let after = role_words(
+            &[
+                highlight(ElementKind::Edge, 4, "next edge"),
+                highlight(ElementKind::Edge, 5, "selected"),
+                highlight(ElementKind::Vertex, 1, "end vertex"),
+                highlight(ElementKind::Vertex, 1, "start vertex"),
+                highlight(ElementKind::Face, 901, "face"),
+            ],
+            &HashMap::new(),
+        );
         assert_eq!(
             role_changes(&before, &after),
             vec![
@@ -292,5 +428,56 @@ mod tests {
             ],
             "unchanged rows and rows past the mirrored ones are left"
         );
+    }
+
+    #[test]
+    fn a_variables_role_names_it() {
+        let edge = ElementRef::new(ElementKind::Edge, 2);
+        let variable = |id| HighlightState {
+            kind: ElementKind::Edge,
+            id,
+            role: TraceRole::Variable.key().to_owned(),
+            colour: "#8a3fcf".to_owned(),
+        };
+        let names = HashMap::from([
+            (edge, "e".to_owned()),
+            (ElementRef::new(ElementKind::Edge, 3), "e, se".to_owned()),
+        ]);
+        let words = role_words(&[variable(2), variable(3)], &names);
+        assert_eq!(words[&edge], "variable e");
+        assert_eq!(
+            words[&ElementRef::new(ElementKind::Edge, 3)],
+            "variables e, se"
+        );
+    }
+
+    #[test]
+    fn the_algorithms_are_forms_with_escaped_labelled_inputs() {
+        let source = "algorithm tricky(v : Vertex; deep : Boolean);\n\
+                      structuretype WingedEdge\n\
+                      description \"<b>bold</b> & more\"\n\
+                      begin\n  mark v;\nend;\n";
+        let program = edgewise_core::lang::compile(source).expect("compiles");
+        let algorithms = || program.algorithms.iter().map(|a| &***a);
+        let html = algorithms_html(algorithms(), Structure::WingedEdge);
+        assert!(html.contains("data-algorithm=\"tricky\""), "{html}");
+        assert!(
+            html.contains("<p>&lt;b&gt;bold&lt;/b&gt; &amp; more</p>"),
+            "{html}"
+        );
+        assert!(
+            html.contains("<label>v, a Vertex id <input name=\"v\" type=\"number\""),
+            "{html}"
+        );
+        assert!(
+            html.contains("type=\"checkbox\"> deep, a Boolean</label>"),
+            "{html}"
+        );
+        assert!(
+            html.contains("<button type=\"submit\">Run tricky</button>"),
+            "{html}"
+        );
+        let other = algorithms_html(algorithms(), Structure::HalfEdge);
+        assert!(other.contains("No algorithm works"), "{other}");
     }
 }

@@ -374,15 +374,16 @@ impl AlgorithmRun {
         }
     }
 
-    pub fn set_playing(&mut self, playing: bool, now: f64) {
-        if let Run::Tracing(session) = &mut self.run {
-            if playing && session.at_end() {
-                session.goto(0);
-            }
-            session.playing = playing;
-            session.last_auto_step = now;
-            self.changed();
+    /// Plays or pauses the trace; at its end Play starts it over.
+    pub fn set_playing(&mut self, playing: bool, now: f64) -> Result<(), String> {
+        let session = self.session_mut()?;
+        if playing && session.at_end() {
+            session.goto(0);
         }
+        session.playing = playing;
+        session.last_auto_step = now;
+        self.changed();
+        Ok(())
     }
 
     /// Advances a playing trace when `delay` seconds have passed, stopping

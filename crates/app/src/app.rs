@@ -68,6 +68,9 @@ pub struct EdgewiseApp {
     /// Milliseconds the previous frame took on the main thread (its UI and
     /// its rendering commands), from eframe.
     frame_cpu_ms: Option<f32>,
+    /// egui's time at the last frame, in seconds: when a command starts
+    /// playing, the next automatic step is due a delay after it.
+    clock: f64,
     theme: Theme,
     /// Every open mesh; never empty. Commands and drawing act on
     /// `tabs[active_tab]`.
@@ -159,6 +162,7 @@ impl EdgewiseApp {
             backend,
             frames: 0,
             frame_cpu_ms: None,
+            clock: 0.0,
             theme: Theme::light(),
             tabs: vec![tabs::Tab::new(render_state, Structure::WingedEdge)],
             active_tab: 0,

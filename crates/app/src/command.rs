@@ -100,6 +100,8 @@ pub enum Command {
     Cancel,
     /// Steps the trace back.
     Back(usize),
+    /// Plays (true) or pauses (false) the trace.
+    SetPlaying(bool),
     /// Runs the call on the next step as one step.
     StepOver,
     /// Runs to the step after the current call returns.

@@ -40,6 +40,9 @@ pub struct Paint {
     pub cells: HashMap<(ElementRef, Role), Color32>,
     /// Arrows pointing at elements (comparisons).
     pub pointers: Vec<(ElementRef, Color32)>,
+    /// The names of the variables that refer to each element ("e, se"):
+    /// a screen reader hears "variable e" where the view shows a colour.
+    pub variable_names: HashMap<ElementRef, String>,
     /// Whether everything not painted fades into the background.
     pub fade_others: bool,
     /// The old value of each cell the current step wrote, shown struck

@@ -19,13 +19,14 @@ mod desktop;
 #[cfg(target_arch = "wasm32")]
 pub use browser::{
     FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
-    js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen, show_to_readers,
-    store_settings,
+    js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen,
+    show_algorithms_to_readers, show_run_to_readers, show_to_readers, store_settings,
 };
 #[cfg(not(target_arch = "wasm32"))]
 pub use desktop::{
     FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
-    left_fullscreen, load_settings, page_base, set_fullscreen, show_to_readers, store_settings,
+    left_fullscreen, load_settings, page_base, set_fullscreen, show_algorithms_to_readers,
+    show_run_to_readers, show_to_readers, store_settings,
 };
 
 /// A file read from disk, waiting to be opened.

@@ -181,3 +181,208 @@ async fn the_keyboard_alone_moves_focus_visibly_and_walks_a_table() -> anyhow::R
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// The DOM node behind the accessibility tree's first node of `role` whose
+/// name is exactly `name`, as a remote object id: what a screen reader
+/// acts on.
+async fn ax_object(browser: &Browser, role: &str, name: &str) -> anyhow::Result<String> {
+    for _ in 0..50 {
+        let tree = browser
+            .cdp("Accessibility.getFullAXTree", serde_json::json!({}))
+            .await?;
+        let found = tree["nodes"].as_array().and_then(|nodes| {
+            nodes.iter().find(|node| {
+                node["role"]["value"] == role
+                    && node["name"]["value"] == name
+                    && node["ignored"] != true
+            })
+        });
+        if let Some(id) = found.and_then(|node| node["backendDOMNodeId"].as_u64()) {
+            let resolved = browser
+                .cdp("DOM.resolveNode", serde_json::json!({"backendNodeId": id}))
+                .await?;
+            if let Some(object) = resolved["object"]["objectId"].as_str() {
+                return Ok(object.to_owned());
+            }
+        }
+        tokio::time::sleep(Duration::from_millis(200)).await;
+    }
+    anyhow::bail!("no {role} named {name:?} in the accessibility tree")
+}
+
+/// Activates the button named `name` as a screen reader does (a click on
+/// its node), found through the accessibility tree alone.
+async fn activate(browser: &Browser, name: &str) -> anyhow::Result<()> {
+    let object = ax_object(browser, "button", name).await?;
+    browser
+        .cdp(
+            "Runtime.callFunctionOn",
+            serde_json::json!({"objectId": object, "functionDeclaration": "function () { this.click(); }"}),
+        )
+        .await?;
+    Ok(())
+}
+
+/// The live region's text once it starts with `start`.
+async fn announced(browser: &Browser, start: &str) -> anyhow::Result<String> {
+    let waited = browser
+        .wait_for(
+            &format!(
+                "document.getElementById('edgewise_a11y_live').textContent.startsWith({start:?})"
+            ),
+            Duration::from_secs(30),
+        )
+        .await;
+    let text = browser
+        .eval("return document.getElementById('edgewise_a11y_live').textContent;")
+        .await?;
+    let text = text.as_str().unwrap_or_default().to_owned();
+    waited.map_err(|error| error.context(format!("the live region says {text:?}")))?;
+    Ok(text)
+}
+
+/// A screen reader starts a run and steps it from the page's copy alone:
+/// the algorithm's form and the step buttons are real controls in the
+/// accessibility tree, each step's sentence comes from the live region, and
+/// the copy holds the current line and the variables with their values.
+#[tokio::test]
+async fn a_screen_reader_steps_a_run_from_the_page_copy_alone() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.open("?sample=tetrahedron&structure=winged").await?;
+    browser
+        .wait_for(
+            "window.edgewise && window.edgewise.state().mesh === 'tetrahedron.wtb'",
+            Duration::from_secs(60),
+        )
+        .await?;
+
+    // The input as its label names it, then the form's Run button.
+    let field = ax_object(&browser, "spinbutton", "v, a Vertex id").await?;
+    let vertex_adjacent = "function () { \
+         const form = this.closest('form'); \
+         return form.dataset.algorithm; }";
+    let form = browser
+        .cdp(
+            "Runtime.callFunctionOn",
+            serde_json::json!({"objectId": field, "functionDeclaration": vertex_adjacent, "returnByValue": true}),
+        )
+        .await?;
+    assert!(
+        form["result"]["value"].is_string(),
+        "the field is in a form: {form}"
+    );
+    browser
+        .eval(
+            "document.querySelector('form[data-algorithm=\"vertexAdjacentEdge\"] input[name=\"v\"]').value = '1'; \
+             return null;",
+        )
+        .await?;
+    activate(&browser, "Run vertexAdjacentEdge").await?;
+    let ready = announced(&browser, "Step 0 of 22: vertexAdjacentEdge is ready").await?;
+    assert!(ready.ends_with("with v = vertex 1"), "{ready}");
+
+    let copy = |id: &'static str| {
+        let browser = &browser;
+        async move {
+            let text = browser
+                .eval(&format!(
+                    "return document.getElementById('{id}').textContent;"
+                ))
+                .await?;
+            anyhow::Ok(text.as_str().unwrap_or_default().to_owned())
+        }
+    };
+    activate(&browser, "Step").await?;
+    let first = announced(&browser, "Step 1 of 22").await?;
+    assert!(first.contains("vertex 1"), "{first}");
+    assert_eq!(
+        copy("edgewise_a11y_status").await?,
+        "vertexAdjacentEdge, step 1 of 22"
+    );
+    assert_eq!(
+        copy("edgewise_a11y_line").await?,
+        "Line 13: e := v.incidentEdge;"
+    );
+    activate(&browser, "Step").await?;
+    announced(&browser, "Step 2 of 22").await?;
+    let variables = browser
+        .eval(
+            "return [...document.querySelectorAll('#edgewise_a11y_variables dt')] \
+             .map((dt) => dt.textContent + ' = ' + dt.nextElementSibling.textContent);",
+        )
+        .await?;
+    assert_eq!(
+        variables,
+        serde_json::json!([
+            "v, Vertex = Vertex 1",
+            "e, Edge = Edge 1",
+            "se, Edge = null"
+        ]),
+        "each variable with its value"
+    );
+    // The role cell names the variable, as the view's label does.
+    let roles = browser
+        .eval(
+            "return [...document.querySelectorAll('[id^=edgewise_a11y_role_]')] \
+             .map((cell) => cell.textContent).filter((text) => text);",
+        )
+        .await?;
+    assert!(
+        roles.as_array().is_some_and(|r| r
+            .iter()
+            .any(|w| w.as_str().is_some_and(|w| w.contains("variable e")))),
+        "a role cell says which variable: {roles}"
+    );
+
+    activate(&browser, "Back").await?;
+    announced(&browser, "Step 1 of 22").await?;
+    activate(&browser, "To end").await?;
+    announced(&browser, "Step 22 of 22").await?;
+    assert_eq!(
+        copy("edgewise_a11y_status").await?,
+        "vertexAdjacentEdge, step 22 of 22, done"
+    );
+    activate(&browser, "To start").await?;
+    browser
+        .wait_for(
+            "document.getElementById('edgewise_a11y_status').textContent === 'vertexAdjacentEdge, step 0 of 22'",
+            Duration::from_secs(30),
+        )
+        .await?;
+    activate(&browser, "Play").await?;
+    browser
+        .wait_for(
+            "document.getElementById('edgewise_a11y_status').textContent.endsWith(', playing') \
+             && window.edgewise.state().trace.step >= 2",
+            Duration::from_secs(60),
+        )
+        .await?;
+    activate(&browser, "Pause").await?;
+    browser
+        .wait_for(
+            "!document.getElementById('edgewise_a11y_status').textContent.endsWith(', playing')",
+            Duration::from_secs(30),
+        )
+        .await?;
+    // A keyboard user who tabs into the copy sees it, over the app.
+    browser
+        .eval("document.querySelector('[data-edgewise-call=step]').focus(); return null;")
+        .await?;
+    let shown = browser
+        .eval("return document.getElementById('edgewise_a11y').getBoundingClientRect().width;")
+        .await?;
+    assert!(
+        shown.as_f64().unwrap_or_default() > 200.0,
+        "the focused copy shows: {shown}"
+    );
+    browser.screenshot("reader-copy-focused").await?;
+    activate(&browser, "Abort").await?;
+    browser
+        .wait_for(
+            "document.getElementById('edgewise_a11y_controls').hidden",
+            Duration::from_secs(30),
+        )
+        .await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}

@@ -258,6 +258,10 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
             }
         }
     }
+    paint.variable_names = names
+        .iter()
+        .map(|(element, names)| (*element, names.join(", ")))
+        .collect();
     let labelled: std::collections::BTreeSet<ElementRef> =
         glyphs.keys().chain(names.keys()).copied().collect();
     paint.labels = labelled

@@ -220,7 +220,6 @@ impl Algorithms {
         steps: usize,
         playing: bool,
     ) -> Option<Command> {
-        let now = ui.input(|i| i.time);
         let mut command = None;
         ui.horizontal_wrapped(|ui| {
             if ui
@@ -278,7 +277,7 @@ impl Algorithms {
                 .on_hover_text("Step automatically; stops at breakpoints (P)")
                 .clicked()
             {
-                run.set_playing(!playing, now);
+                command = Some(Command::SetPlaying(!playing));
             }
             if !self.breakpoints(run.algorithm()).is_empty()
                 && ui

@@ -182,6 +182,7 @@ impl EdgewiseApp {
     /// Advances a playing trace and schedules the next frame for it.
     pub(super) fn play_tick(&mut self, ctx: &egui::Context) {
         let now = ctx.input(|i| i.time);
+        self.clock = now;
         if let Some(wait) = self
             .algorithms
             .tick(&mut self.tabs[self.active_tab].run, now)
@@ -197,7 +198,7 @@ impl EdgewiseApp {
             return;
         }
         // Shift with an arrow or Home moves the camera instead.
-        let (forward, back, home, end, play, now) = ctx.input(|i| {
+        let (forward, back, home, end, play) = ctx.input(|i| {
             let plain = !i.modifiers.shift;
             (
                 i.key_pressed(egui::Key::Space) || (plain && i.key_pressed(egui::Key::ArrowRight)),
@@ -205,7 +206,6 @@ impl EdgewiseApp {
                 plain && i.key_pressed(egui::Key::Home),
                 i.key_pressed(egui::Key::End),
                 i.key_pressed(egui::Key::P),
-                i.time,
             )
         });
         let (over, out) = ctx.input(|i| (i.key_pressed(egui::Key::O), i.key_pressed(egui::Key::U)));
@@ -228,8 +228,8 @@ impl EdgewiseApp {
             }
         }
         if play {
-            let playing = self.tab_mut().run.session().is_some_and(|s| s.playing);
-            self.tab_mut().run.set_playing(!playing, now);
+            let playing = self.tab().run.session().is_some_and(|s| s.playing);
+            self.issue(Command::SetPlaying(!playing));
         }
     }
 

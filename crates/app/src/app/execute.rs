@@ -103,6 +103,10 @@ impl EdgewiseApp {
                 done(self.algorithms.set_questions(run, &text))
             }
             Command::Back(n) => done(self.tab_mut().run.back(n)),
+            Command::SetPlaying(on) => {
+                let now = self.clock;
+                done(self.tab_mut().run.set_playing(on, now))
+            }
             Command::StepOver => done(self.tab_mut().run.step_over()),
             Command::StepOut => done(self.tab_mut().run.step_out()),
             Command::Goto(k) => done(self.tab_mut().run.goto(k)),

@@ -352,6 +352,50 @@ pub fn change_for_readers(cells: &[(String, String)], message: Option<&str>) {
     set_text_of(&document, "edgewise_a11y_live", message);
 }
 
+/// Shows the run's place, current line and variables in the page's copy,
+/// or hides its step controls when no run is open.
+pub fn show_run_to_readers(run: Option<&crate::accessible::RunCopy>) {
+    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+        return;
+    };
+    if let Some(controls) = document.get_element_by_id("edgewise_a11y_controls") {
+        let result = match run {
+            Some(_) => controls.remove_attribute("hidden"),
+            None => controls.set_attribute("hidden", ""),
+        };
+        if let Err(err) = result {
+            log::warn!("the readers' step controls: {}", js_error_text(&err));
+        }
+    }
+    set_text_of(
+        &document,
+        "edgewise_a11y_status",
+        run.map(|r| r.status.as_str()),
+    );
+    set_text_of(
+        &document,
+        "edgewise_a11y_line",
+        run.map(|r| r.line.as_str()),
+    );
+    if let Some(element) = document.get_element_by_id("edgewise_a11y_variables") {
+        element.set_inner_html(
+            &run.map(crate::accessible::RunCopy::variables_html)
+                .unwrap_or_default(),
+        );
+    }
+}
+
+/// Fills the page's algorithm list (forms built by
+/// [`crate::accessible::algorithms_html`], every text escaped).
+pub fn show_algorithms_to_readers(html: &str) {
+    if let Some(element) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.get_element_by_id("edgewise_a11y_algorithms"))
+    {
+        element.set_inner_html(html);
+    }
+}
+
 /// Sets the text of the page's element `id`, where the page has one.
 fn set_text_of(document: &web_sys::Document, id: &str, text: Option<&str>) {
     if let Some(element) = document.get_element_by_id(id) {

@@ -140,3 +140,7 @@ pub const READER_COPY: bool = false;
 pub fn show_to_readers(_tables: Option<&str>, _message: Option<&str>) {}
 
 pub fn change_for_readers(_cells: &[(String, String)], _message: Option<&str>) {}
+
+pub fn show_run_to_readers(_run: Option<&crate::accessible::RunCopy>) {}
+
+pub fn show_algorithms_to_readers(_html: &str) {}

@@ -133,6 +133,16 @@ const COMMANDS: &[CommandEntry] = &[
         read: |call, n, _| Ok(Command::Back(count(call, "n", n, Some(1))?)),
     },
     CommandEntry {
+        name: "play",
+        call: "play()",
+        read: |_, _, _| Ok(Command::SetPlaying(true)),
+    },
+    CommandEntry {
+        name: "pause",
+        call: "pause()",
+        read: |_, _, _| Ok(Command::SetPlaying(false)),
+    },
+    CommandEntry {
         name: "stepOver",
         call: "stepOver()",
         read: |_, _, _| Ok(Command::StepOver),
