@@ -881,7 +881,7 @@ impl EdgewiseApp {
             let scroll_to = scroll.iter().find(|(k, _)| *k == kind).map(|&(_, id)| id);
             ui.strong(title);
             // A narrow window scrolls a wide table sideways instead of cutting it.
-            egui::ScrollArea::horizontal()
+            let scrolled = egui::ScrollArea::horizontal()
                 .id_salt(("table_scroll", kind))
                 .show(ui, |ui| {
                     tables::table_ui(
@@ -892,8 +892,14 @@ impl EdgewiseApp {
                         scroll_to,
                         tab.hovered,
                         &mut response,
-                    );
+                    )
                 });
+            // Scrolled sideways, the ids stay at the table's left edge.
+            if scrolled.state.clamped_offset().x > 0.0 {
+                scrolled
+                    .inner
+                    .sticky_ui(ui, scrolled.inner_rect, &tab.paint, &mut response);
+            }
         };
         let edge_title = tables::edge_table_title(document.mesh());
         let titles = [

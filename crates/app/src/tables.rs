@@ -144,7 +144,7 @@ pub fn table_ui(
     scroll_to: Option<u32>,
     previewed: Option<ElementRef>,
     response: &mut TablesResponse,
-) {
+) -> IdColumn {
     let preview_stroke = egui::Stroke::new(
         1.5,
         crate::view3d::Palette::new(ui.visuals().dark_mode).hover,
@@ -187,6 +187,9 @@ pub fn table_ui(
             Some(Jump::AfterLayout) | None => table.scroll_to_row(row as usize, None),
         };
     }
+    let mut id_cells = Vec::new();
+    let mut id_header = None;
+    let mut next_left = None;
     let mut drawn_now = DrawnRows {
         first: usize::MAX,
         last: 0,
@@ -204,6 +207,12 @@ pub fn table_ui(
         .header(ROW_HEIGHT, |mut header| {
             for (i, (title, full)) in shown.iter().zip(&headers).enumerate() {
                 header.col(|ui| {
+                    match i {
+                        0 => id_header = Some((ui.max_rect(), ui.clip_rect())),
+                        // The id column reaches the next one's left edge.
+                        1 => next_left = Some(ui.max_rect().left()),
+                        _ => {}
+                    }
                     let text = RichText::new(*title).strong();
                     let label = ui.label(if derived[i] { text.weak() } else { text });
                     if title != full {
@@ -224,7 +233,6 @@ pub fn table_ui(
                 let id = row.index() as u32;
                 let element = ElementRef { kind, id };
                 let row_colour = paint.colour_of(element);
-                let selected_row = paint.focus == Some(element);
                 let mut cells = row_cells(mesh, element);
                 if let (Some(last), Some(labels)) = (cells.last_mut(), paint.labels.get(&element)) {
                     *last = Cell::Text(labels.clone());
@@ -242,30 +250,9 @@ pub fn table_ui(
                         let dim = derived.get(i).copied().unwrap_or_default();
                         match cell {
                             Cell::Id(element) => {
-                                let rules = paint.broken.get(&element);
-                                let mut id = RichText::new(element.id.to_string()).monospace();
-                                if rules.is_some() {
-                                    id = id.color(ui.visuals().error_fg_color).strong();
-                                }
-                                let hover = match rules {
-                                    Some(rules) => {
-                                        format!("{element} breaks a rule:\n{}", rules.join("\n"))
-                                    }
-                                    None => format!("select {element}"),
-                                };
-                                let label =
-                                    ui.selectable_label(selected_row, id).on_hover_text(hover);
-                                if label.clicked() {
+                                id_cells.push((element, ui.max_rect(), ui.clip_rect()));
+                                if id_cell_ui(ui, element, paint, response) {
                                     clicked_link = Some(element);
-                                }
-                                if label.hovered() {
-                                    response.hovered = Some(element);
-                                }
-                                if label.secondary_clicked() {
-                                    let at = label
-                                        .interact_pointer_pos()
-                                        .unwrap_or(label.rect.left_bottom());
-                                    response.context = Some((element, at));
                                 }
                             }
                             Cell::Text(text) => {
@@ -346,6 +333,123 @@ pub fn table_ui(
         });
     if drawn_now.first <= drawn_now.last {
         ui.data_mut(|d| d.insert_temp(drawn_id, drawn_now));
+    }
+    IdColumn {
+        header: id_header,
+        width: next_left
+            .zip(id_header)
+            .map(|(next, (id, _))| next - id.left()),
+        cells: id_cells,
+    }
+}
+
+/// A row's id: selects the row on a click, opens the edit menu on a right
+/// click, and names the rules a broken record breaks. Whether it was
+/// clicked.
+fn id_cell_ui(
+    ui: &mut egui::Ui,
+    element: ElementRef,
+    paint: &Paint,
+    response: &mut TablesResponse,
+) -> bool {
+    let rules = paint.broken.get(&element);
+    let mut id = RichText::new(element.id.to_string()).monospace();
+    if rules.is_some() {
+        id = id.color(ui.visuals().error_fg_color).strong();
+    }
+    let hover = match rules {
+        Some(rules) => format!("{element} breaks a rule:\n{}", rules.join("\n")),
+        None => format!("select {element}"),
+    };
+    let label = ui
+        .selectable_label(paint.focus == Some(element), id)
+        .on_hover_text(hover);
+    if label.hovered() {
+        response.hovered = Some(element);
+    }
+    if label.secondary_clicked() {
+        let at = label
+            .interact_pointer_pos()
+            .unwrap_or(label.rect.left_bottom());
+        response.context = Some((element, at));
+    }
+    label.clicked()
+}
+
+/// The id cells a table drew, where, and within what clip: a table
+/// scrolled sideways draws them again at its left edge.
+pub struct IdColumn {
+    /// The header's cell and clip.
+    header: Option<(egui::Rect, egui::Rect)>,
+    /// From the id column's left edge to the next column's.
+    width: Option<f32>,
+    /// Each row's id cell and clip.
+    cells: Vec<(ElementRef, egui::Rect, egui::Rect)>,
+}
+
+impl IdColumn {
+    /// Draws the ids over the left edge of `viewport` (the sideways scroll
+    /// area's visible part), so that a row keeps its name however far the
+    /// references scroll.
+    pub fn sticky_ui(
+        &self,
+        ui: &mut egui::Ui,
+        viewport: egui::Rect,
+        paint: &Paint,
+        response: &mut TablesResponse,
+    ) {
+        let (Some((header, header_clip)), Some(width)) = (self.header, self.width) else {
+            return;
+        };
+        let shift = egui::vec2(viewport.left() - header.left(), 0.0);
+        // The cleared frame's colour: panels are transparent over it.
+        let fill = crate::view3d::Palette::new(ui.visuals().dark_mode).background;
+        let gap = ui.spacing().item_spacing.y * 0.5;
+        let band = |cell: egui::Rect| {
+            egui::Rect::from_x_y_ranges(
+                cell.left()..=cell.left() + width,
+                (cell.top() - gap)..=(cell.bottom() + gap),
+            )
+        };
+        // A cell's clip is its own column's, scrolled away with it: keep
+        // only its rows (the body's, below the header).
+        let clip =
+            |clip: egui::Rect| egui::Rect::from_x_y_ranges(viewport.x_range(), clip.y_range());
+        let header = header.translate(shift);
+        let painter = ui.painter_at(clip(header_clip));
+        painter.rect_filled(band(header), 0.0, fill);
+        painter.text(
+            header.left_center(),
+            egui::Align2::LEFT_CENTER,
+            "id",
+            egui::TextStyle::Body.resolve(ui.style()),
+            ui.visuals().strong_text_color(),
+        );
+        for &(element, cell, cell_clip) in &self.cells {
+            let cell = cell.translate(shift);
+            let clip = clip(cell_clip);
+            let band = band(cell);
+            let painter = ui.painter_at(clip);
+            painter.rect_filled(band, 0.0, fill);
+            if let Some(colour) = paint.colour_of(element) {
+                painter.rect_filled(band, 0.0, colour.gamma_multiply(0.28));
+            }
+            painter.vline(
+                band.right(),
+                band.y_range(),
+                ui.visuals().widgets.noninteractive.bg_stroke,
+            );
+            let builder = egui::UiBuilder::new()
+                .id_salt(("sticky id", element))
+                .max_rect(cell)
+                .layout(egui::Layout::left_to_right(egui::Align::Center));
+            ui.scope_builder(builder, |ui| {
+                ui.set_clip_rect(clip);
+                if id_cell_ui(ui, element, paint, response) {
+                    response.clicked = Some(element);
+                }
+            });
+        }
     }
 }
 

@@ -195,3 +195,68 @@ fn every_edge_column_shows_beside_a_run() {
         "inc. edge at {incident:?} shows within {tables:?}"
     );
 }
+
+/// A table too narrow for its references scrolls sideways, and its ids stay
+/// at its left edge, where they still answer the pointer.
+#[test]
+fn the_id_column_stays_while_a_table_scrolls_sideways() {
+    use egui_kittest::kittest::Queryable as _;
+    let mut harness = support::harness_sized(720.0, 800.0);
+    harness
+        .state_mut()
+        .load_sample("tetrahedron", Some(Structure::WingedEdge))
+        .expect("opens");
+    harness
+        .state_mut()
+        .run_algorithm(
+            "vertexAdjacentEdge",
+            &[("v".to_owned(), Argument::Number(0.0))],
+        )
+        .expect("starts");
+    harness.run();
+    let tables = layout(&harness).panels["tables"];
+    // Row 3's id, at the table's left edge.
+    let id_at_left = |harness: &support::AppHarness| -> Vec<egui::Rect> {
+        harness
+            .get_all_by_label("3")
+            .map(|node| node.rect())
+            .filter(|rect| rect.left() >= tables.x && rect.left() < tables.x + 24.0)
+            .collect()
+    };
+    let before = id_at_left(&harness);
+    assert_eq!(
+        before.len(),
+        1,
+        "id 3 at the left of {tables:?}: {before:?}"
+    );
+    let start = harness.get_by_label("start").rect();
+    harness.hover_at(start.center());
+    harness.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: egui::vec2(-400.0, 0.0),
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Wheel,
+        modifiers: egui::Modifiers::NONE,
+    });
+    harness.run();
+    let scrolled = harness.get_by_label("start").rect();
+    assert!(
+        scrolled.left() < start.left() - 50.0,
+        "the table scrolled sideways: start went from {start:?} to {scrolled:?}"
+    );
+    let last = harness.get_by_label("R succ.").rect();
+    assert!(
+        last.right() <= tables.x + tables.w + 1.0,
+        "the last reference came into view: {last:?} in {tables:?}"
+    );
+    let after = id_at_left(&harness);
+    assert_eq!(after, before, "id 3 stays where it was");
+    harness.hover_at(before[0].center());
+    harness.run();
+    let hovered = harness.state().state().hovered;
+    assert_eq!(
+        hovered.map(|e| (e.kind, e.id)),
+        Some((edgewise_core::schema::ElementKind::Edge, 3)),
+        "the sticky id previews its row"
+    );
+}

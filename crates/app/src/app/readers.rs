@@ -12,11 +12,14 @@ use edgewise_core::schema::ElementRef;
 use super::EdgewiseApp;
 use crate::{accessible, platform};
 
+/// What the page's copy shows: mesh id, selection, and the trace's step
+/// and whether it plays.
+type CopyKey = (u64, Option<ElementRef>, Option<(usize, bool)>);
+
 /// What the page's copy was last built for.
 #[derive(Default)]
 pub(crate) struct ReaderCopy {
-    /// Mesh id, selection, trace step and whether it plays.
-    key: Option<(u64, Option<ElementRef>, Option<(usize, bool)>)>,
+    key: Option<CopyKey>,
     /// The role cells' words.
     roles: BTreeMap<ElementRef, String>,
     /// A hash of the algorithms' names and the mesh's structure.
