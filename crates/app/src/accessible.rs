@@ -41,6 +41,8 @@ pub struct TextTable {
     pub count: usize,
     /// After `id`: one per cell, `x`, `y` and `z` for a position.
     pub headers: Vec<&'static str>,
+    /// The same, as the journal's Table 1 shortens them ("L pred.").
+    pub short: Vec<&'static str>,
     /// The first rows, up to the limit asked for; `None` cells for a
     /// deleted row.
     pub rows: Vec<(ElementRef, Option<Vec<Cell>>)>,
@@ -55,22 +57,55 @@ pub fn text_tables(mesh: &Mesh, max_rows: usize) -> Vec<TextTable> {
         (ElementKind::Vertex, "Vertices"),
     ]
     .into_iter()
-    .map(|(kind, title)| text_table(mesh, kind, title, max_rows))
+    .map(|(kind, title)| {
+        let rows = 0..mesh.count(kind).min(max_rows) as u32;
+        text_table(mesh, kind, title, rows)
+    })
     .collect()
 }
 
-fn text_table(mesh: &Mesh, kind: ElementKind, title: &'static str, max_rows: usize) -> TextTable {
+/// The tables of `mesh` with only the rows of `elements`, in id order;
+/// a table with none of them is left out. A handout's page shows these.
+pub fn text_rows(mesh: &Mesh, elements: &[ElementRef]) -> Vec<TextTable> {
+    [
+        (ElementKind::Face, "Faces"),
+        (ElementKind::Edge, tables::edge_table_title(mesh)),
+        (ElementKind::Vertex, "Vertices"),
+    ]
+    .into_iter()
+    .filter_map(|(kind, title)| {
+        let mut ids: Vec<u32> = elements
+            .iter()
+            .filter(|e| e.kind == kind && (e.id as usize) < mesh.count(kind))
+            .map(|e| e.id)
+            .collect();
+        ids.sort_unstable();
+        ids.dedup();
+        (!ids.is_empty()).then(|| text_table(mesh, kind, title, ids))
+    })
+    .collect()
+}
+
+fn text_table(
+    mesh: &Mesh,
+    kind: ElementKind,
+    title: &'static str,
+    ids: impl IntoIterator<Item = u32>,
+) -> TextTable {
     let count = mesh.count(kind);
     let columns = Column::table(mesh.structure(), kind);
-    let mut headers = Vec::new();
+    let (mut headers, mut short) = (Vec::new(), Vec::new());
     for entry in columns {
         if entry.column == Column::Position {
             headers.extend(["x", "y", "z"]);
+            short.extend(["x", "y", "z"]);
         } else {
             headers.push(entry.header);
+            short.push(entry.short);
         }
     }
-    let rows = (0..count.min(max_rows) as u32)
+    let rows = ids
+        .into_iter()
         .map(|id| {
             let element = ElementRef { kind, id };
             if !mesh.contains(element) {
@@ -94,6 +129,7 @@ fn text_table(mesh: &Mesh, kind: ElementKind, title: &'static str, max_rows: usi
         title,
         count,
         headers,
+        short,
         rows,
     }
 }

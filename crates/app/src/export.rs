@@ -36,6 +36,21 @@ pub struct RowLook {
     pub roles: Vec<String>,
 }
 
+/// Each painted element's row look: its first colour and every role.
+pub fn row_looks(paint: &crate::paint::Paint) -> BTreeMap<ElementRef, RowLook> {
+    let mut rows: BTreeMap<_, RowLook> = BTreeMap::new();
+    for painted in &paint.painted {
+        let look = rows.entry(painted.element).or_insert_with(|| RowLook {
+            colour: painted.colour,
+            roles: Vec::new(),
+        });
+        if !look.roles.contains(&painted.role) {
+            look.roles.push(painted.role.clone());
+        }
+    }
+    rows
+}
+
 /// Everything an exported picture shows.
 #[derive(Clone, Debug)]
 pub struct Picture<'a> {

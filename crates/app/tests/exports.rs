@@ -130,6 +130,20 @@ fn a_handout_has_a_page_per_step_and_follows_an_edit() {
         "the step's sentence"
     );
     assert!(text.contains("(Page 23 of 23)"));
+    // The code beside the view, the current line on its band, and the
+    // rows the step paints; the labels' glyphs drawn, not spelled.
+    assert!(
+        text.contains("/BaseFont /Courier"),
+        "labels and code in Courier"
+    );
+    assert!(text.contains("( 13    e := v.incidentEdge;)"), "the code");
+    assert!(text.contains("0.85 0.92 1 rg"), "the current line's band");
+    assert!(
+        text.contains("(Edges \\(the rows painted at this step\\))"),
+        "the painted rows"
+    );
+    assert!(!text.contains("->"), "no arrow spelled out");
+    assert!(!text.contains(": ok"), "no check mark spelled out");
 
     // An edit: the pages follow the mesh as the run changes it.
     let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));

@@ -3,7 +3,6 @@
 //! per step, and screenshots of the whole window, which the browser encodes
 //! as PNG.
 
-use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
 use super::{EdgewiseApp, scene_styles};
@@ -11,7 +10,7 @@ use crate::{
     accessible,
     algorithm::frame::frame_at,
     command::CommandError,
-    export::{self, Picture, RowLook, pdf},
+    export::{self, Picture, pdf},
     view3d::MeshGeometry,
 };
 
@@ -65,16 +64,7 @@ impl EdgewiseApp {
             .vector_view(&self.view_options)
             .ok_or("the view has not been drawn yet; export it after the next frame")?;
         let tables = accessible::text_tables(document.mesh(), export::TABLE_ROWS);
-        let mut rows: BTreeMap<_, RowLook> = BTreeMap::new();
-        for painted in &self.current_paint().painted {
-            let look = rows.entry(painted.element).or_insert_with(|| RowLook {
-                colour: painted.colour,
-                roles: Vec::new(),
-            });
-            if !look.roles.contains(&painted.role) {
-                look.roles.push(painted.role.clone());
-            }
-        }
+        let rows = export::row_looks(&self.current_paint());
         let title = match tab.run.algorithm() {
             Some(algorithm) => format!("Edgewise: {} on {}", algorithm.name, document.name),
             None => format!("Edgewise: {}", document.name),
@@ -120,6 +110,20 @@ impl EdgewiseApp {
         let mut mesh = document.mesh().clone();
         let mut applied = tab.edit_applied;
         let mut pages = Vec::with_capacity(steps + 1);
+        let algorithm = trace.algorithm();
+        // The lines of the algorithm a step runs in: a call's are its own.
+        let code_of = |line: u32| -> Vec<(u32, String)> {
+            let routine = algorithm
+                .routines()
+                .iter()
+                .find(|r| (r.first_line..=r.last_line).contains(&line))
+                .unwrap_or(algorithm);
+            (1_u32..)
+                .zip(routine.source.lines())
+                .filter(|(number, _)| (routine.first_line..=routine.last_line).contains(number))
+                .map(|(number, text)| (number, text.to_owned()))
+                .collect()
+        };
         for step in 0..=steps {
             let geometry = if edits {
                 let wanted = trace.changes_through(step.checked_sub(1));
@@ -160,7 +164,15 @@ impl EdgewiseApp {
             if !line.is_empty() {
                 lines.push(line);
             }
-            pages.push(pdf::Page { view, lines });
+            let painted: Vec<_> = frame.paint.painted.iter().map(|p| p.element).collect();
+            pages.push(pdf::Page {
+                view,
+                lines,
+                code: code_of(frame.line),
+                current_line: (step > 0).then_some(frame.line),
+                tables: accessible::text_rows(&mesh, &painted),
+                rows: export::row_looks(&frame.paint),
+            });
         }
         let title = format!("{} on {}", trace.algorithm().name, document.name);
         let stem = crate::files::mesh_stem(&document.name);

@@ -1,18 +1,24 @@
 //! A PDF handout of a run: one landscape A4 page per step, each the view
 //! as vector shapes ([`VectorView`]) under the step's sentence and its
-//! variables, so a lecturer prints the walk instead of taking a screenshot
-//! per step.
+//! variables, beside the code with the current line and the tables' rows
+//! the step paints, so a lecturer prints the walk instead of taking a
+//! screenshot per step.
 //!
 //! Written by hand in PDF 1.4: the shapes need only paths, fills, strokes,
-//! a transparency state per opacity and the standard Helvetica font, so no
-//! font is embedded and a 22-step handout is a few tens of kilobytes.
+//! a transparency state per opacity and the standard Helvetica and Courier
+//! fonts, so no font is embedded and a 22-step handout is a few tens of
+//! kilobytes. The standard fonts lack the trace's glyphs (→ ✓ ★ ✎ ∅), so
+//! those are drawn as paths, in Courier's fixed-width cells.
 
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 use egui::{Color32, Pos2};
 
-use super::n;
+use super::{RowLook, cell_text, n};
+use crate::accessible::TextTable;
 use crate::view3d::vector::{Shape, VectorView, label_size, shaft_end};
+use edgewise_core::schema::ElementRef;
 
 /// Landscape A4, in PDF points.
 pub const PAGE: (f32, f32) = (842.0, 595.0);
@@ -24,20 +30,37 @@ const OPACITY_STEPS: u32 = 20;
 /// A circle's control-point distance, as a fraction of its radius.
 const KAPPA: f32 = 0.552_284_8;
 
-/// One page: the view and the lines above it.
+/// Courier's advance, in ems: every character, so glyphs drawn in its
+/// place line up with the text around them.
+const COURIER_EM: f32 = 0.6;
+/// The code's and the tables' type size, in points.
+const SMALL: f32 = 7.5;
+const SMALL_LEADING: f32 = 9.5;
+/// The right column (code and tables), in points.
+const SIDE_WIDTH: f32 = 300.0;
+
+/// One page: the view and the lines above it, and beside it the code and
+/// the painted rows.
 #[derive(Clone, Debug)]
 pub struct Page {
     pub view: VectorView,
     /// The step's sentence first, then the variables.
     pub lines: Vec<String>,
+    /// The algorithm's source lines, numbered.
+    pub code: Vec<(u32, String)>,
+    /// The line the step runs, highlighted.
+    pub current_line: Option<u32>,
+    /// The tables' rows the step paints, and how each is painted.
+    pub tables: Vec<TextTable>,
+    pub rows: BTreeMap<ElementRef, RowLook>,
 }
 
 /// The handout as PDF bytes.
 pub fn handout(title: &str, pages: &[Page]) -> Vec<u8> {
     let mut objects: Vec<String> = Vec::new();
-    // 1: catalog, 2: pages, 3: font, 4: graphics states, 5: info; then a
-    // page and its contents for each page.
-    let page_ids: Vec<usize> = (0..pages.len()).map(|i| 6 + 2 * i).collect();
+    // 1: catalog, 2: pages, 3: Helvetica, 4: graphics states, 5: info,
+    // 6: Courier; then a page and its contents for each page.
+    let page_ids: Vec<usize> = (0..pages.len()).map(|i| 7 + 2 * i).collect();
     objects.push("<< /Type /Catalog /Pages 2 0 R >>".to_owned());
     objects.push(format!(
         "<< /Type /Pages /Kids [{}] /Count {} >>",
@@ -63,11 +86,15 @@ pub fn handout(title: &str, pages: &[Page]) -> Vec<u8> {
         "<< /Title ({}) /Producer (Edgewise) >>",
         pdf_text(title)
     ));
+    objects.push(
+        "<< /Type /Font /Subtype /Type1 /BaseFont /Courier /Encoding /WinAnsiEncoding >>"
+            .to_owned(),
+    );
     for (i, page) in pages.iter().enumerate() {
         let contents = page_contents(page, i + 1, pages.len());
         objects.push(format!(
             "<< /Type /Page /Parent 2 0 R /MediaBox [0 0 {} {}] \
-             /Resources << /Font << /F1 3 0 R >> /ExtGState 4 0 R >> /Contents {} 0 R >>",
+             /Resources << /Font << /F1 3 0 R /F2 6 0 R >> /ExtGState 4 0 R >> /Contents {} 0 R >>",
             PAGE.0,
             PAGE.1,
             page_ids[i] + 1
@@ -157,9 +184,15 @@ fn page_contents(page: &Page, number: usize, count: usize) -> String {
         n(width - MARGIN - 70.0),
         n(MARGIN * 0.5)
     );
-    // The view, scaled to fit the rest of the page, y up.
+    // The view, scaled to fit the rest of the page, y up; the code and the
+    // rows on the right.
     let top = height - y + 8.0;
-    let room = (width - 2.0 * MARGIN, height - top - MARGIN);
+    let side = !page.code.is_empty() || !page.tables.is_empty();
+    let side_width = if side { SIDE_WIDTH + MARGIN * 0.5 } else { 0.0 };
+    if side {
+        side_contents(&mut out, page, width - MARGIN - SIDE_WIDTH, height - top);
+    }
+    let room = (width - 2.0 * MARGIN - side_width, height - top - MARGIN);
     let size = page.view.size;
     let scale = (room.0 / size.x.max(1.0))
         .min(room.1 / size.y.max(1.0))
@@ -286,24 +319,279 @@ fn shape_contents(
             let size = label_size(text) * scale;
             let (x, y) = place(*centre);
             let font = 12.0 * scale;
-            // Helvetica's digits and letters average about 0.55 em.
-            let text_width = text.chars().count() as f32 * font * 0.55;
+            let text_width = text.chars().count() as f32 * font * COURIER_EM;
             let _ = writeln!(
                 out,
-                "{} rg {} RG 0.8 w {} {} {} {} re B 0 g {} rg BT /F1 {} Tf {} {} Td ({}) Tj ET",
+                "{} rg {} RG 0.8 w {} {} {} {} re B",
                 rgb(view.palette.label_fill),
                 rgb(border.unwrap_or(view.palette.label_stroke)),
                 n(x - size.x * 0.5),
                 n(y - size.y * 0.5),
                 n(size.x),
                 n(size.y),
-                rgb(view.palette.label_text),
-                n(font),
-                n(x - text_width * 0.5),
-                n(y - font * 0.35),
-                pdf_text(text)
+            );
+            mono_text(
+                out,
+                text,
+                (x - text_width * 0.5, y - font * 0.3),
+                font,
+                view.palette.label_text,
             );
         }
+    }
+}
+
+/// The right column: the code with the current line on a band, then the
+/// painted rows of each table on their colours, in Courier.
+fn side_contents(out: &mut String, page: &Page, left: f32, top: f32) {
+    let black = Color32::BLACK;
+    let columns = (SIDE_WIDTH / (SMALL * COURIER_EM)) as usize;
+    let rows_height: f32 = page
+        .tables
+        .iter()
+        .map(|t| (t.rows.len() as f32 + 2.5) * SMALL_LEADING)
+        .sum();
+    // The code gets what the rows leave, at least a dozen lines.
+    // (and a line's gap between them).
+    let room = (top - MARGIN - rows_height - SMALL_LEADING).max(12.0 * SMALL_LEADING);
+    let fits = ((room / SMALL_LEADING) as usize).max(1);
+    // A long algorithm shows the lines around the current one.
+    let at = page
+        .current_line
+        .and_then(|line| page.code.iter().position(|(n, _)| *n == line))
+        .unwrap_or(0);
+    let first = at
+        .saturating_sub(fits / 3)
+        .min(page.code.len().saturating_sub(fits));
+    let mut y = top;
+    for (number, text) in page.code.iter().skip(first).take(fits) {
+        y -= SMALL_LEADING;
+        if Some(*number) == page.current_line {
+            let _ = writeln!(
+                out,
+                "0.85 0.92 1 rg {} {} {} {} re f",
+                n(left - 2.0),
+                n(y - SMALL_LEADING * 0.3),
+                n(SIDE_WIDTH + 4.0),
+                n(SMALL_LEADING),
+            );
+        }
+        let line = clipped(&format!("{number:>3}  {}", text.trim_end()), columns);
+        mono_text(out, &line, (left, y), SMALL, black);
+    }
+    y -= SMALL_LEADING;
+    for table in &page.tables {
+        y -= SMALL_LEADING * 1.5;
+        let title = format!("{} (the rows painted at this step)", table.title);
+        mono_text(out, &clipped(&title, columns), (left, y), SMALL, black);
+        // Each column as wide as its header or its widest cell.
+        let mut texts: Vec<Vec<String>> = vec![
+            std::iter::once("id")
+                .chain(table.short.iter().copied())
+                .map(str::to_owned)
+                .collect(),
+        ];
+        for (element, cells) in &table.rows {
+            let mut row = vec![element.id.to_string()];
+            match cells {
+                Some(cells) => row.extend(cells.iter().map(cell_text)),
+                None => row.push("deleted".to_owned()),
+            }
+            texts.push(row);
+        }
+        let mut widths = vec![0; texts[0].len()];
+        for row in &texts {
+            for (i, cell) in row.iter().enumerate().take(widths.len()) {
+                widths[i] = widths[i].max(cell.chars().count());
+            }
+        }
+        for (r, row) in texts.iter().enumerate() {
+            y -= SMALL_LEADING;
+            let colour = r
+                .checked_sub(1)
+                .and_then(|i| table.rows.get(i))
+                .and_then(|(element, _)| page.rows.get(element))
+                .map(|look| look.colour);
+            if let Some(colour) = colour {
+                let _ = writeln!(
+                    out,
+                    "/A{} gs {} rg {} {} {} {} re f /A{OPACITY_STEPS} gs",
+                    opacity_state(0.3),
+                    rgb(colour),
+                    n(left - 2.0),
+                    n(y - SMALL_LEADING * 0.3),
+                    n(SIDE_WIDTH + 4.0),
+                    n(SMALL_LEADING),
+                );
+            }
+            let line: String = row
+                .iter()
+                .zip(&widths)
+                .map(|(cell, width)| format!("{cell:<width$} "))
+                .collect();
+            mono_text(out, &clipped(&line, columns), (left, y), SMALL, black);
+        }
+    }
+}
+
+/// `text` cut to `columns` characters, with `…` where it was cut.
+fn clipped(text: &str, columns: usize) -> String {
+    if text.chars().count() <= columns {
+        return text.to_owned();
+    }
+    let mut cut: String = text.chars().take(columns.saturating_sub(1)).collect();
+    cut.push('…');
+    cut
+}
+
+/// `text` in Courier from `at` (its baseline's left end), each of the
+/// trace's glyphs drawn as a path in its character's cell.
+fn mono_text(out: &mut String, text: &str, at: (f32, f32), size: f32, colour: Color32) {
+    let cell = size * COURIER_EM;
+    let (mut x, y) = at;
+    let mut run = String::new();
+    let mut run_start = x;
+    let flush = |out: &mut String, run: &mut String, start: f32| {
+        if !run.is_empty() {
+            let _ = writeln!(
+                out,
+                "{} rg BT /F2 {} Tf {} {} Td ({}) Tj ET",
+                rgb(colour),
+                n(size),
+                n(start),
+                n(y),
+                pdf_text(run)
+            );
+            run.clear();
+        }
+    };
+    for c in text.chars() {
+        if let Some(glyph) = Glyph::of(c) {
+            flush(out, &mut run, run_start);
+            glyph.draw(out, (x, y), size, colour);
+            run_start = x + cell;
+        } else {
+            if run.is_empty() {
+                run_start = x;
+            }
+            run.push(c);
+        }
+        x += cell;
+    }
+    flush(out, &mut run, run_start);
+}
+
+/// The characters the standard fonts lack that the app's labels and
+/// tables use.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Glyph {
+    Arrow,
+    Check,
+    Star,
+    Pencil,
+    Empty,
+    Ellipsis,
+}
+
+impl Glyph {
+    fn of(c: char) -> Option<Self> {
+        Some(match c {
+            '→' => Self::Arrow,
+            '✓' => Self::Check,
+            '★' => Self::Star,
+            '✎' => Self::Pencil,
+            '∅' => Self::Empty,
+            '…' => Self::Ellipsis,
+            _ => return None,
+        })
+    }
+
+    /// Draws the glyph in the cell whose baseline starts at `at`.
+    fn draw(self, out: &mut String, at: (f32, f32), size: f32, colour: Color32) {
+        let (x, y) = at;
+        let p = |dx: f32, dy: f32| format!("{} {}", n(x + dx * size), n(y + dy * size));
+        let c = rgb(colour);
+        let line = n(size * 0.07);
+        let _ = match self {
+            Self::Arrow => writeln!(
+                out,
+                "{c} RG {c} rg {line} w {} m {} l S {} m {} l {} l f",
+                p(0.04, 0.3),
+                p(0.4, 0.3),
+                p(0.58, 0.3),
+                p(0.36, 0.42),
+                p(0.36, 0.18),
+            ),
+            Self::Check => writeln!(
+                out,
+                "{c} RG {} w 1 J 1 j {} m {} l {} l S",
+                n(size * 0.09),
+                p(0.06, 0.33),
+                p(0.24, 0.1),
+                p(0.56, 0.62),
+            ),
+            Self::Star => {
+                let points: Vec<String> = (0..10)
+                    .map(|i| {
+                        let angle =
+                            std::f32::consts::FRAC_PI_2 + i as f32 * std::f32::consts::PI / 5.0;
+                        let r = if i % 2 == 0 { 0.32 } else { 0.13 };
+                        p(0.3 + r * angle.cos(), 0.3 + r * angle.sin())
+                    })
+                    .collect();
+                writeln!(
+                    out,
+                    "{c} rg {} m {} l h f",
+                    points[0],
+                    points[1..].join(" l ")
+                )
+            }
+            Self::Pencil => writeln!(
+                out,
+                "{c} RG {c} rg {} w 0 J {} m {} l S {} m {} l {} l f",
+                n(size * 0.13),
+                p(0.2, 0.16),
+                p(0.52, 0.62),
+                p(0.06, -0.02),
+                p(0.22, 0.08),
+                p(0.12, 0.16),
+            ),
+            Self::Empty => writeln!(
+                out,
+                "{c} RG {line} w {} m {} {} {} {} {} {} c {} {} {} {} {} {} c S {} m {} l S",
+                p(0.52, 0.3),
+                p(0.52, 0.42),
+                p(0.42, 0.52),
+                p(0.3, 0.52),
+                p(0.18, 0.52),
+                p(0.08, 0.42),
+                p(0.08, 0.3),
+                p(0.08, 0.18),
+                p(0.18, 0.08),
+                p(0.3, 0.08),
+                p(0.42, 0.08),
+                p(0.52, 0.18),
+                p(0.52, 0.3),
+                p(0.08, 0.02),
+                p(0.52, 0.58),
+            ),
+            Self::Ellipsis => writeln!(
+                out,
+                "{c} rg {} {} {} {} re {} {} {} {} re {} {} {} {} re f",
+                n(x + size * 0.06),
+                n(y),
+                n(size * 0.08),
+                n(size * 0.08),
+                n(x + size * 0.26),
+                n(y),
+                n(size * 0.08),
+                n(size * 0.08),
+                n(x + size * 0.46),
+                n(y),
+                n(size * 0.08),
+                n(size * 0.08),
+            ),
+        };
     }
 }
 
@@ -315,6 +603,18 @@ mod tests {
     fn text_is_escaped_for_win_ansi() {
         assert_eq!(pdf_text("a (b) \\ c"), "a \\(b\\) \\\\ c");
         assert_eq!(pdf_text("∅ → é ✓ ☃"), "none -> \\351 ok ?");
+    }
+
+    #[test]
+    fn glyphs_are_drawn_in_their_cells_between_courier_runs() {
+        let mut out = String::new();
+        mono_text(&mut out, "3: ✓ se", (10.0, 20.0), 10.0, Color32::BLACK);
+        let lines: Vec<&str> = out.lines().collect();
+        assert_eq!(lines.len(), 3, "{out}");
+        assert!(lines[0].ends_with("10 20 Td (3: ) Tj ET"), "{out}");
+        // The check mark fills the fourth cell, 6 pt wide: x from 28.
+        assert!(lines[1].contains(" 1 J 1 j 28.6 23.3 m"), "{out}");
+        assert!(lines[2].ends_with("34 20 Td ( se) Tj ET"), "{out}");
     }
 
     #[test]
@@ -331,6 +631,10 @@ mod tests {
         let page = Page {
             view,
             lines: vec!["Step 1 of 1: done".to_owned()],
+            code: vec![(1, "mark e;".to_owned())],
+            current_line: Some(1),
+            tables: Vec::new(),
+            rows: BTreeMap::new(),
         };
         let bytes = handout("test", &[page.clone(), page]);
         let text = String::from_utf8(bytes).expect("ASCII");
@@ -342,11 +646,11 @@ mod tests {
             .and_then(|rest| rest.lines().next())
             .and_then(|offset| offset.parse().ok())
             .expect("startxref");
-        assert!(text[xref..].starts_with("xref\n0 10\n"));
+        assert!(text[xref..].starts_with("xref\n0 11\n"));
         let entries: Vec<usize> = text[xref..]
             .lines()
             .skip(3)
-            .take(9)
+            .take(10)
             .map(|line| line[..10].parse().expect("an offset"))
             .collect();
         for (i, offset) in entries.iter().enumerate() {
