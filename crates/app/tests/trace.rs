@@ -537,3 +537,37 @@ fn an_algorithm_file_opens_in_the_editor_and_joins_the_menu() {
             .any(|a| a.name == "oops")
     );
 }
+
+/// Inside a call, a step's sentence names the called algorithm's variables
+/// (flipEdge calls `joined`, whose `g := g.next.pair` was told as an
+/// assignment to flipEdge's `h1`).
+#[test]
+fn a_step_inside_a_call_names_the_called_algorithms_variable() {
+    let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));
+    harness
+        .state_mut()
+        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(0.0))])
+        .expect("runs");
+    harness.run();
+    let steps = harness.state().state().trace.expect("tracing").steps;
+    let mut inside = 0;
+    for step in 1..=steps {
+        harness.state_mut().trace_goto(step).expect("goto");
+        let trace = harness.state().state().trace.expect("tracing");
+        let Some(assigned) = trace.message.strip_prefix("Assignment: ") else {
+            continue;
+        };
+        let name = assigned.split(" := ").next().unwrap_or_default();
+        assert!(
+            trace.variables.contains_key(name),
+            "step {step} in {:?}: {} names {name}, not one of {:?}",
+            trace.calls,
+            trace.message,
+            trace.variables.keys().collect::<Vec<_>>()
+        );
+        if trace.calls.len() > 1 {
+            inside += 1;
+        }
+    }
+    assert!(inside > 0, "some assignments ran inside a call");
+}

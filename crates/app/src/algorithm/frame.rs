@@ -17,7 +17,7 @@ use crate::trace_role::TraceRole;
 use edgewise_core::schema::ElementRef;
 use std::collections::HashMap;
 
-use edgewise_core::lang::{Algorithm, StepKind, Trace, Type, Value};
+use edgewise_core::lang::{Algorithm, Routine, StepKind, Trace, Type, Value};
 use serde::Serialize;
 
 use crate::{
@@ -285,7 +285,11 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
             algorithm.name,
             inputs_text(algorithm, &variables)
         ),
-        (None, Some(view)) => describe(algorithm, view.kind, view.span, &marked),
+        // Inside a call, the step names the called algorithm's variables.
+        (None, Some(view)) => {
+            let running = frames.last().map_or(&***algorithm, |frame| frame.routine);
+            describe(running, view.kind, view.span, &marked)
+        }
     };
     TraceFrame {
         step,
@@ -358,7 +362,7 @@ fn inputs_text(algorithm: &Algorithm, variables: &[Value]) -> String {
 
 /// One sentence for the message line.
 fn describe(
-    algorithm: &Algorithm,
+    algorithm: &Routine,
     kind: StepKind<'_>,
     span: edgewise_core::lang::Span,
     marked: &[ElementRef],
