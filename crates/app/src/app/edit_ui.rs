@@ -69,13 +69,7 @@ impl EdgewiseApp {
             );
             // In the language's names (successorEdge), at the panel's size.
             for issue in broken.iter().take(LISTED) {
-                let line = format!(
-                    "{} {}: {}",
-                    issue.element,
-                    issue.field.lookup_name(),
-                    issue.message
-                );
-                ui.label(egui::RichText::new(line).color(colour));
+                ui.label(egui::RichText::new(issue.in_language()).color(colour));
             }
             if tab.broken_total > LISTED {
                 ui.weak(format!("… and {} more", tab.broken_total - LISTED));

@@ -72,6 +72,20 @@ pub struct Issue {
     pub message: String,
 }
 
+impl Issue {
+    /// The issue with its field as the algorithm language names it
+    /// ("edge 3 successorEdge: …"), for the app, where students read the
+    /// language; [`fmt::Display`] names the field as the files do.
+    pub fn in_language(&self) -> String {
+        format!(
+            "{} {}: {}",
+            self.element,
+            self.field.lookup_name(),
+            self.message
+        )
+    }
+}
+
 impl fmt::Display for Issue {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
