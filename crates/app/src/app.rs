@@ -925,11 +925,10 @@ impl EdgewiseApp {
         } else {
             // Each table's share of the width is what its references need,
             // so that a narrow panel (beside a run) cuts the labels first.
-            let structure = document.mesh().structure();
-            let needs = titles.map(|(kind, _)| tables::references_width(ui, structure, kind));
-            let total: f32 = needs.iter().sum();
+            let needs = titles.map(|(kind, _)| tables::references_width(ui, document.mesh(), kind));
             // The edge table takes the remainder, which leaves out the
-            // spacing between the cells (relative sizes do not).
+            // spacing between the cells: count it in the whole.
+            let total: f32 = needs.iter().sum::<f32>() + 2.0 * ui.spacing().item_spacing.x;
             let [faces, _, vertices] = needs;
             StripBuilder::new(ui)
                 .size(Size::relative(faces / total))

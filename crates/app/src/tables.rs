@@ -14,7 +14,17 @@ use crate::{paint::Paint, selection::Role};
 
 const ROW_HEIGHT: f32 = 20.0;
 /// The least width of a column after the id column, in points.
-const COLUMN_LEAST_WIDTH: f32 = 40.0;
+/// On a touch screen, at least a touch target ([`least_width`]).
+const COLUMN_LEAST_WIDTH: f32 = 32.0;
+/// The space between a table's cells, in points: less than egui's usual 8, so
+/// that beside a run at 1280x800 the three tables show every reference.
+const CELL_SPACING: f32 = 6.0;
+
+/// The least width of a column after the id column: a touch target where
+/// widgets are (on a touch screen).
+fn least_width(ui: &egui::Ui) -> f32 {
+    COLUMN_LEAST_WIDTH.max(ui.spacing().interact_size.y)
+}
 
 /// A table's column headers: the id, the columns, the labels.
 struct Headers {
@@ -56,26 +66,61 @@ impl Headers {
 /// The width a table of `kind` needs for its references to show, with short
 /// headers and without its labels (the last column, which may scroll away).
 /// Side by side, the tables share the width in these proportions.
-pub fn references_width(ui: &egui::Ui, structure: Structure, kind: ElementKind) -> f32 {
-    let headers = Headers::of(structure, kind);
+pub fn references_width(ui: &egui::Ui, mesh: &Mesh, kind: ElementKind) -> f32 {
+    let headers = Headers::of(mesh.structure(), kind);
     let references = &headers.short[..headers.short.len() - 1];
-    headers_width(ui, references)
+    columns_width(ui, references, &widest_cells(mesh, &headers))
 }
 
-/// How wide a table is whose headers are `titles`, each column at least as
-/// wide as its header.
-fn headers_width(ui: &egui::Ui, titles: &[&str]) -> f32 {
-    let font = egui::TextStyle::Body.resolve(ui.style());
-    let gap = ui.spacing().item_spacing.x;
+/// The widest text each column of `headers` holds in `mesh`: an id of as
+/// many digits as the largest table has rows, or a coordinate.
+fn widest_cells(mesh: &Mesh, headers: &Headers) -> Vec<String> {
+    let rows = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]
+        .map(|kind| mesh.count(kind))
+        .into_iter()
+        .max()
+        .unwrap_or_default();
+    let id = "0".repeat(rows.max(1).ilog10() as usize + 1);
+    headers
+        .full
+        .iter()
+        .map(|header| {
+            if Column::COORDINATES.contains(header) {
+                "-0.000".to_owned()
+            } else {
+                id.clone()
+            }
+        })
+        .collect()
+}
+
+/// How wide a table is whose columns have the headers `titles` and cells
+/// as wide as `cells` (monospace), as `egui_extras` sizes it: each column
+/// as wide as its widest text (the id's button padded), at least
+/// [`least_width`], and the cell spacing after it.
+fn columns_width(ui: &egui::Ui, titles: &[&str], cells: &[String]) -> f32 {
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let mono = egui::TextStyle::Monospace.resolve(ui.style());
+    let spacing = ui.spacing();
+    let width = |text: &str, font: &egui::FontId| {
+        ui.fonts_mut(|f| {
+            f.layout_no_wrap(text.to_owned(), font.clone(), egui::Color32::WHITE)
+                .size()
+                .x
+        })
+    };
     titles
         .iter()
-        .map(|title| {
-            let width = ui.fonts_mut(|f| {
-                f.layout_no_wrap((*title).to_owned(), font.clone(), egui::Color32::WHITE)
-                    .size()
-                    .x
-            });
-            (width + gap).max(COLUMN_LEAST_WIDTH)
+        .zip(cells)
+        .enumerate()
+        .map(|(i, (title, cell))| {
+            let padding = if i == 0 {
+                2.0 * spacing.button_padding.x
+            } else {
+                0.0
+            };
+            let content = width(title, &body).max(width(cell, &mono) + padding);
+            content.max(least_width(ui)) + CELL_SPACING
         })
         .sum()
 }
@@ -149,14 +194,18 @@ pub fn table_ui(
         1.5,
         crate::view3d::Palette::new(ui.visuals().dark_mode).hover,
     );
+    ui.spacing_mut().item_spacing.x = CELL_SPACING;
+    let least = least_width(ui);
+    let table_headers = Headers::of(mesh.structure(), kind);
+    let widest = widest_cells(mesh, &table_headers);
     let Headers {
         full: headers,
         short: shorts,
         derived,
-    } = Headers::of(mesh.structure(), kind);
+    } = table_headers;
     // The journal's short headers where the full ones would not fit, so
     // that every column shows without scrolling sideways.
-    let short = headers_width(ui, &headers) > ui.available_width();
+    let short = columns_width(ui, &headers, &widest) > ui.available_width();
     let shown = if short { &shorts } else { &headers };
     let rows = mesh.count(kind);
     let drawn_id = ui.make_persistent_id(("edgewise drawn rows", kind));
@@ -200,7 +249,7 @@ pub fn table_ui(
         table = table.column(if i + 1 == headers.len() {
             egui_extras::Column::remainder().at_least(60.0)
         } else {
-            egui_extras::Column::auto().at_least(if i == 0 { 36.0 } else { COLUMN_LEAST_WIDTH })
+            egui_extras::Column::auto().at_least(if i == 0 { 36.0 } else { least })
         });
     }
     table
