@@ -482,7 +482,7 @@ impl Occupancy {
         }
         seen.iter()
             .map(|taken| taken.intersect(rect))
-            .filter(|both| both.is_positive())
+            .filter(Rect::is_positive)
             .map(|both| both.area())
             .sum()
     }
