@@ -5,10 +5,13 @@
 //! - `test` runs everything CI checks.
 //! - `build-web [--dev | --profiling]` only builds dist/.
 //! - `browser-test` builds dist/ and runs only the browser tests.
+//! - `hosts [--app URL]` installs reveal.js and `MkDocs`, builds a deck and
+//!   notes that embed the app, and serves them.
 //! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
 //!   `fuzz --make-seeds` rebuilds the seed corpus in fuzz/seeds/.
 
 mod fuzz;
+mod hosts;
 mod process;
 mod serve;
 mod test;
@@ -52,6 +55,14 @@ enum Command {
     },
     /// Build dist/ and run only the browser tests.
     BrowserTest,
+    /// Install reveal.js and mkdocs from the package registries as web/hosts
+    /// pins them, build a deck and lecture notes that embed the app, and
+    /// serve them (and dist/) until stopped: the hosts the browser tests use.
+    Hosts {
+        /// Where the app is served (default: serve the built dist/ here).
+        #[arg(long)]
+        app: Option<String>,
+    },
     /// Build dist/, then measure it in headless Chromium beside a bare WebGL2
     /// page drawing the same torus, and print the table (see README).
     BenchWeb,
@@ -104,6 +115,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::browser_tests(&root, &dist)
         }
+        Command::Hosts { ref app } => hosts::serve(&root, app.as_deref()),
         Command::BenchWeb => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::bench_web(&root, &dist)

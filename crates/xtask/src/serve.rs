@@ -111,6 +111,10 @@ fn content_type(path: &Path) -> &'static str {
         Some("svg") => "image/svg+xml",
         Some("png") => "image/png",
         Some("json") => "application/json",
+        // The host pages' themes (reveal.js, MkDocs) bring their fonts.
+        Some("woff2") => "font/woff2",
+        Some("woff") => "font/woff",
+        Some("ttf") => "font/ttf",
         Some("obj" | "wtb" | "htb" | "txt" | "alg" | "md") => "text/plain; charset=utf-8",
         _ => "application/octet-stream",
     }

@@ -3,6 +3,7 @@
 use std::{path::Path, time::Instant};
 
 use crate::{
+    hosts,
     process::{self, cargo},
     serve,
     toolchain::WasmToolchain,
@@ -100,7 +101,8 @@ fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
     process::run("wasm32 lints", &mut cmd)
 }
 
-/// Serves `dist` and runs the browser tests against it in headless Chromium.
+/// Serves `dist` and the host pages that embed it (hosts.rs), each on its
+/// own origin, and runs the browser tests against them in headless Chromium.
 pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
     process::ensure_debian_packages(
         "the browser tests",
@@ -108,13 +110,16 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
     )?;
     let addr = serve::serve_in_background(dist)?;
     let url = format!("http://{addr}/");
-    eprintln!("==> browser tests against {url}");
+    let hosts_addr = serve::serve_in_background(&hosts::build(root, &url)?)?;
+    let hosts_url = format!("http://{hosts_addr}/");
+    eprintln!("==> browser tests against {url}, hosts at {hosts_url}");
     process::run(
         "browser tests",
         cargo()
             .current_dir(root)
             .args(["test", "--locked", "--package", BROWSER_TESTS])
             .env("EDGEWISE_URL", &url)
+            .env("EDGEWISE_HOSTS_URL", &hosts_url)
             .env("EDGEWISE_CHROMIUM", CHROMIUM)
             .env("EDGEWISE_CHROMEDRIVER", CHROMEDRIVER),
     )

@@ -268,6 +268,15 @@ impl Browser {
             .with_context(|| format!("cannot open {url}"))
     }
 
+    /// Navigates to `url`, a page of another site than the app (a host
+    /// page that embeds it), without waiting for the app.
+    pub async fn goto_url(&self, url: &str) -> anyhow::Result<()> {
+        self.client
+            .goto(url)
+            .await
+            .with_context(|| format!("cannot open {url}"))
+    }
+
     /// Opens a second tab and switches to it; [`Self::switch_to`] goes back
     /// to the first with the handle of [`Self::tab`].
     pub async fn new_tab(&self) -> anyhow::Result<fantoccini::wd::WindowHandle> {
@@ -346,6 +355,22 @@ impl Browser {
             .execute(script, vec![])
             .await
             .with_context(|| format!("script failed: {script}"))
+    }
+
+    /// Runs a script body in the page's frame number `index` (0 is the
+    /// first), even one from another origin, and comes back to the page:
+    /// for saying what a frame shows when a host page test fails.
+    pub async fn eval_in_frame(&self, index: u16, script: &str) -> anyhow::Result<Value> {
+        self.client
+            .enter_frame(index)
+            .await
+            .with_context(|| format!("cannot enter frame {index}"))?;
+        let value = self.eval(script).await;
+        self.client
+            .enter_parent_frame()
+            .await
+            .context("cannot leave the frame")?;
+        value
     }
 
     /// Awaits a JS expression that may be a Promise and returns its JSON value.
@@ -538,20 +563,25 @@ impl Browser {
     }
 
     /// Presses and releases a key (`"Enter"`, `"Tab"`, `"ArrowDown"`,
-    /// `"e"`, `"z"`), with `modifiers` as CDP counts them (2 is Ctrl, 8 is
-    /// Shift).
+    /// `"PageDown"`, `" "` for Space, `"e"`, `"z"`), with `modifiers` as
+    /// CDP counts them (2 is Ctrl, 8 is Shift).
     pub async fn press_key(&self, key: &str, modifiers: u32) -> anyhow::Result<()> {
-        const NAMED: &[(&str, u32)] = &[
-            ("Enter", 13),
-            ("Escape", 27),
-            ("Tab", 9),
-            ("ArrowLeft", 37),
-            ("ArrowUp", 38),
-            ("ArrowRight", 39),
-            ("ArrowDown", 40),
+        // Each named key's `code` and key code.
+        const NAMED: &[(&str, &str, u32)] = &[
+            ("Enter", "Enter", 13),
+            ("Escape", "Escape", 27),
+            ("Tab", "Tab", 9),
+            (" ", "Space", 32),
+            ("/", "Slash", 191),
+            ("PageUp", "PageUp", 33),
+            ("PageDown", "PageDown", 34),
+            ("ArrowLeft", "ArrowLeft", 37),
+            ("ArrowUp", "ArrowUp", 38),
+            ("ArrowRight", "ArrowRight", 39),
+            ("ArrowDown", "ArrowDown", 40),
         ];
-        let (code, key_code) = match NAMED.iter().find(|(name, _)| *name == key) {
-            Some(&(name, key_code)) => (name.to_owned(), key_code),
+        let (code, key_code) = match NAMED.iter().find(|(name, _, _)| *name == key) {
+            Some(&(_, code, key_code)) => (code.to_owned(), key_code),
             None => (
                 format!("Key{}", key.to_uppercase()),
                 u32::from(key.to_ascii_uppercase().bytes().next().unwrap_or(b'A')),
