@@ -17,11 +17,7 @@ fn end_vertex(harness: &support::AppHarness, h: u32) -> Option<VertexId> {
 }
 
 fn start_flip(harness: &mut support::AppHarness) {
-    harness
-        .state_mut()
-        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(2.0))])
-        .expect("the flip starts");
-    harness.run();
+    support::run_flip_edge(harness, 2);
 }
 
 #[test]

@@ -8,7 +8,6 @@ mod support;
 #[path = "../../core/tests/golden/mod.rs"]
 mod golden;
 
-use edgewise_app::Argument;
 use edgewise_core::mesh::Structure;
 use edgewise_core::schema::{ElementKind, ElementRef};
 
@@ -147,11 +146,7 @@ fn a_handout_has_a_page_per_step_and_follows_an_edit() {
 
     // An edit: the pages follow the mesh as the run changes it.
     let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));
-    harness
-        .state_mut()
-        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(0.0))])
-        .expect("runs");
-    harness.run();
+    support::run_flip_edge(&mut harness, 0);
     let (name, pdf) = harness.state().export_handout().expect("a handout");
     keep(&name, &pdf);
     let steps = harness.state().state().trace.expect("tracing").steps;

@@ -158,14 +158,7 @@ fn every_edge_column_shows_beside_a_run() {
     // Shown first across the whole window, with full headers, as a link
     // opens it before the run starts.
     harness.run();
-    harness
-        .state_mut()
-        .run_algorithm(
-            "vertexAdjacentEdge",
-            &[("v".to_owned(), Argument::Number(0.0))],
-        )
-        .expect("starts");
-    harness.run();
+    support::run_vertex_adjacent_edge(&mut harness, 0);
     let layout = layout(&harness);
     let (tables, algorithm) = (layout.panels["tables"], layout.panels["algorithm"]);
     assert!(
@@ -208,14 +201,7 @@ fn the_id_column_stays_while_a_table_scrolls_sideways() {
         .state_mut()
         .load_sample("tetrahedron", Some(Structure::WingedEdge))
         .expect("opens");
-    harness
-        .state_mut()
-        .run_algorithm(
-            "vertexAdjacentEdge",
-            &[("v".to_owned(), Argument::Number(0.0))],
-        )
-        .expect("starts");
-    harness.run();
+    support::run_vertex_adjacent_edge(&mut harness, 0);
     let tables = layout(&harness).panels["tables"];
     // Row 3's id, at the table's left edge.
     let id_at_left = |harness: &support::AppHarness| -> Vec<egui::Rect> {

@@ -544,11 +544,7 @@ fn an_algorithm_file_opens_in_the_editor_and_joins_the_menu() {
 #[test]
 fn a_step_inside_a_call_names_the_called_algorithms_variable() {
     let mut harness = support::harness_with("octahedron", Some(Structure::HalfEdge));
-    harness
-        .state_mut()
-        .run_algorithm("flipEdge", &[("h".to_owned(), Argument::Number(0.0))])
-        .expect("runs");
-    harness.run();
+    support::run_flip_edge(&mut harness, 0);
     let steps = harness.state().state().trace.expect("tracing").steps;
     let mut inside = 0;
     for step in 1..=steps {

@@ -458,6 +458,26 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
         browser.eval(question).await?,
         "Which edge will e be after the lookup v.incidentEdge?"
     );
+    // Steps the view with → from step `from` until it asks `prompt` (by
+    // step `limit` at most), the height checked after each step.
+    let step_until = |prompt: &'static str, from: u32, limit: u32| {
+        let (browser, same_height) = (&browser, &same_height);
+        async move {
+            let mut steps = from;
+            while browser.eval(question).await? != prompt {
+                steps += 1;
+                assert!(steps <= limit, "{prompt:?} was never asked");
+                let before = heard_count(browser).await?;
+                browser.press_key("ArrowRight", 0).await?;
+                browser
+                    .wait_for(&stepped_to(steps, before), Duration::from_secs(30))
+                    .await
+                    .with_context(|| format!("→ did not step the view to step {steps}"))?;
+                same_height("stepped").await?;
+            }
+            anyhow::Ok(steps)
+        }
+    };
     let shot = browser.screenshot("host-mkdocs-question-1").await?;
     let rect = frame_rect(&browser).await?;
     let colours = colours_in(&shot, rect, DRAWN);
@@ -487,18 +507,7 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
 
     // The click gave the view the keys: → steps to question 2, which
     // asks true or false.
-    let mut steps = 0;
-    while browser.eval(question).await? != "Is v the start vertex of e?" {
-        steps += 1;
-        assert!(steps <= 10, "question 2 was never asked");
-        let before = heard_count(&browser).await?;
-        browser.press_key("ArrowRight", 0).await?;
-        browser
-            .wait_for(&stepped_to(steps, before), Duration::from_secs(30))
-            .await
-            .with_context(|| format!("→ did not step the view to step {steps}"))?;
-        same_height("stepped").await?;
-    }
+    let steps = step_until("Is v the start vertex of e?", 0, 10).await?;
     let shot = browser.screenshot("host-mkdocs-question-2").await?;
     let controls = browser
         .eval_async(&format!(
@@ -529,19 +538,12 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
 
     // Question 3 asks for an edge again: the student types it, in the box
     // that `/` opens.
-    while browser.eval(question).await?
-        != "e does not start at v. Which edge is e's right successor?"
-    {
-        steps += 1;
-        assert!(steps <= 20, "question 3 was never asked");
-        let before = heard_count(&browser).await?;
-        browser.press_key("ArrowRight", 0).await?;
-        browser
-            .wait_for(&stepped_to(steps, before), Duration::from_secs(30))
-            .await
-            .with_context(|| format!("→ did not step the view to step {steps}"))?;
-        same_height("stepped").await?;
-    }
+    let steps = step_until(
+        "e does not start at v. Which edge is e's right successor?",
+        steps,
+        20,
+    )
+    .await?;
     // A moment between keys, as a student types: the box takes the keys
     // from the frame after `/` focused it.
     for key in ["/", "e", " ", "5", "Enter"] {

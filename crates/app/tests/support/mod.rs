@@ -74,6 +74,18 @@ pub fn run_vertex_adjacent_edge(harness: &mut AppHarness, v: u32) {
     harness.run();
 }
 
+/// Starts flipEdge on half-edge `h` and runs a frame.
+pub fn run_flip_edge(harness: &mut AppHarness, h: u32) {
+    harness
+        .state_mut()
+        .run_algorithm(
+            "flipEdge",
+            &[("h".to_owned(), edgewise_app::Argument::Number(f64::from(h)))],
+        )
+        .expect("flipEdge runs");
+    harness.run();
+}
+
 /// Sets the running trace's questions (`line 13: Which edge will e be?`)
 /// and runs a frame.
 pub fn ask(harness: &mut AppHarness, questions: &str) {
