@@ -16,7 +16,7 @@ use edgewise_core::mesh::{Mesh, Structure, generate};
 use eframe::egui_wgpu::RenderState;
 
 // The render tests' offscreen drawing, so a frame here costs what theirs do.
-#[path = "../tests/support/gpu.rs"]
+#[path = "../tests/it/support/gpu.rs"]
 mod gpu;
 
 /// The window, in pixels and points.

@@ -1,7 +1,7 @@
 //! The bodies of the `course_link` and `link` fuzz targets in `fuzz/`.
 //!
 //! The fuzz targets (nightly, libFuzzer) and the replay test
-//! (`crates/app/tests/fuzz_regressions.rs`, stable, run by `cargo xtask
+//! (`crates/app/tests/it/fuzz_regressions.rs`, stable, run by `cargo xtask
 //! test`) both call it, so a crash found by the fuzzer is replayed by exactly
 //! the code that found it. Not part of the app's interface.
 

@@ -1,7 +1,7 @@
 //! The bodies of the fuzz targets in `fuzz/`, one function per target.
 //!
 //! The fuzz targets (nightly, libFuzzer) and the replay tests
-//! (`crates/core/tests/fuzz_regressions.rs`, stable, run by `cargo xtask
+//! (`crates/core/tests/it/fuzz_regressions.rs`, stable, run by `cargo xtask
 //! test`) both call these, so a crash found by the fuzzer is replayed by
 //! exactly the code that found it. Each function panics only on a bug: a
 //! reader that panics, or a mesh that loads but does not validate.

@@ -111,8 +111,8 @@ fn ensure_nightly() -> anyhow::Result<()> {
             "fuzzing needs rustup and a nightly toolchain, and rustup is not installed.\n\
              Install rustup (https://rustup.rs), then: rustup toolchain install nightly\n\
              Without nightly, replay the seeds and the crashes found so far on stable with: \
-             cargo test -p edgewise-core --test fuzz_regressions && \
-             cargo test -p edgewise-app --test fuzz_regressions"
+             cargo test -p edgewise-core --test it fuzz_regressions:: && \
+             cargo test -p edgewise-app --test it fuzz_regressions::"
         );
     };
     if !list.lines().any(|line| line.starts_with("nightly")) {
@@ -121,8 +121,8 @@ fn ensure_nightly() -> anyhow::Result<()> {
              none:\n{list}\
              Install one with: rustup toolchain install nightly\n\
              Without nightly, replay the seeds and the crashes found so far on stable with: \
-             cargo test -p edgewise-core --test fuzz_regressions && \
-             cargo test -p edgewise-app --test fuzz_regressions"
+             cargo test -p edgewise-core --test it fuzz_regressions:: && \
+             cargo test -p edgewise-app --test it fuzz_regressions::"
         );
     }
     Ok(())

@@ -5,7 +5,7 @@ use proptest::prelude::*;
 
 use super::*;
 
-#[path = "../../../core/tests/golden/mod.rs"]
+#[path = "../../../core/tests/it/golden/mod.rs"]
 mod golden;
 
 const BASE: &str = "https://example.org/edgewise/index.html";
