@@ -94,7 +94,7 @@
 //! docs/limits.md): at most [`MAX_SOURCE_BYTES`] of text; nesting plus the
 //! operators and lookups of a chain at most [`parser::MAX_NESTING`] deep;
 //! names at most [`lexer::MAX_NAME_CHARS`] long; reading stops after
-//! [`parser::MAX_ERRORS`] errors. Calls keep their frames in a list, not on
+//! [`diagnostic::MAX_ERRORS`] errors. Calls keep their frames in a list, not on
 //! the stack, so no recursion in an algorithm recurses in the VM.
 
 pub mod ast;
@@ -107,6 +107,7 @@ pub mod lexer;
 pub mod library;
 pub mod parser;
 pub mod question;
+mod recorder;
 pub mod token;
 pub mod topology;
 pub mod trace;

@@ -8,8 +8,7 @@ use std::collections::{HashMap, HashSet};
 
 use super::ast::*;
 use super::builtin::{Axis, Builtin};
-use super::diagnostic::{Diagnostic, Span, nearest};
-use super::parser::MAX_ERRORS;
+use super::diagnostic::{Diagnostic, MAX_ERRORS, Span, nearest};
 use super::types::Type;
 use crate::schema::{Column, ElementKind, NameError, Storage, Structure};
 

@@ -6,6 +6,11 @@
 
 use std::fmt;
 
+/// After this many errors reading stops (the lexer, the parser and the
+/// checker each): more would bury the first ones, and a hostile file could
+/// otherwise make the report grow without end.
+pub const MAX_ERRORS: usize = 100;
+
 /// A byte range `start..end` in one source text.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Span {

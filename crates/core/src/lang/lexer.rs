@@ -1,7 +1,6 @@
 //! The hand-written lexer: source text to tokens, with `//` comments skipped.
 
-use super::diagnostic::{Diagnostic, Span, shorten};
-use super::parser::MAX_ERRORS;
+use super::diagnostic::{Diagnostic, MAX_ERRORS, Span, shorten};
 
 /// Longer names are refused: they would only make every message quoting them
 /// unreadable, and no algorithm needs one.

@@ -7,7 +7,7 @@
 //! every independent mistake in a file.
 
 use super::ast::*;
-use super::diagnostic::{Diagnostic, LineIndex, Span, shorten};
+use super::diagnostic::{Diagnostic, LineIndex, MAX_ERRORS, Span, shorten};
 use super::lexer::{SKIPPED_REST, tokenize};
 use super::token::{Token, TokenKind as T};
 use super::types::{Item, Type};
@@ -52,10 +52,6 @@ struct Parser<'s> {
 /// level too, since it nests the tree one level deeper; every pass over the
 /// tree then recurses at most twice this deep.
 pub const MAX_NESTING: u32 = 100;
-
-/// After this many errors the parser stops: more would bury the first ones,
-/// and a hostile file could otherwise make the report grow without end.
-pub const MAX_ERRORS: usize = 100;
 
 /// Tokens that may begin a statement, used to decide whether a missing `;`
 /// can simply be assumed.

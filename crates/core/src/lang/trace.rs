@@ -27,8 +27,8 @@
 use super::builtin::Builtin;
 use super::compiler::{Algorithm, CompareOp, ComputeOp, Op, Routine, VariableInfo};
 use super::diagnostic::Span;
+use super::recorder::{Held, Recorder, extend_counted, push_counted};
 use super::types::{Type, Value, show_items};
-use super::vm::{Held, Recorder};
 use crate::mesh::{Change, Edit, EditError};
 use crate::schema::{Column, ElementRef};
 use glam::Vec3;
@@ -376,20 +376,6 @@ pub(crate) struct TraceRecorder {
 
 fn index_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
-}
-
-/// Appends `items` to `list`, adding what its buffer grew by to `held`: a
-/// run's memory is counted as it is taken, not summed over every buffer.
-pub(crate) fn extend_counted<T: Copy>(list: &mut Vec<T>, items: &[T], held: &mut usize) {
-    let before = list.capacity();
-    list.extend_from_slice(items);
-    *held += (list.capacity() - before) * size_of::<T>();
-}
-
-pub(crate) fn push_counted<T>(list: &mut Vec<T>, item: T, held: &mut usize) {
-    let before = list.capacity();
-    list.push(item);
-    *held += (list.capacity() - before) * size_of::<T>();
 }
 
 impl TraceRecorder {

@@ -24,7 +24,8 @@
 use super::error::{BuildError, BuildWarning, FaceRef};
 use super::ids::{FaceId, VertexId};
 use super::polygons::Polygons;
-use super::repair;
+
+mod repair;
 
 /// "No element" in the builder's raw `u32` tables.
 pub(crate) const NONE: u32 = u32::MAX;

@@ -14,7 +14,6 @@ use glam::Vec3;
 use super::deleted::Deleted;
 use super::half_edge::HalfEdgeMesh;
 use super::ids::VertexId;
-use super::structure::Mesh;
 use super::winged_edge::WingedEdgeMesh;
 use crate::schema::{
     Column, EditHooks, ElementKind, ElementRef, LookupError, Record, Records, RecordsMut, Rows,
@@ -438,63 +437,6 @@ impl<T: Tables> Edit for T {
     }
 }
 
-impl Edit for Mesh {
-    fn push_row(&mut self, kind: ElementKind) -> Result<ElementRef, EditError> {
-        match self {
-            Mesh::Winged(mesh) => mesh.push_row(kind),
-            Mesh::Half(mesh) => mesh.push_row(kind),
-        }
-    }
-
-    fn pop_row(&mut self, kind: ElementKind) -> Result<(), EditError> {
-        match self {
-            Mesh::Winged(mesh) => mesh.pop_row(kind),
-            Mesh::Half(mesh) => mesh.pop_row(kind),
-        }
-    }
-
-    fn set_deleted(&mut self, element: ElementRef, deleted: bool) -> Result<(), EditError> {
-        match self {
-            Mesh::Winged(mesh) => mesh.set_deleted(element, deleted),
-            Mesh::Half(mesh) => mesh.set_deleted(element, deleted),
-        }
-    }
-
-    fn set_position(&mut self, vertex: VertexId, position: Vec3) -> Result<Vec3, EditError> {
-        match self {
-            Mesh::Winged(mesh) => mesh.set_position(vertex, position),
-            Mesh::Half(mesh) => mesh.set_position(vertex, position),
-        }
-    }
-
-    fn compact(&mut self) -> Renumbering {
-        match self {
-            Mesh::Winged(mesh) => mesh.compact(),
-            Mesh::Half(mesh) => mesh.compact(),
-        }
-    }
-
-    fn deleted_rows(&self) -> &Deleted {
-        match self {
-            Mesh::Winged(mesh) => mesh.deleted_rows(),
-            Mesh::Half(mesh) => mesh.deleted_rows(),
-        }
-    }
-}
-
-impl Mesh {
-    /// [`Mesh::stats`] of the rows that are not deleted: the counts a
-    /// student expects mid-edit, before the ids are compacted.
-    pub fn live_stats(&self) -> super::stats::MeshStats {
-        if self.deleted_rows().is_empty() {
-            return self.stats();
-        }
-        let mut live = self.clone();
-        live.compact();
-        live.stats()
-    }
-}
-
 /// Applies primitive changes to a mesh and journals them.
 ///
 /// `new Edge` in a half-edge mesh makes two rows whose pair edges name each
@@ -625,7 +567,7 @@ impl<'m, M: Edit + ?Sized> Editor<'m, M> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::generate;
+    use crate::mesh::{Mesh, generate};
 
     #[test]
     fn a_journal_reverts_to_the_tables_it_started_from() {

@@ -11,7 +11,7 @@ use super::deleted::Deleted;
 use super::error::{BuildError, BuildWarning};
 use super::ids::{FaceId, HalfEdgeId, VertexId};
 use super::polygons::Polygons;
-use super::structure::tables;
+use super::tables::tables;
 
 /// A row of the half-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -4,6 +4,8 @@
 use glam::Vec3;
 
 use super::convert::ConvertError;
+use super::deleted::Deleted;
+use super::edit::{Edit, EditError, Renumbering};
 use super::error::{BuildError, BuildWarning};
 use super::half_edge::HalfEdgeMesh;
 use super::ids::VertexId;
@@ -11,7 +13,7 @@ use super::polygons::Polygons;
 use super::stats::MeshStats;
 use super::validate::Issue;
 use super::winged_edge::WingedEdgeMesh;
-use crate::schema::Structure;
+use crate::schema::{ElementKind, ElementRef, Structure};
 
 /// A mesh in one of the two structures.
 #[derive(Clone, Debug, PartialEq)]
@@ -169,82 +171,59 @@ impl Mesh {
     }
 }
 
-/// Writes a structure's table accessors inside its `impl`: the rows differ
-/// between the structures (each module's `Vertex` and `Face`, then the
-/// half-edge or edge rows), the way to read them does not. The structure
-/// needs `vertices`, `faces`, `$edges` and `deleted` fields, and its vertex
-/// rows a `position`. A deleted row is not there for the accessors.
-macro_rules! tables {
-    ($vertex:ty, $face:ty, $edges:ident: $edge:ty, $what:literal, $row:ident($id:ty), $count:ident) => {
-        /// Gives the tables back, for editing.
-        pub fn into_raw_parts(self) -> (Vec<$vertex>, Vec<$face>, Vec<$edge>) {
-            (self.vertices, self.faces, self.$edges)
+impl Edit for Mesh {
+    fn push_row(&mut self, kind: ElementKind) -> Result<ElementRef, EditError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.push_row(kind),
+            Mesh::Half(mesh) => mesh.push_row(kind),
         }
+    }
 
-        /// The vertex table.
-        pub fn vertices(&self) -> &[$vertex] {
-            &self.vertices
+    fn pop_row(&mut self, kind: ElementKind) -> Result<(), EditError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.pop_row(kind),
+            Mesh::Half(mesh) => mesh.pop_row(kind),
         }
+    }
 
-        /// The face table.
-        pub fn faces(&self) -> &[$face] {
-            &self.faces
+    fn set_deleted(&mut self, element: ElementRef, deleted: bool) -> Result<(), EditError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.set_deleted(element, deleted),
+            Mesh::Half(mesh) => mesh.set_deleted(element, deleted),
         }
+    }
 
-        #[doc = concat!("The ", $what, " table.")]
-        pub fn $edges(&self) -> &[$edge] {
-            &self.$edges
+    fn set_position(&mut self, vertex: VertexId, position: Vec3) -> Result<Vec3, EditError> {
+        match self {
+            Mesh::Winged(mesh) => mesh.set_position(vertex, position),
+            Mesh::Half(mesh) => mesh.set_position(vertex, position),
         }
+    }
 
-        /// Number of vertices.
-        pub fn vertex_count(&self) -> usize {
-            self.vertices.len()
+    fn compact(&mut self) -> Renumbering {
+        match self {
+            Mesh::Winged(mesh) => mesh.compact(),
+            Mesh::Half(mesh) => mesh.compact(),
         }
+    }
 
-        /// Number of faces.
-        pub fn face_count(&self) -> usize {
-            self.faces.len()
+    fn deleted_rows(&self) -> &Deleted {
+        match self {
+            Mesh::Winged(mesh) => mesh.deleted_rows(),
+            Mesh::Half(mesh) => mesh.deleted_rows(),
         }
-
-        #[doc = concat!("Number of ", $what, "s (rows of the ", $what, " table).")]
-        pub fn $count(&self) -> usize {
-            self.$edges.len()
-        }
-
-        /// A vertex row.
-        #[inline]
-        pub fn vertex(&self, v: $crate::mesh::VertexId) -> Option<&$vertex> {
-            self.vertices
-                .get(v.index())
-                .filter(|_| !self.deleted.contains(v.into()))
-        }
-
-        /// A face row.
-        #[inline]
-        pub fn face(&self, f: $crate::mesh::FaceId) -> Option<&$face> {
-            self.faces
-                .get(f.index())
-                .filter(|_| !self.deleted.contains(f.into()))
-        }
-
-        #[doc = concat!("The ", $what, " row with this id.")]
-        #[inline]
-        pub fn $row(&self, id: $id) -> Option<&$edge> {
-            self.$edges
-                .get(id.index())
-                .filter(|_| !self.deleted.contains(id.into()))
-        }
-
-        /// Rows an edit deleted and the ids have not been compacted since.
-        pub fn deleted(&self) -> &$crate::mesh::deleted::Deleted {
-            &self.deleted
-        }
-
-        /// The position of a vertex.
-        #[inline]
-        pub fn position(&self, v: $crate::mesh::VertexId) -> Option<::glam::Vec3> {
-            self.vertex(v).map(|vertex| vertex.position)
-        }
-    };
+    }
 }
-pub(crate) use tables;
+
+impl Mesh {
+    /// [`Mesh::stats`] of the rows that are not deleted: the counts a
+    /// student expects mid-edit, before the ids are compacted.
+    pub fn live_stats(&self) -> MeshStats {
+        if self.deleted_rows().is_empty() {
+            return self.stats();
+        }
+        let mut live = self.clone();
+        live.compact();
+        live.stats()
+    }
+}

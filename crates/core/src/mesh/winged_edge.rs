@@ -14,7 +14,7 @@ use super::deleted::Deleted;
 use super::error::{BuildError, BuildWarning};
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::polygons::Polygons;
-use super::structure::tables;
+use super::tables::tables;
 
 /// A row of the winged-edge vertex table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

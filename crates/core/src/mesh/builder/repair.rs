@@ -7,10 +7,10 @@
 //! three or more faces and inconsistent orientation are not repaired: they
 //! are caught before fans are looked at, and still refused.
 
-use super::builder::{General, Layout, NONE};
-use super::error::{BuildError, BuildWarning};
-use super::ids::VertexId;
-use super::polygons::Polygons;
+use super::{General, Layout, NONE};
+use crate::mesh::error::{BuildError, BuildWarning};
+use crate::mesh::ids::VertexId;
+use crate::mesh::polygons::Polygons;
 
 /// Runs `build`, and only if it found a vertex joining separate fans, runs it
 /// again on [`split_non_manifold_vertices`]'s polygons, with a warning per
