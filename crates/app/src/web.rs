@@ -151,12 +151,12 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
         && bytes.len() > ANNOUNCE_BYTES
     {
         let label = opening_label(name, bytes.len());
-        if with_app(runner, |app| app.set_busy(Some(label))).is_ok() {
+        if with_app(runner, |app| set_busy(app, Some(label))).is_ok() {
             after_a_paint().await;
         }
     }
     let applied = with_app(runner, |app| {
-        app.set_busy(None);
+        set_busy(app, None);
         app.apply_course_link(&link, messages, fetched)
     });
     if let Err(err) = applied {
@@ -260,13 +260,31 @@ async fn after_ms(ms: i32) {
     let _painted = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
-impl EdgewiseApp {
-    /// Shows (or, with `None`, hides) what is being opened outside the
-    /// file inbox: a large text given to `loadMesh`, a large linked file.
-    fn set_busy(&mut self, label: Option<String>) {
-        self.files.busy = label;
-        self.request_repaint();
-    }
+/// Shows (or, with `None`, hides) what is being opened outside the file
+/// inbox: a large text given to `loadMesh`, a large linked file.
+fn set_busy(app: &mut EdgewiseApp, label: Option<String>) {
+    app.files.busy = label;
+    app.request_repaint();
+}
+
+/// An exported file as the API answers it (`exportMesh`, `exportHandout`,
+/// `recordRun`): `{name, text}`, or `{name, base64}` for binary output.
+fn exported_object(saved: &crate::files::SavedFile, binary: bool) -> Result<JsValue, JsValue> {
+    use base64::Engine as _;
+    let object = js_sys::Object::new();
+    js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
+    let (key, value) = if binary {
+        // Standard base64 with padding, so binary files cross the JSON
+        // boundary.
+        (
+            "base64",
+            base64::engine::general_purpose::STANDARD.encode(&saved.bytes),
+        )
+    } else {
+        ("text", String::from_utf8_lossy(&saved.bytes).into_owned())
+    };
+    js_sys::Reflect::set(&object, &key.into(), &value.into())?;
+    Ok(object.into())
 }
 
 /// Runs `f` on the app, or fails if the app has panicked or is busy drawing.

@@ -8,7 +8,6 @@
 //! - [`QUERIES`]: each entry returns a value (`state`, `algorithms`,
 //!   `shareUrl`) or, for `exportMesh` and `exportImage`, a Promise of one.
 
-use base64::Engine as _;
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
 use edgewise_core::{
@@ -22,7 +21,7 @@ use super::arguments::{
     MAX_NAME_CHARS, arguments, check_options, expected, is_array, items, option_bool,
     option_string, shown, structure_option, text_argument, whole_number,
 };
-use super::{after_a_paint, after_ms, with_app};
+use super::{after_a_paint, after_ms, exported_object, with_app};
 use crate::{
     EdgewiseApp,
     command::Command,
@@ -495,13 +494,13 @@ fn perform(runner: &eframe::WebRunner, command: Command) -> js_sys::Promise {
         Command::LoadMesh { bytes, .. } => opening_label("the text", bytes.len()),
         _ => String::new(),
     };
-    if let Err(message) = with_app(runner, |app| app.set_busy(Some(label))) {
+    if let Err(message) = with_app(runner, |app| super::set_busy(app, Some(label))) {
         return settle(Err(js_error_text(&message)));
     }
     let runner = runner.clone();
     wasm_bindgen_futures::future_to_promise(async move {
         after_a_paint().await;
-        let _shown = with_app(&runner, |app| app.set_busy(None));
+        let _shown = with_app(&runner, |app| super::set_busy(app, None));
         execute(&runner, command)
             .map(|()| JsValue::NULL)
             .map_err(|message| js_sys::Error::new(&message).into())
@@ -643,23 +642,4 @@ fn settle_with(result: Result<JsValue, String>) -> js_sys::Promise {
         Ok(value) => js_sys::Promise::resolve(&value),
         Err(message) => js_sys::Promise::reject(&js_sys::Error::new(&message)),
     }
-}
-
-/// An exported file as the API answers it (`exportMesh`, `exportHandout`,
-/// `recordRun`): `{name, text}`, or `{name, base64}` for binary output.
-pub(super) fn exported_object(saved: &SavedFile, binary: bool) -> Result<JsValue, JsValue> {
-    let object = js_sys::Object::new();
-    js_sys::Reflect::set(&object, &"name".into(), &saved.name.as_str().into())?;
-    let (key, value) = if binary {
-        // Standard base64 with padding, so binary files cross the JSON
-        // boundary.
-        (
-            "base64",
-            base64::engine::general_purpose::STANDARD.encode(&saved.bytes),
-        )
-    } else {
-        ("text", String::from_utf8_lossy(&saved.bytes).into_owned())
-    };
-    js_sys::Reflect::set(&object, &key.into(), &value.into())?;
-    Ok(object.into())
 }

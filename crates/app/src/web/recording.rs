@@ -137,7 +137,7 @@ async fn record(runner: &eframe::WebRunner, delay: f64) -> Result<JsValue, Strin
     if bytes.is_empty() {
         return Err("the browser recorded no video; is the page hidden?".to_owned());
     }
-    let object = super::api::exported_object(&crate::files::SavedFile { name, bytes }, true)
+    let object = super::exported_object(&crate::files::SavedFile { name, bytes }, true)
         .map_err(error_text)?;
     js_sys::Reflect::set(&object, &"type".into(), &"video/webm".into()).map_err(error_text)?;
     Ok(object)
