@@ -7,6 +7,8 @@
 //! - `browser-test` builds dist/ and runs only the browser tests.
 //! - `hosts [--app URL]` installs reveal.js and `MkDocs`, builds a deck and
 //!   notes that embed the app, and serves them.
+//! - `tidy` checks the invariants ARCHITECTURE.md states (module cycles,
+//!   column names, layers, the crate map).
 //! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
 //!   `fuzz --make-seeds` rebuilds the seed corpus in fuzz/seeds/.
 
@@ -15,6 +17,7 @@ mod hosts;
 mod process;
 mod serve;
 mod test;
+mod tidy;
 mod toolchain;
 mod web_build;
 
@@ -55,6 +58,10 @@ enum Command {
     },
     /// Build dist/ and run only the browser tests.
     BrowserTest,
+    /// Check the invariants ARCHITECTURE.md states: no module cycles, a
+    /// column named only in schema/column.rs, `impl EdgewiseApp` only in
+    /// app/, dependencies down the layers, every crate described.
+    Tidy,
     /// Install reveal.js and mkdocs from the package registries as web/hosts
     /// pins them, build a deck and lecture notes that embed the app, and
     /// serve them (and dist/) until stopped: the hosts the browser tests use.
@@ -115,6 +122,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::browser_tests(&root, &dist)
         }
+        Command::Tidy => tidy::run(&root),
         Command::Hosts { ref app } => hosts::serve(&root, app.as_deref()),
         Command::BenchWeb => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;

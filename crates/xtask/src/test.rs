@@ -5,7 +5,7 @@ use std::{path::Path, time::Instant};
 use crate::{
     hosts,
     process::{self, cargo},
-    serve,
+    serve, tidy,
     toolchain::WasmToolchain,
     web_build,
 };
@@ -22,6 +22,7 @@ const WASM_PACKAGES: [&str; 2] = ["edgewise-core", "edgewise-app"];
 pub fn run_all(root: &Path) -> anyhow::Result<()> {
     let mut timings = Timings::default();
 
+    timings.step("architecture (tidy)", || tidy::run(root))?;
     timings.step("formatting", || {
         process::run(
             "cargo fmt --check",

@@ -1,0 +1,351 @@
+//! `cargo xtask tidy`: the invariants ARCHITECTURE.md states, checked on the
+//! source itself so that the document cannot drift from the code.
+//!
+//! - Within each crate, sibling modules never import each other both ways
+//!   (directly or round a longer loop): a module's place in its folder says
+//!   what it may use.
+//! - A record column is named only in core's `schema/column.rs`.
+//! - `impl EdgewiseApp` blocks live in the app's `app/` folder.
+//! - Dependencies among the workspace's crates point down the layers, and
+//!   ARCHITECTURE.md describes every crate there is.
+//!
+//! The reading is lexical (comments and literals skipped, `use` trees and
+//! `crate::`/`super::`/`self::` paths followed), which is enough here: the
+//! code names modules by path, never through glob re-exports of siblings.
+
+mod lexer;
+mod modules;
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context as _, bail};
+
+use lexer::Token;
+
+/// The workspace's crates from the bottom layer up, with their folders. A
+/// crate may depend only on crates of lower layers; the build tool depends
+/// on none.
+pub const LAYERS: &[(&str, &str, u8)] = &[
+    ("edgewise-core", "crates/core", 0),
+    ("edgewise-app", "crates/app", 1),
+    ("edgewise-cli", "crates/cli", 2),
+    ("edgewise-browser-tests", "web/browser-tests", 2),
+];
+const BUILD_TOOL: (&str, &str) = ("xtask", "crates/xtask");
+
+/// Cycles that were there when the check came and are still to be broken,
+/// each exactly as found: a loop that grows, or a new one, fails the check,
+/// and so does one listed here that is gone, so the list only shrinks.
+const KNOWN_CYCLES: &[(&str, &[&str])] = &[
+    // `schema/column.rs` implements the record traits for the meshes; they
+    // belong in `mesh/`, and the typed ids in `schema/`.
+    ("crates/core/src", &["mesh", "schema"]),
+    // The platform layer reaches up into the app (`EmbedEvent`), the web API
+    // and the screen-reader copy; settings are stored through the platform.
+    (
+        "crates/app/src",
+        &[
+            "accessible",
+            "app",
+            "course_link",
+            "export",
+            "platform",
+            "settings",
+            "web",
+        ],
+    ),
+];
+
+/// The one file allowed to name a record column.
+const COLUMN_FILE: &str = "crates/core/src/schema/column.rs";
+
+/// Runs every check and reports all the broken invariants at once.
+pub fn run(root: &Path) -> anyhow::Result<()> {
+    let problems = problems(root)?;
+    if problems.is_empty() {
+        eprintln!("==> tidy: every invariant of ARCHITECTURE.md holds");
+        return Ok(());
+    }
+    let mut report = String::new();
+    for problem in &problems {
+        let _ = writeln!(report, "- {problem}");
+    }
+    bail!(
+        "{} invariant(s) of ARCHITECTURE.md broken:\n{report}",
+        problems.len()
+    )
+}
+
+/// Every broken invariant, in words that name the file and line.
+pub fn problems(root: &Path) -> anyhow::Result<Vec<String>> {
+    let mut problems = Vec::new();
+    let column_names = column_names(&root.join(COLUMN_FILE))?;
+    let mut found_cycles: Vec<(String, Vec<String>)> = Vec::new();
+    for &(_, folder, _) in LAYERS
+        .iter()
+        .chain(std::iter::once(&(BUILD_TOOL.0, BUILD_TOOL.1, 0)))
+    {
+        let src = root.join(folder).join("src");
+        let files = modules::source_files(&src)?;
+        for cycle in modules::cycles(root, &files) {
+            let known = KNOWN_CYCLES
+                .iter()
+                .any(|&(place, names)| place == cycle.place && names == cycle.modules);
+            if !known {
+                problems.push(cycle.message);
+            }
+            found_cycles.push((cycle.place, cycle.modules));
+        }
+        for file in &files {
+            let shown = relative(root, &file.path);
+            if shown != COLUMN_FILE {
+                problems.extend(named_columns(&shown, &file.tokens, &column_names));
+            }
+            if folder == "crates/app" {
+                problems.extend(app_impls(&shown, &file.module, &file.tokens));
+            }
+        }
+    }
+    for &(place, names) in KNOWN_CYCLES {
+        if !found_cycles.iter().any(|(p, n)| p == place && n == names) {
+            problems.push(format!(
+                "modules {} in {place} no longer import each other: take the loop off \
+                 KNOWN_CYCLES in crates/xtask/src/tidy.rs",
+                names.join(", ")
+            ));
+        }
+    }
+    problems.extend(dependency_arrows(root)?);
+    problems.extend(crate_map(root)?);
+    Ok(problems)
+}
+
+/// `path` from the repository's root, with forward slashes.
+fn relative(root: &Path, path: &Path) -> String {
+    path.strip_prefix(root)
+        .unwrap_or(path)
+        .to_string_lossy()
+        .replace('\\', "/")
+}
+
+/// The distinctive names of the columns in `schema/column.rs`: record names
+/// (`left_predecessor`), role labels ("Left Predecessor") and the camel-case
+/// keys (`leftPredecessor`). One-word names ("face", "next") are everyday
+/// words and are not checked.
+fn column_names(path: &Path) -> anyhow::Result<Vec<String>> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut names: Vec<String> = lexer::tokens(&text)
+        .into_iter()
+        .filter_map(|(token, _)| match token {
+            Token::Str(text) => Some(text),
+            _ => None,
+        })
+        .filter(|text| is_column_like(text))
+        .collect();
+    names.sort();
+    names.dedup();
+    Ok(names)
+}
+
+fn is_column_like(text: &str) -> bool {
+    let words = |separator: char| {
+        let parts: Vec<&str> = text.split(separator).collect();
+        parts.len() == 2
+            && parts
+                .iter()
+                .all(|part| !part.is_empty() && part.chars().all(char::is_alphabetic))
+    };
+    let snake = words('_') && text.chars().all(|c| c == '_' || c.is_ascii_lowercase());
+    let title = words(' ')
+        && text
+            .split(' ')
+            .all(|word| word.starts_with(|c: char| c.is_ascii_uppercase()));
+    let camel = text.chars().all(|c| c.is_ascii_alphabetic())
+        && text.starts_with(|c: char| c.is_ascii_lowercase())
+        && text.chars().filter(char::is_ascii_uppercase).count() == 1;
+    snake || title || camel
+}
+
+/// Literals naming a column, outside unit tests (which may check a name).
+fn named_columns(shown: &str, tokens: &[(Token, u32)], names: &[String]) -> Vec<String> {
+    let tests = lexer::test_modules(tokens);
+    tokens
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !tests.iter().any(|range| range.contains(i)))
+        .filter_map(|(_, (token, line))| match token {
+            Token::Str(text) if names.binary_search(text).is_ok() => Some(format!(
+                "{shown}:{line}: \"{text}\" names a record column: take it from \
+                 `Column` ({COLUMN_FILE}), the one place a column is named"
+            )),
+            _ => None,
+        })
+        .collect()
+}
+
+/// `impl EdgewiseApp` (or a trait's impl for it) outside `app.rs` and `app/`.
+fn app_impls(shown: &str, module: &[String], tokens: &[(Token, u32)]) -> Vec<String> {
+    if module.first().is_some_and(|first| first == "app") {
+        return Vec::new();
+    }
+    let mut problems = Vec::new();
+    for (i, (token, line)) in tokens.iter().enumerate() {
+        if !matches!(token, Token::Ident(word) if word == "impl") {
+            continue;
+        }
+        // An item starts after a `;`, a block or an attribute; `impl` after
+        // `:`, `(` or `,` is a type (`impl FnOnce(&EdgewiseApp)`).
+        let item = i == 0 || matches!(tokens[i - 1].0, Token::Punct(';' | '{' | '}' | ']'));
+        if !item {
+            continue;
+        }
+        let header = tokens[i + 1..]
+            .iter()
+            .take_while(|(token, _)| !matches!(token, Token::Punct('{' | ';')));
+        if header
+            .clone()
+            .any(|(token, _)| matches!(token, Token::Ident(word) if word == "EdgewiseApp"))
+        {
+            problems.push(format!(
+                "{shown}:{line}: an `impl` for EdgewiseApp outside crates/app/src/app/: \
+                 the app's methods live beside it there"
+            ));
+        }
+    }
+    problems
+}
+
+/// The workspace crates each crate's Cargo.toml depends on, by layer.
+fn dependency_arrows(root: &Path) -> anyhow::Result<Vec<String>> {
+    let mut problems = Vec::new();
+    let layer_of: BTreeMap<&str, u8> = LAYERS
+        .iter()
+        .map(|&(name, _, layer)| (name, layer))
+        .collect();
+    let all = LAYERS
+        .iter()
+        .map(|&(name, folder, layer)| (name, folder, Some(layer)))
+        .chain(std::iter::once((BUILD_TOOL.0, BUILD_TOOL.1, None)));
+    for (name, folder, layer) in all {
+        let manifest = root.join(folder).join("Cargo.toml");
+        let text = std::fs::read_to_string(&manifest)
+            .with_context(|| format!("cannot read {}", manifest.display()))?;
+        for (number, line) in text.lines().enumerate() {
+            let Some(dependency) = line.split(['=', '.', ' ']).next() else {
+                continue;
+            };
+            let Some(&their_layer) = layer_of.get(dependency) else {
+                continue;
+            };
+            let allowed = layer.is_some_and(|layer| their_layer < layer);
+            if !allowed {
+                problems.push(format!(
+                    "{folder}/Cargo.toml:{}: {name} depends on {dependency}, an arrow \
+                     that does not point down the layers (ARCHITECTURE.md)",
+                    number + 1
+                ));
+            }
+        }
+    }
+    Ok(problems)
+}
+
+/// Every crate has its `### folder (`name`)` heading in ARCHITECTURE.md, and
+/// every such heading names a crate there is.
+fn crate_map(root: &Path) -> anyhow::Result<Vec<String>> {
+    let path = root.join("ARCHITECTURE.md");
+    let text = std::fs::read_to_string(&path)
+        .with_context(|| format!("cannot read {}", path.display()))?;
+    let mut problems = Vec::new();
+    let crates: Vec<(&str, &str)> = LAYERS
+        .iter()
+        .map(|&(name, folder, _)| (name, folder))
+        .chain(std::iter::once(BUILD_TOOL))
+        .collect();
+    for (name, folder) in &crates {
+        let heading = format!("### {folder} ");
+        if !text
+            .lines()
+            .any(|line| line.starts_with(&heading) || line == heading.trim_end())
+        {
+            problems.push(format!(
+                "ARCHITECTURE.md: no `### {folder}` section describes the crate {name}"
+            ));
+        }
+    }
+    for (number, line) in text.lines().enumerate() {
+        let Some(rest) = line.strip_prefix("### ") else {
+            continue;
+        };
+        let folder = rest.split(' ').next().unwrap_or_default();
+        let is_crate_heading = folder.starts_with("crates/") || folder.starts_with("web/");
+        if is_crate_heading && !crates.iter().any(|(_, known)| known == &folder) {
+            problems.push(format!(
+                "ARCHITECTURE.md:{}: `{folder}` is not a crate of the workspace",
+                number + 1
+            ));
+        }
+        if is_crate_heading && !PathBuf::from(root).join(folder).join("Cargo.toml").exists() {
+            problems.push(format!(
+                "ARCHITECTURE.md:{}: {folder}/Cargo.toml does not exist",
+                number + 1
+            ));
+        }
+    }
+    Ok(problems)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn root() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    }
+
+    /// The invariants hold on the repository as it is.
+    #[test]
+    fn the_architecture_holds() {
+        let problems = problems(&root()).expect("the sources can be read");
+        assert!(
+            problems.is_empty(),
+            "{} invariant(s) broken:\n{}",
+            problems.len(),
+            problems.join("\n")
+        );
+    }
+
+    #[test]
+    fn column_like_names_are_the_distinctive_ones() {
+        for name in [
+            "left_predecessor",
+            "Left Predecessor",
+            "leftPredecessor",
+            "pairEdge",
+        ] {
+            assert!(is_column_like(name), "{name}");
+        }
+        for name in ["face", "next", "left face", "a_b_c", "Hello world!", "x"] {
+            assert!(!is_column_like(name), "{name}");
+        }
+    }
+
+    #[test]
+    fn an_impl_outside_app_is_found() {
+        let tokens = lexer::tokens(
+            "struct A;\nimpl Default for EdgewiseApp { }\nimpl A {}\nfn f(g: impl Fn(&EdgewiseApp)) {}",
+        );
+        let module = vec!["tables".to_owned()];
+        let problems = app_impls("crates/app/src/tables.rs", &module, &tokens);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].starts_with("crates/app/src/tables.rs:2:"),
+            "{problems:?}"
+        );
+        let module = vec!["app".to_owned(), "tabs".to_owned()];
+        assert!(app_impls("crates/app/src/app/tabs.rs", &module, &tokens).is_empty());
+    }
+}
