@@ -14,15 +14,16 @@
 mod builder;
 pub mod circulator;
 pub mod convert;
-pub mod deleted;
+pub use crate::schema::deleted;
 pub mod edit;
 pub mod error;
 pub mod generate;
 pub mod half_edge;
-pub mod ids;
+pub use crate::schema::ids;
 pub mod navigation;
 pub mod operations;
 pub mod polygons;
+mod records;
 pub mod stats;
 pub mod structure;
 mod tables;

@@ -13,13 +13,16 @@
 //!   [`RecordsMut::set_reference`] to write it, one pointer at a time.
 
 mod column;
+pub mod deleted;
 mod element;
+pub mod ids;
 mod structure;
 
 pub use column::{
     Column, EditHooks, LookupError, NameError, Palette, Record, Records, RecordsMut, Rows, RowsMut,
     Storage, TableColumn, WriteError,
 };
+pub use deleted::Deleted;
 pub(crate) use element::article;
 pub use element::{ElementKind, ElementRef};
 pub use structure::Structure;

@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use crate::mesh::{EdgeId, FaceId, HalfEdgeId, VertexId};
+use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 
 /// The three kinds of mesh element, one table each.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
