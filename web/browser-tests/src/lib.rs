@@ -106,6 +106,12 @@ pub struct Screen {
     pub touch: bool,
 }
 
+/// The heaviest pages (the screen matrices, the host pages with several
+/// embedded views) take turns, since all the browser tests share one
+/// process: two of them side by side on a two-core machine starved a
+/// renderer for minutes. Lighter tests still run beside them.
+pub static ONE_HEAVY_PAGE_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
+
 /// The screens students and lecturers use: laptops and projectors at
 /// ratios 1 and 2, a tablet and a phone.
 pub const SCREENS: [Screen; 6] = [

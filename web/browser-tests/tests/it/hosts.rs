@@ -16,9 +16,7 @@ use serde_json::Value;
 /// that can take minutes.
 const START_TIMEOUT: Duration = Duration::from_secs(240);
 
-/// One software-rendered app at a time: two would starve each other on a
-/// two-core machine.
-static ONE_BROWSER_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
+use edgewise_browser_tests::ONE_HEAVY_PAGE_AT_A_TIME;
 
 /// Where `cargo xtask hosts` (or `cargo xtask test`) serves the hosts.
 fn hosts_url() -> anyhow::Result<String> {
@@ -172,7 +170,7 @@ async fn wait_for_ready(browser: &Browser, origin: &str, count: usize) -> anyhow
 #[tokio::test]
 async fn a_reveal_deck_keeps_its_keys_until_the_view_is_clicked() -> anyhow::Result<()> {
     let hosts = hosts_url()?;
-    let _turn = ONE_BROWSER_AT_A_TIME.lock().await;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     let browser = Browser::launch().await?;
     let origin = app_origin(&browser)?;
     let deck = format!("{hosts}reveal/#/1");
@@ -355,7 +353,7 @@ fn card_buttons(shot: &Screenshot, rect: [f64; 4], controls_bottom: f64) -> Vec<
 #[tokio::test]
 async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> anyhow::Result<()> {
     let hosts = hosts_url()?;
-    let _turn = ONE_BROWSER_AT_A_TIME.lock().await;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     // Tall enough for the whole frame: its question card is at the bottom.
     let browser = Browser::launch_with(LaunchOptions {
         window_size: (1280, 1100),

@@ -18,9 +18,7 @@ use serde_json::Value;
 const QUESTIONS: &str = include_str!("../../../../algorithms/questions/vertex-adjacent-edge.txt");
 const WAIT: Duration = Duration::from_secs(60);
 
-/// The two matrices take turns: on a two-core machine two software-rendered
-/// pages at a ratio of 2 or 3 would each draw a frame in seconds.
-static ONE_BROWSER_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
+use edgewise_browser_tests::ONE_HEAVY_PAGE_AT_A_TIME;
 
 #[derive(Clone, Copy, Debug)]
 struct Rect {
@@ -390,7 +388,7 @@ fn menu<'a>(layout: &'a Value, name: &str) -> anyhow::Result<&'a Value> {
 
 #[tokio::test]
 async fn every_screen_at_its_true_ratio() -> anyhow::Result<()> {
-    let _turn = ONE_BROWSER_AT_A_TIME.lock().await;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     for screen in screens() {
         let browser = Browser::launch_with(LaunchOptions {
             window_size: (screen.width, screen.height),
@@ -416,7 +414,7 @@ async fn every_screen_at_its_true_ratio() -> anyhow::Result<()> {
 
 #[tokio::test]
 async fn every_screen_under_device_emulation() -> anyhow::Result<()> {
-    let _turn = ONE_BROWSER_AT_A_TIME.lock().await;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     let browser = Browser::launch().await?;
     for screen in screens() {
         browser.emulate(&screen).await?;
