@@ -119,6 +119,10 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
         cargo()
             .current_dir(root)
             .args(["test", "--locked", "--package", BROWSER_TESTS])
+            // One test at a time: two software-rendered pages side by side on
+            // a two-core machine starved each other's renderers past the
+            // tests' waits (a host page, then the edit menu's undo).
+            .args(["--", "--test-threads=1"])
             .env("EDGEWISE_URL", &url)
             .env("EDGEWISE_HOSTS_URL", &hosts_url)
             .env("EDGEWISE_CHROMIUM", CHROMIUM)
