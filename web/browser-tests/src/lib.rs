@@ -107,9 +107,10 @@ pub struct Screen {
 }
 
 /// The heaviest pages (the screen matrices, the host pages with several
-/// embedded views) take turns, since all the browser tests share one
-/// process: two of them side by side on a two-core machine starved a
-/// renderer for minutes. Lighter tests still run beside them.
+/// embedded views) take turns: two of them side by side on a two-core
+/// machine starved a renderer for minutes. `cargo xtask test` runs the
+/// suite one test at a time anyway; this keeps them apart when the suite is
+/// run with more threads, as plain `cargo test` does.
 pub static ONE_HEAVY_PAGE_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
 
 /// The screens students and lecturers use: laptops and projectors at
