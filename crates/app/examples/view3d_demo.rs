@@ -4,11 +4,11 @@
 //! Clicking an element highlights it yellow and labels it; hovering shows
 //! the preview. The side panel holds the view options.
 
-use edgewise_app::view3d::{
-    DrawIds, ElementStyle, MeshGeometry, PickFilter, Pointer, SceneStyles, View3d, ViewOptions,
-};
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_renderer::view3d::{
+    DrawIds, ElementStyle, MeshGeometry, PickFilter, Pointer, SceneStyles, View3d, ViewOptions,
+};
 use egui::Color32;
 
 struct Demo {
@@ -162,7 +162,7 @@ fn main() -> eframe::Result {
         viewport: egui::ViewportBuilder::default()
             .with_title("Edgewise 3D view")
             .with_inner_size([1100.0, 750.0]),
-        depth_buffer: edgewise_app::view3d::DEPTH_BITS,
+        depth_buffer: edgewise_renderer::view3d::DEPTH_BITS,
         ..Default::default()
     };
     eframe::run_native(

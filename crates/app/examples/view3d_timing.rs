@@ -11,8 +11,8 @@
 
 use std::time::{Duration, Instant};
 
-use edgewise_app::view3d::{DrawIds, MeshGeometry, SceneStyles, View3d, ViewOptions};
 use edgewise_core::mesh::{Mesh, Structure, generate};
+use edgewise_renderer::view3d::{DrawIds, MeshGeometry, SceneStyles, View3d, ViewOptions};
 use eframe::egui_wgpu::RenderState;
 
 // The render tests' offscreen drawing, so a frame here costs what theirs do.

@@ -27,6 +27,8 @@ use crate::{
     },
     tables::{self, TablesResponse},
     theme::Theme,
+};
+use edgewise_renderer::{
     ui_cache::{PartTextures, UiCache},
     view3d::{DrawIds, Pointer, SceneStyles, ViewOptions},
 };
@@ -100,7 +102,7 @@ pub struct EdgewiseApp {
     /// Height of the panels above and below the view this frame, for the
     /// height an embedding page is asked for.
     chrome_height: f32,
-    embed_events: Vec<embed_events::EmbedEvent>,
+    embed_events: Vec<crate::EmbedEvent>,
     /// What is typed in the message line's element box.
     element_box: String,
     /// Where the screenshot `exportImage('png')` asked for arrives.
@@ -1086,7 +1088,7 @@ impl EdgewiseApp {
         } else {
             self.whole_ui(ui);
         }
-        let ring = crate::view3d::Palette::new(self.theme.dark).hover;
+        let ring = edgewise_renderer::view3d::Palette::new(self.theme.dark).hover;
         self.focus_ring.ui(ui.ctx(), ring);
         self.observe_for_embedding(ui.ctx());
         crate::platform::deliver_events(&mut self.embed_events);

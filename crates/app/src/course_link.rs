@@ -19,10 +19,8 @@ use base64::Engine as _;
 use edgewise_core::formats::compact;
 use edgewise_core::mesh::{Polygons, Structure};
 
-use crate::{
-    Argument,
-    view3d::{Camera, DrawIds, ViewOptions},
-};
+use crate::Argument;
+use edgewise_renderer::view3d::{Camera, DrawIds, ViewOptions};
 
 /// The most base64 text a fragment payload may hold; longer ones are refused
 /// before decoding, so a huge link cannot stall the page.

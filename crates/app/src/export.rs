@@ -1,5 +1,5 @@
 //! Pictures of the view for slides and handouts. An SVG holds the 3D view
-//! as vector shapes ([`crate::view3d::vector`]) with the three tables beside
+//! as vector shapes ([`edgewise_renderer::view3d::vector`]) with the three tables beside
 //! it, highlighted rows in their colours and roles in words, and a caption
 //! (the trace step's sentence, or the selection's), so it prints crisply at
 //! any size and its text can be searched and copied. [`pdf`] writes a
@@ -16,7 +16,7 @@ use edgewise_core::schema::ElementRef;
 
 use crate::accessible::{Cell, TextTable};
 use crate::settings::to_hex as hex;
-use crate::view3d::vector::{Shape, VectorView, shaft_end};
+use edgewise_renderer::view3d::vector::{Shape, VectorView, shaft_end};
 
 /// Rows each table shows; the rest are counted in a last line.
 pub const TABLE_ROWS: usize = 48;
@@ -193,7 +193,12 @@ pub fn svg(picture: &Picture<'_>) -> String {
     out
 }
 
-fn shape_svg(out: &mut String, shape: &Shape, dy: f32, palette: &crate::view3d::Palette) {
+fn shape_svg(
+    out: &mut String,
+    shape: &Shape,
+    dy: f32,
+    palette: &edgewise_renderer::view3d::Palette,
+) {
     match shape {
         Shape::Polygon {
             points: corners,
@@ -251,7 +256,7 @@ fn shape_svg(out: &mut String, shape: &Shape, dy: f32, palette: &crate::view3d::
             let egui::Vec2 {
                 x: width,
                 y: height,
-            } = crate::view3d::vector::label_size(text);
+            } = edgewise_renderer::view3d::vector::label_size(text);
             let stroke = hex(border.unwrap_or(palette.label_stroke));
             let _ = writeln!(
                 out,

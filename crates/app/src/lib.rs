@@ -11,6 +11,7 @@ pub mod code_editor;
 pub mod command;
 pub mod course_link;
 mod document;
+mod embed_event;
 pub mod export;
 #[doc(hidden)]
 pub mod fuzzing;
@@ -25,12 +26,10 @@ pub mod settings;
 pub mod state;
 mod tables;
 mod theme;
-pub use app::embed_events::{EmbedEvent, preferred_height};
+pub use app::embed_events::preferred_height;
+pub use embed_event::EmbedEvent;
 pub use theme::backdrop;
-mod texture_copy;
 pub mod trace_role;
-pub mod ui_cache;
-pub mod view3d;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;

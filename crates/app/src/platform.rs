@@ -18,7 +18,7 @@ mod desktop;
 
 #[cfg(target_arch = "wasm32")]
 pub use browser::{
-    FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
+    CANVAS_ID, FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
     js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen,
     show_algorithms_to_readers, show_run_to_readers, show_to_readers, store_settings,
 };
@@ -34,6 +34,20 @@ pub struct PendingFile {
     /// The file name (no directories), which gives the format.
     pub name: String,
     pub bytes: Vec<u8>,
+}
+
+/// A run's place as the page's copy for screen readers shows it.
+#[cfg_attr(
+    not(target_arch = "wasm32"),
+    expect(dead_code, reason = "the desktop has no page copy to fill")
+)]
+pub struct RunText<'a> {
+    /// "vertexAdjacentEdge, step 2 of 22, playing".
+    pub status: &'a str,
+    /// "Line 13: e := v.incidentEdge;".
+    pub line: &'a str,
+    /// The variables as HTML, every text escaped.
+    pub variables_html: &'a str,
 }
 
 /// The files a picker offers for algorithms, as a file input's `accept`.

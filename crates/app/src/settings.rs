@@ -112,7 +112,7 @@ impl Settings {
     /// Sets (or, with the view's own colour, clears) the colour of
     /// boundary half-edges.
     pub fn set_boundary_colour(&mut self, colour: Color32) {
-        let default = crate::view3d::Palette::new(self.dark).boundary;
+        let default = edgewise_renderer::view3d::Palette::new(self.dark).boundary;
         self.set_key_colour(BOUNDARY, colour, default);
     }
 

@@ -192,7 +192,7 @@ pub fn table_ui(
 ) -> IdColumn {
     let preview_stroke = egui::Stroke::new(
         1.5,
-        crate::view3d::Palette::new(ui.visuals().dark_mode).hover,
+        edgewise_renderer::view3d::Palette::new(ui.visuals().dark_mode).hover,
     );
     ui.spacing_mut().item_spacing.x = CELL_SPACING;
     let least = least_width(ui);
@@ -452,7 +452,7 @@ impl IdColumn {
         };
         let shift = egui::vec2(viewport.left() - header.left(), 0.0);
         // The cleared frame's colour: panels are transparent over it.
-        let fill = crate::view3d::Palette::new(ui.visuals().dark_mode).background;
+        let fill = edgewise_renderer::view3d::Palette::new(ui.visuals().dark_mode).background;
         let gap = ui.spacing().item_spacing.y * 0.5;
         let band = |cell: egui::Rect| {
             egui::Rect::from_x_y_ranges(

@@ -17,11 +17,9 @@ use crate::{
     EdgewiseApp, FetchedMesh,
     course_link::{CourseLink, MeshSource},
     files::{ANNOUNCE_BYTES, opening_label},
-    platform::js_error_text,
+    platform::{CANVAS_ID, js_error_text},
 };
 
-/// The id of the canvas in index.html.
-pub(crate) const CANVAS_ID: &str = "edgewise_canvas";
 /// The loading message shown by index.html until the app runs.
 const LOADING_ID: &str = "edgewise_loading";
 /// The box that shows start-up failures and panics.

@@ -13,8 +13,8 @@ use crate::{
     algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
     command::Argument,
     state::AlgorithmInfo,
-    view3d::PickFilter,
 };
+use edgewise_renderer::view3d::PickFilter;
 
 impl EdgewiseApp {
     /// [`Command::LoadAlgorithms`]: adds the algorithms of `source` to the

@@ -10,8 +10,8 @@ use egui::Widget as _;
 use super::EdgewiseApp;
 use crate::document::Document;
 use crate::history::Kind;
-use crate::view3d::{MeshGeometry, Preparation};
 use edgewise_core::mesh::{Issue, MeshStats};
+use edgewise_renderer::view3d::{MeshGeometry, Preparation};
 
 /// Meshes with more faces than this are prepared in slices across frames; below
 /// it, all of the work takes a few frames' time.

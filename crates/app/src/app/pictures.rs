@@ -11,8 +11,8 @@ use crate::{
     algorithm::frame::frame_at,
     command::CommandError,
     export::{self, Picture, pdf},
-    view3d::MeshGeometry,
 };
+use edgewise_renderer::view3d::MeshGeometry;
 
 /// The most faces a vector picture draws: beyond, the file would be too
 /// large to open comfortably, and a PNG serves better.

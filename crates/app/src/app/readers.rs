@@ -68,7 +68,16 @@ impl EdgewiseApp {
             .map(|(session, frame)| {
                 accessible::RunCopy::new(&frame, session.trace.algorithm(), session.playing)
             });
-        platform::show_run_to_readers(copy.as_ref());
+        let variables = copy.as_ref().map(accessible::RunCopy::variables_html);
+        let text = copy
+            .as_ref()
+            .zip(variables.as_deref())
+            .map(|(copy, html)| platform::RunText {
+                status: &copy.status,
+                line: &copy.line,
+                variables_html: html,
+            });
+        platform::show_run_to_readers(text.as_ref());
     }
 
     /// The algorithm list, rebuilt only when it or the structure changes:

@@ -124,9 +124,9 @@ impl EdgewiseApp {
                                     ui.label(name);
                                     ui.end_row();
                                 }
-                                let mut colour = theme
-                                    .boundary_override
-                                    .unwrap_or(crate::view3d::Palette::new(theme.dark).boundary);
+                                let mut colour = theme.boundary_override.unwrap_or(
+                                    edgewise_renderer::view3d::Palette::new(theme.dark).boundary,
+                                );
                                 let response = ui.color_edit_button_srgba(&mut colour);
                                 response.widget_info(|| {
                                     egui::WidgetInfo::labeled(

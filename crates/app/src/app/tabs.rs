@@ -20,8 +20,8 @@ use crate::{
     obj_editor::ObjEditor,
     paint::{MOST_MARKED, Paint},
     state::TabState,
-    view3d::{MeshGeometry, SceneStyles, View3d},
 };
+use edgewise_renderer::view3d::{MeshGeometry, SceneStyles, View3d};
 
 /// One open mesh and everything shown for it: its document, 3D view and
 /// camera, colours, algorithm run, OBJ editor text, table scroll, error

@@ -11,8 +11,8 @@ use crate::command::CommandError;
 use crate::{
     document::{Document, map_element},
     paint::Paint,
-    view3d::{MeshGeometry, SceneStyles, View3d},
 };
+use edgewise_renderer::view3d::{MeshGeometry, SceneStyles, View3d};
 
 /// The other structure's copy of the open mesh and its view.
 pub(crate) struct Twin {

@@ -17,8 +17,8 @@ use egui::{Color32, Pos2};
 
 use super::{RowLook, cell_text, n};
 use crate::accessible::TextTable;
-use crate::view3d::vector::{Shape, VectorView, label_size, shaft_end};
 use edgewise_core::schema::ElementRef;
+use edgewise_renderer::view3d::vector::{Shape, VectorView, label_size, shaft_end};
 
 /// Landscape A4, in PDF points.
 pub const PAGE: (f32, f32) = (842.0, 595.0);
@@ -621,7 +621,7 @@ mod tests {
     fn the_cross_reference_table_points_at_each_object() {
         let view = VectorView {
             size: egui::vec2(200.0, 100.0),
-            palette: crate::view3d::Palette::new(false),
+            palette: edgewise_renderer::view3d::Palette::new(false),
             shapes: vec![Shape::Disc {
                 centre: Pos2::new(10.0, 10.0),
                 radius: 4.0,

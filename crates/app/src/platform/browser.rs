@@ -11,7 +11,10 @@ use wasm_bindgen_futures::JsFuture;
 
 use edgewise_core::formats::MAX_FILE_BYTES;
 
-use super::PendingFile;
+use super::{PendingFile, RunText};
+
+/// The id of the canvas the app draws in (index.html).
+pub const CANVAS_ID: &str = "edgewise_canvas";
 
 /// The files the picker offers for meshes.
 const MESH_FILES: &str = ".wtb,.htb,.ply,.obj";
@@ -254,7 +257,7 @@ pub fn fit_canvas() -> bool {
     };
     let Some(canvas) = window
         .document()
-        .and_then(|d| d.get_element_by_id(crate::web::CANVAS_ID))
+        .and_then(|d| d.get_element_by_id(CANVAS_ID))
         .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
     else {
         return false;
@@ -298,7 +301,7 @@ pub fn page_base() -> String {
 /// Dispatches each queued event on `window` as an `edgewise:<name>`
 /// `CustomEvent` whose `detail` is the event's JSON; index.html forwards them
 /// to an embedding page.
-pub fn deliver_events(events: &mut Vec<crate::app::embed_events::EmbedEvent>) {
+pub fn deliver_events(events: &mut Vec<crate::EmbedEvent>) {
     let Some(window) = web_sys::window() else {
         return;
     };
@@ -340,7 +343,7 @@ pub fn show_to_readers(tables: Option<&str>, message: Option<&str>) {
 }
 
 /// Changes the words of some role cells of the page's copy for screen
-/// readers (by HTML id, from [`crate::accessible::role_changes`]) and its
+/// readers (by HTML id) and its
 /// message.
 pub fn change_for_readers(cells: &[(String, String)], message: Option<&str>) {
     let Some(document) = web_sys::window().and_then(|w| w.document()) else {
@@ -354,7 +357,7 @@ pub fn change_for_readers(cells: &[(String, String)], message: Option<&str>) {
 
 /// Shows the run's place, current line and variables in the page's copy,
 /// or hides its step controls when no run is open.
-pub fn show_run_to_readers(run: Option<&crate::accessible::RunCopy>) {
+pub fn show_run_to_readers(run: Option<&RunText<'_>>) {
     let Some(document) = web_sys::window().and_then(|w| w.document()) else {
         return;
     };
@@ -367,26 +370,14 @@ pub fn show_run_to_readers(run: Option<&crate::accessible::RunCopy>) {
             log::warn!("the readers' step controls: {}", js_error_text(&err));
         }
     }
-    set_text_of(
-        &document,
-        "edgewise_a11y_status",
-        run.map(|r| r.status.as_str()),
-    );
-    set_text_of(
-        &document,
-        "edgewise_a11y_line",
-        run.map(|r| r.line.as_str()),
-    );
+    set_text_of(&document, "edgewise_a11y_status", run.map(|r| r.status));
+    set_text_of(&document, "edgewise_a11y_line", run.map(|r| r.line));
     if let Some(element) = document.get_element_by_id("edgewise_a11y_variables") {
-        element.set_inner_html(
-            &run.map(crate::accessible::RunCopy::variables_html)
-                .unwrap_or_default(),
-        );
+        element.set_inner_html(run.map_or("", |r| r.variables_html));
     }
 }
 
-/// Fills the page's algorithm list (forms built by
-/// [`crate::accessible::algorithms_html`], every text escaped).
+/// Fills the page's algorithm list (forms whose every text is escaped).
 pub fn show_algorithms_to_readers(html: &str) {
     if let Some(element) = web_sys::window()
         .and_then(|w| w.document())

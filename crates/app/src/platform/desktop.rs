@@ -1,7 +1,7 @@
 //! The desktop (development and UI tests): a typed path and dropped files,
 //! files written to the current directory, settings for the session only.
 
-use super::PendingFile;
+use super::{PendingFile, RunText};
 
 /// Opening and saving files natively.
 #[derive(Default)]
@@ -132,7 +132,7 @@ pub fn page_base() -> String {
 
 /// Natively there is no page to tell: the events stay queued for tests
 /// (`EdgewiseApp::take_embed_events`), the oldest dropped past a bound.
-pub fn deliver_events(_events: &mut Vec<crate::app::embed_events::EmbedEvent>) {}
+pub fn deliver_events(_events: &mut Vec<crate::EmbedEvent>) {}
 
 /// Natively egui's AccessKit output is what screen readers read.
 pub const READER_COPY: bool = false;
@@ -141,6 +141,6 @@ pub fn show_to_readers(_tables: Option<&str>, _message: Option<&str>) {}
 
 pub fn change_for_readers(_cells: &[(String, String)], _message: Option<&str>) {}
 
-pub fn show_run_to_readers(_run: Option<&crate::accessible::RunCopy>) {}
+pub fn show_run_to_readers(_run: Option<&RunText<'_>>) {}
 
 pub fn show_algorithms_to_readers(_html: &str) {}

@@ -8,8 +8,9 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use super::arguments::{check_options, expected};
-use super::{CANVAS_ID, after_ms, with_app};
+use super::{after_ms, with_app};
 use crate::command::Command;
+use crate::platform::CANVAS_ID;
 
 const CALL: &str = "recordRun(options)";
 /// Milliseconds each step is shown, unless `options.delay` says otherwise.

@@ -9,7 +9,7 @@ use crate::support;
 
 use crate::support::worst_channel_difference;
 
-use edgewise_app::ui_cache::{PartTextures, UiCache, UiCacheCounts};
+use edgewise_renderer::ui_cache::{PartTextures, UiCache, UiCacheCounts};
 use eframe::egui_wgpu::RenderState;
 use egui::{Color32, Pos2, Rect, Vec2};
 

@@ -16,11 +16,11 @@ use crate::support::worst_channel_difference;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
-use edgewise_app::view3d::{
+use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
+use edgewise_renderer::view3d::{
     Camera, DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, View3d, ViewOptions,
     ViewResponse,
 };
-use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use eframe::egui_wgpu::RenderState;
 use egui::{Color32, Pos2, Rect, Vec2};
 

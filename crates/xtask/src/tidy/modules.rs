@@ -74,18 +74,10 @@ struct Arrow {
     line: u32,
 }
 
-/// A set of sibling modules that import each other.
-pub struct Cycle {
-    /// The folder that holds them: `crates/core/src/lang`.
-    pub place: String,
-    /// Their names, sorted.
-    pub modules: Vec<String>,
-    /// Each arrow of the loop with its first file and line.
-    pub message: String,
-}
-
-/// The cycles among sibling modules of the crate whose files are `files`.
-pub fn cycles(root: &Path, files: &[SourceFile]) -> Vec<Cycle> {
+/// The cycles among sibling modules of the crate whose files are `files`,
+/// one message each: the folder, the modules (sorted) and each arrow of the
+/// loop with its first file and line.
+pub fn cycles(root: &Path, files: &[SourceFile]) -> Vec<String> {
     let modules: Vec<&[String]> = files.iter().map(|file| file.module.as_slice()).collect();
     // (parent, from, to) → the first place it is seen.
     let mut arrows: BTreeMap<(Vec<String>, String, String), Arrow> = BTreeMap::new();
@@ -146,15 +138,11 @@ pub fn cycles(root: &Path, files: &[SourceFile]) -> Vec<Cycle> {
                     }
                 }
             }
-            messages.push(Cycle {
-                message: format!(
-                    "modules {} in {place} import each other: {}",
-                    component.join(", "),
-                    steps.join("; ")
-                ),
-                modules: component.iter().map(|&name| name.to_owned()).collect(),
-                place,
-            });
+            messages.push(format!(
+                "modules {} in {place} import each other: {}",
+                component.join(", "),
+                steps.join("; ")
+            ));
         }
     }
     messages
@@ -396,10 +384,7 @@ mod tests {
             file("mesh", "fn f() { crate::schema::Column::Face; }"),
             file("schema", "use crate::mesh::Mesh;"),
         ];
-        let found: Vec<String> = cycles(Path::new(""), &files)
-            .into_iter()
-            .map(|cycle| cycle.message)
-            .collect();
+        let found = cycles(Path::new(""), &files);
         assert_eq!(found.len(), 2, "{found:#?}");
         assert!(
             found[0].starts_with("modules mesh, schema in crates/x/src import"),

@@ -16,11 +16,11 @@
 
 use std::{collections::HashMap, sync::Arc};
 
-use eframe::egui_wgpu::{self, CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
 use egui::{
     Rect, Shape,
     epaint::{ClippedPrimitive, ClippedShape, Primitive, TextureId, ViewportInPixels},
 };
+use egui_wgpu::{self, CallbackResources, CallbackTrait, RenderState, ScreenDescriptor};
 
 use crate::{
     texture_copy::{self, CopySource},

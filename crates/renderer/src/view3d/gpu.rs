@@ -8,7 +8,6 @@
 //! vertex nor a first instance, and there is a single uniform buffer.
 
 use bytemuck::{Pod, Zeroable};
-use eframe::egui_wgpu;
 use wgpu::util::DeviceExt as _;
 
 /// The depth buffer eframe must be configured with (`depth_buffer: 24` in

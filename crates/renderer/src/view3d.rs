@@ -38,7 +38,6 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use eframe::egui_wgpu;
 use egui::{PointerButton, Rect, Sense};
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
