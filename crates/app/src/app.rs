@@ -320,7 +320,7 @@ impl EdgewiseApp {
     /// [`Command::Select`].
     fn set_selection(&mut self, element: Option<ElementRef>) -> Result<(), CommandError> {
         if element.is_some() {
-            self.tab_mut().last_changes.clear();
+            self.tab_mut().set_last_changes(Vec::new());
         }
         let Some(document) = &mut self.tab_mut().document else {
             return match element {
@@ -510,7 +510,7 @@ impl EdgewiseApp {
                 })
                 .collect(),
             error: self.tab().error.clone(),
-            broken: self.tab().broken.iter().map(BrokenState::new).collect(),
+            broken: self.tab().broken().iter().map(BrokenState::new).collect(),
             broken_count: self.tab().broken_total,
             diagnosis: self.tab().diagnosis,
             history: self.tab().history.state(),
@@ -583,10 +583,10 @@ impl EdgewiseApp {
             None => Paint::from_selection(document.highlights(), &self.theme),
         };
         if document.selection().is_none() && tab.run.session().is_none() {
-            paint.add_changes(&tab.last_changes, &self.theme);
+            paint.add_changes(tab.last_changes(), &self.theme);
         }
-        if !tab.broken.is_empty() {
-            paint.add_broken(&tab.broken, &self.theme);
+        if !tab.broken().is_empty() {
+            paint.add_broken(tab.broken(), &self.theme);
         }
         paint.add_deleted(
             edgewise_core::mesh::Edit::deleted_rows(document.mesh()).iter(),
@@ -600,14 +600,9 @@ impl EdgewiseApp {
     fn refresh_styles(&mut self) {
         self.tab_mut().sync_edit();
         let tab = &self.tabs[self.active_tab];
-        let Some(document) = &tab.document else {
+        let Some(key) = tab.paint_key(self.theme.key()) else {
             return;
         };
-        let key = (
-            document.generation(),
-            tab.run.generation(),
-            self.theme.key(),
-        );
         if tab.paint_key == Some(key) {
             return;
         }

@@ -22,8 +22,10 @@ pub struct Document {
     pub warnings: Vec<String>,
     selection: Option<ElementRef>,
     highlights: Vec<Highlight>,
-    /// Increases whenever the mesh or the selection changes, so views
-    /// re-derive colours and labels only then.
+    /// A fresh number ([`next_stamp`]) whenever the mesh or the selection
+    /// changes, so views re-derive colours and labels only then. Numbers
+    /// are never reused, across documents too: a new or restored document
+    /// never passes for the one a view last drew.
     generation: u64,
     /// See [`Self::mesh_id`].
     mesh_id: u64,
@@ -75,8 +77,8 @@ impl Document {
             warnings,
             selection: None,
             highlights: Vec::new(),
-            generation: 0,
-            mesh_id: next_mesh_id(),
+            generation: next_stamp(),
+            mesh_id: next_stamp(),
             sample: None,
         }
     }
@@ -131,7 +133,7 @@ impl Document {
         self.highlights = element
             .map(|element| selection::highlights(&self.mesh, element))
             .unwrap_or_default();
-        self.generation += 1;
+        self.generation = next_stamp();
         Ok(())
     }
 
@@ -147,7 +149,7 @@ impl Document {
             .selection
             .and_then(|s| map_element(s, self.structure(), &correspondence));
         self.mesh = mesh;
-        self.mesh_id = next_mesh_id();
+        self.mesh_id = next_stamp();
         self.sample = None;
         self.select(mapped)
     }
@@ -177,7 +179,7 @@ impl Document {
             .seek(&mut self.mesh, from, to)
             .map_err(|error| format!("the trace could not be replayed: {error}"));
         // `sample` stays: the trace still starts from it.
-        self.mesh_id = next_mesh_id();
+        self.mesh_id = next_stamp();
         let selection = self.selection.filter(|&s| self.mesh.contains(s));
         self.select(selection)?;
         result
@@ -240,7 +242,7 @@ impl Document {
     pub fn compact(&mut self) -> Renumbering {
         let renumbering = self.mesh.compact();
         let selection = self.selection.and_then(|s| renumbering.get(s));
-        self.mesh_id = next_mesh_id();
+        self.mesh_id = next_stamp();
         self.sample = None;
         let _kept = self.select(selection);
         renumbering
@@ -259,7 +261,7 @@ impl Document {
     /// After the mesh changed: a new mesh id, no longer the sample, and the
     /// selection kept if its element still exists.
     fn changed(&mut self) {
-        self.mesh_id = next_mesh_id();
+        self.mesh_id = next_stamp();
         self.sample = None;
         let selection = self.selection.filter(|&s| self.mesh.contains(s));
         // The selection was just checked against the new mesh.
@@ -311,8 +313,44 @@ pub fn map_element(
     }
 }
 
-fn next_mesh_id() -> u64 {
+/// A number never handed out before in this process: mesh ids and
+/// generations.
+fn next_stamp() -> u64 {
     use std::sync::atomic::{AtomicU64, Ordering};
     static NEXT: AtomicU64 = AtomicU64::new(1);
     NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use edgewise_core::mesh::generate;
+
+    fn tetrahedron() -> Document {
+        Document::from_polygons("t", &generate::tetrahedron(), Structure::WingedEdge)
+            .expect("the tetrahedron builds")
+    }
+
+    /// The views redraw colours when the generation differs from the one
+    /// they drew: a new document, or one back from the history, must never
+    /// pass for the document they last drew.
+    #[test]
+    fn generations_are_never_reused_and_a_copy_keeps_its_own() {
+        let mut first = tetrahedron();
+        let second = tetrahedron();
+        assert_ne!(first.generation(), second.generation());
+        let kept = first.clone();
+        first
+            .select(Some(ElementRef::vertex(VertexId::new(1))))
+            .expect("vertex 1 exists");
+        assert_ne!(first.generation(), kept.generation());
+        assert_ne!(first.generation(), second.generation());
+        let before = first.replace_mesh(second.mesh().clone());
+        assert_ne!(first.generation(), before.generation());
+        assert_eq!(
+            first.selection(),
+            Some(ElementRef::vertex(VertexId::new(1))),
+            "the selection is kept where its element exists"
+        );
+    }
 }

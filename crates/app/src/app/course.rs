@@ -148,7 +148,6 @@ impl EdgewiseApp {
             self.theme = settings.theme();
             self.algorithms.code_size = settings.code_size;
             self.settings = settings;
-            self.tab_mut().paint_key = None;
         }
         if link.embed {
             self.set_embed(Some(Embed {

@@ -44,7 +44,7 @@ impl EdgewiseApp {
         ui.label(egui::RichText::new(line).monospace())
             .on_hover_text("Counts and invariants of the mesh as it is now; they update at every step of an edit.");
         let mut command = None;
-        let broken = &tab.broken;
+        let broken = tab.broken();
         if tab.diagnosis {
             ui.label(
                 egui::RichText::new("Diagnosis: these tables break the structure's rules.")

@@ -239,7 +239,6 @@ impl EdgewiseApp {
                 tab.seed_stats(stats);
             }
             tab.run.mesh_changed();
-            tab.paint_key = None;
         }
         self.jobs.finish(id, outcome);
         self.request_repaint();

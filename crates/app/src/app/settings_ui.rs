@@ -40,7 +40,6 @@ impl EdgewiseApp {
         self.algorithms.code_size = settings.code_size;
         settings::store(&settings);
         self.settings = settings;
-        self.tab_mut().paint_key = None;
     }
 
     pub fn settings(&self) -> &Settings {

@@ -23,6 +23,19 @@ use crate::{
 };
 use edgewise_renderer::view3d::{MeshGeometry, SceneStyles, View3d};
 
+/// Everything the views' colours and labels are derived from, each by a
+/// number that changes with it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct PaintKey {
+    /// The document's generation: its mesh and selection.
+    document: u64,
+    /// The run's generation: its algorithm and step.
+    run: u64,
+    /// The broken records and last changes marked.
+    marks: u64,
+    theme: u64,
+}
+
 /// One open mesh and everything shown for it: its document, 3D view and
 /// camera, colours, algorithm run, OBJ editor text, table scroll, error
 /// and side-by-side twin.
@@ -32,9 +45,9 @@ pub(crate) struct Tab {
     pub(crate) styles: SceneStyles,
     /// What the views colour: the selection, or the trace's current step.
     pub(crate) paint: Paint,
-    /// (document generation, run generation, theme key) `paint` and
-    /// `styles` were derived from.
-    pub(crate) paint_key: Option<(u64, u64, u64)>,
+    /// What `paint` and `styles` were derived from ([`PaintKey`]); they
+    /// are derived again whenever it differs, and at no other time.
+    pub(crate) paint_key: Option<PaintKey>,
     /// Table rows to bring into view once: where the selection or the
     /// trace's current operation moved to.
     pub(crate) table_scroll: Vec<(ElementKind, u32)>,
@@ -57,7 +70,7 @@ pub(crate) struct Tab {
     /// Every rule the mesh breaks at the editing trace's current step, or
     /// in diagnosis mode.
     /// At most [`MOST_MARKED`] of them.
-    pub(crate) broken: Vec<Issue>,
+    broken: Vec<Issue>,
     /// How many records break a rule, all told.
     pub(crate) broken_total: usize,
     /// The mesh is a broken table opened to be fixed: its broken records
@@ -72,7 +85,10 @@ pub(crate) struct Tab {
     pub(crate) edit_menu: Option<EditMenu>,
     /// What the last operation applied by hand changed, shown until the
     /// next selection or change.
-    pub(crate) last_changes: Vec<Change>,
+    last_changes: Vec<Change>,
+    /// Counts the changes of `broken` and `last_changes`, which the views
+    /// also colour.
+    marks: u64,
     /// The statistics of the mesh with this mesh id.
     /// Kept in a cell so that `state()`, which only reads, shares it.
     stats: RefCell<Option<(u64, MeshStats)>>,
@@ -112,6 +128,7 @@ impl Tab {
             diagnosable: None,
             edit_menu: None,
             last_changes: Vec::new(),
+            marks: 0,
             stats: RefCell::new(None),
             exact_polygons: RefCell::new(None),
             pending: None,
@@ -183,7 +200,6 @@ impl Tab {
         self.view
             .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
         self.set_broken(broken);
-        self.paint_key = None;
     }
 
     /// Keeps the first [`MOST_MARKED`] broken records and counts them all:
@@ -192,6 +208,36 @@ impl Tab {
         self.broken_total = issues.len();
         issues.truncate(MOST_MARKED);
         self.broken = issues;
+        self.marks += 1;
+    }
+
+    /// The broken records the views mark (at most [`MOST_MARKED`]).
+    pub(crate) fn broken(&self) -> &[Issue] {
+        &self.broken
+    }
+
+    /// What the last operation applied by hand changed.
+    pub(crate) fn last_changes(&self) -> &[Change] {
+        &self.last_changes
+    }
+
+    /// Shows `changes` as what the last operation changed (none: clears
+    /// them).
+    pub(crate) fn set_last_changes(&mut self, changes: Vec<Change>) {
+        self.last_changes = changes;
+        self.marks += 1;
+    }
+
+    /// The key of what the views colour now: the document's state, the
+    /// run's step, the marks and the theme.
+    pub(crate) fn paint_key(&self, theme_key: u64) -> Option<PaintKey> {
+        let document = self.document.as_ref()?;
+        Some(PaintKey {
+            document: document.generation(),
+            run: self.run.generation(),
+            marks: self.marks,
+            theme: theme_key,
+        })
     }
 
     /// Outside an editing trace, lists the broken records in diagnosis
@@ -264,7 +310,6 @@ impl Tab {
         }
         self.edit_applied = 0;
         self.set_broken(Vec::new());
-        self.paint_key = None;
     }
 
     /// Shows `mesh` in place of the document's, keeping its name; gives
@@ -279,13 +324,12 @@ impl Tab {
     /// After the document's mesh changed: the view and the colours follow
     /// it.
     fn mesh_shown(&mut self) {
-        self.last_changes.clear();
+        self.set_last_changes(Vec::new());
         if let Some(document) = &self.document {
             self.structure = document.structure();
             self.view
                 .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
         }
-        self.paint_key = None;
         self.error = None;
     }
 
@@ -325,7 +369,7 @@ impl Tab {
         if let Some(before) = self.replace_mesh(mesh) {
             // The view shows what the operation changed, nothing selected.
             let _cleared = self.document.as_mut().map(|d| d.select(None));
-            self.last_changes = applied.journal;
+            self.set_last_changes(applied.journal);
             self.history.record(call, Kind::Edit, Some(before), false);
         }
         Ok(())
