@@ -324,52 +324,17 @@ pub fn table_ui(
                                 let tint = paint.cells.get(&cell).copied();
                                 written_cell_ui(ui, &old, target, tint);
                             }
-                            Cell::Link(None, column) => {
-                                let text = RichText::new(NONE).monospace();
-                                let label = match paint.cells.get(&(element, Role::Column(column)))
-                                {
-                                    Some(tint) => ui.label(
-                                        text.background_color(tint.gamma_multiply(0.55)).strong(),
-                                    ),
-                                    None => ui.label(text.weak()),
-                                };
-                                if !dim {
-                                    start_cell_edit(ui, label, element, column, NONE);
-                                }
-                            }
-                            Cell::Link(Some(target), column) => {
-                                let mut text = RichText::new(target.id.to_string()).monospace();
-                                if let Some(tint) =
-                                    paint.cells.get(&(element, Role::Column(column)))
-                                {
-                                    text =
-                                        text.background_color(tint.gamma_multiply(0.55)).strong();
-                                } else if dim {
-                                    text = text.weak();
-                                }
-                                let target_name = target.to_string();
-                                let link =
-                                    ui.link(text).on_hover_text(format!("select {target_name}"));
-                                // Screen readers (and UI tests) hear which reference this is.
+                            Cell::Link(target, column) => {
                                 let header = headers.get(i).copied().unwrap_or_default();
-                                let row_name = element.to_string();
-                                link.widget_info(|| {
-                                    egui::WidgetInfo::labeled(
-                                        egui::Role::Link,
-                                        true,
-                                        format!("{header} of {row_name}: {target_name}"),
-                                    )
-                                });
-                                if link.clicked() {
+                                let reference = Reference {
+                                    element,
+                                    column,
+                                    target,
+                                    header,
+                                    dim,
+                                };
+                                if let Some(target) = reference.ui(ui, paint, response) {
                                     clicked_link = Some(target);
-                                    response.followed = true;
-                                }
-                                if link.hovered() {
-                                    response.hovered = Some(target);
-                                }
-                                if !dim {
-                                    let id = target.id.to_string();
-                                    start_cell_edit(ui, link, element, column, &id);
                                 }
                             }
                         }
@@ -389,6 +354,78 @@ pub fn table_ui(
             .zip(id_header)
             .map(|(next, (id, _))| next - id.left()),
         cells: id_cells,
+    }
+}
+
+/// A reference cell of a table's row: a link that selects its target (or
+/// "none"), which a double click or Enter edits unless the column is
+/// derived.
+struct Reference<'a> {
+    /// The row.
+    element: ElementRef,
+    column: Column,
+    target: Option<ElementRef>,
+    /// The column's full header, for screen readers.
+    header: &'a str,
+    /// A derived column: dimmed, and not editable.
+    dim: bool,
+}
+
+impl Reference<'_> {
+    /// Draws the cell; gives the target when its link was clicked.
+    fn ui(
+        self,
+        ui: &mut egui::Ui,
+        paint: &Paint,
+        response: &mut TablesResponse,
+    ) -> Option<ElementRef> {
+        let Self {
+            element,
+            column,
+            target,
+            header,
+            dim,
+        } = self;
+        let Some(target) = target else {
+            let text = RichText::new(NONE).monospace();
+            let label = match paint.cells.get(&(element, Role::Column(column))) {
+                Some(tint) => ui.label(text.background_color(tint.gamma_multiply(0.55)).strong()),
+                None => ui.label(text.weak()),
+            };
+            if !dim {
+                start_cell_edit(ui, label, element, column, NONE);
+            }
+            return None;
+        };
+        let mut text = RichText::new(target.id.to_string()).monospace();
+        if let Some(tint) = paint.cells.get(&(element, Role::Column(column))) {
+            text = text.background_color(tint.gamma_multiply(0.55)).strong();
+        } else if dim {
+            text = text.weak();
+        }
+        let target_name = target.to_string();
+        let link = ui.link(text).on_hover_text(format!("select {target_name}"));
+        // Screen readers (and UI tests) hear which reference this is.
+        let row_name = element.to_string();
+        link.widget_info(|| {
+            egui::WidgetInfo::labeled(
+                egui::Role::Link,
+                true,
+                format!("{header} of {row_name}: {target_name}"),
+            )
+        });
+        let clicked = link.clicked();
+        if clicked {
+            response.followed = true;
+        }
+        if link.hovered() {
+            response.hovered = Some(target);
+        }
+        if !dim {
+            let id = target.id.to_string();
+            start_cell_edit(ui, link, element, column, &id);
+        }
+        clicked.then_some(target)
     }
 }
 

@@ -151,85 +151,15 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         fade_others: true,
         ..Paint::default()
     };
-    let push = |paint: &mut Paint, element: ElementRef, role: TraceRole| {
-        paint.painted.push(Painted {
-            element,
-            colour: theme.trace_colour(role),
-            role: role.key().to_owned(),
-        });
-    };
     // The current operation first: it outranks everything else.
     if let Some(view) = view.filter(|_| !done) {
-        match view.kind {
-            StepKind::Lookup {
-                base,
-                field,
-                result,
-            } => {
-                if let Some(base) = base.element() {
-                    push(&mut paint, base, TraceRole::Lookup);
-                    paint.cells.insert(
-                        (base, Role::Column(field)),
-                        theme.trace_colour(TraceRole::Lookup),
-                    );
-                }
-                if let Some(result) = result.element() {
-                    push(&mut paint, result, TraceRole::Lookup);
-                }
-            }
-            StepKind::Write {
-                element,
-                field,
-                old,
-                new,
-            } => {
-                if let Some(element) = element.element() {
-                    push(&mut paint, element, TraceRole::Written);
-                    let cell = (element, Role::Column(field));
-                    paint
-                        .cells
-                        .insert(cell, theme.trace_colour(TraceRole::Written));
-                    paint.struck.insert(cell, cell_text(old));
-                }
-                if let Some(target) = new.element() {
-                    push(&mut paint, target, TraceRole::Written);
-                }
-            }
-            StepKind::New { element } => {
-                if let Some(element) = element.element() {
-                    push(&mut paint, element, TraceRole::Created);
-                }
-            }
-            // Blue at the step that marks it, though a variable still refers
-            // to it (the journal's Fig. 9e).
-            StepKind::Mark { element } => {
-                if let Some(element) = element.element() {
-                    push(&mut paint, element, TraceRole::Output);
-                }
-            }
-            StepKind::Delete { element } => {
-                if let Some(element) = element.element() {
-                    push(&mut paint, element, TraceRole::Deleted);
-                }
-            }
-            StepKind::Compare { left, right, .. } => {
-                for side in [left, right] {
-                    if let Some(element) = side.element() {
-                        push(&mut paint, element, TraceRole::Compared);
-                        paint
-                            .pointers
-                            .push((element, theme.trace_colour(TraceRole::Compared)));
-                    }
-                }
-            }
-            _ => {}
-        }
+        paint_operation(&mut paint, view.kind, theme);
     }
     paint.focus = paint.painted.first().map(|p| p.element);
     // At the end only the marks stay (Neperud, section 5.4).
     if !done {
         for &element in &highlighted {
-            push(&mut paint, element, TraceRole::Highlighted);
+            push_role(&mut paint, theme, element, TraceRole::Highlighted);
         }
     }
     let mut names: HashMap<ElementRef, Vec<&str>> = HashMap::new();
@@ -242,37 +172,13 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         let mut referred: Vec<ElementRef> = names.keys().copied().collect();
         referred.sort_by_key(|e| (e.kind as u8, e.id));
         for element in referred {
-            push(&mut paint, element, TraceRole::Variable);
+            push_role(&mut paint, theme, element, TraceRole::Variable);
         }
     }
     for &element in &marked {
-        push(&mut paint, element, TraceRole::Output);
+        push_role(&mut paint, theme, element, TraceRole::Output);
     }
-    // Each role's glyph, then the names of the variables that refer to it.
-    let mut glyphs: HashMap<ElementRef, Vec<&str>> = HashMap::new();
-    for painted in &paint.painted {
-        if let Some(glyph) = TraceRole::parse(&painted.role).and_then(TraceRole::glyph) {
-            let entry = glyphs.entry(painted.element).or_default();
-            if !entry.contains(&glyph) {
-                entry.push(glyph);
-            }
-        }
-    }
-    paint.variable_names = names
-        .iter()
-        .map(|(element, names)| (*element, names.join(", ")))
-        .collect();
-    let labelled: std::collections::BTreeSet<ElementRef> =
-        glyphs.keys().chain(names.keys()).copied().collect();
-    paint.labels = labelled
-        .into_iter()
-        .map(|element| {
-            let marks = glyphs.get(&element).map(|g| g.concat());
-            let names = names.get(&element).map(|n| n.join(", "));
-            let label = [marks, names].into_iter().flatten().collect::<Vec<_>>();
-            (element, label.join(" "))
-        })
-        .collect();
+    label(&mut paint, &names);
 
     let (line, span) = match view {
         Some(view) => (view.line, Some((view.span.start, view.span.end))),
@@ -319,6 +225,113 @@ pub fn frame_at(trace: &Trace, step: usize, theme: &Theme) -> TraceFrame {
         output_count,
         paint,
     }
+}
+
+/// Adds `element` to what the views colour, in `role`'s colour.
+fn push_role(paint: &mut Paint, theme: &Theme, element: ElementRef, role: TraceRole) {
+    paint.painted.push(Painted {
+        element,
+        colour: theme.trace_colour(role),
+        role: role.key().to_owned(),
+    });
+}
+
+/// Colours what the current operation reads, writes, creates, marks,
+/// deletes or compares, and the table cells it reads or writes.
+fn paint_operation(paint: &mut Paint, kind: StepKind<'_>, theme: &Theme) {
+    match kind {
+        StepKind::Lookup {
+            base,
+            field,
+            result,
+        } => {
+            if let Some(base) = base.element() {
+                push_role(paint, theme, base, TraceRole::Lookup);
+                paint.cells.insert(
+                    (base, Role::Column(field)),
+                    theme.trace_colour(TraceRole::Lookup),
+                );
+            }
+            if let Some(result) = result.element() {
+                push_role(paint, theme, result, TraceRole::Lookup);
+            }
+        }
+        StepKind::Write {
+            element,
+            field,
+            old,
+            new,
+        } => {
+            if let Some(element) = element.element() {
+                push_role(paint, theme, element, TraceRole::Written);
+                let cell = (element, Role::Column(field));
+                paint
+                    .cells
+                    .insert(cell, theme.trace_colour(TraceRole::Written));
+                paint.struck.insert(cell, cell_text(old));
+            }
+            if let Some(target) = new.element() {
+                push_role(paint, theme, target, TraceRole::Written);
+            }
+        }
+        StepKind::New { element } => {
+            if let Some(element) = element.element() {
+                push_role(paint, theme, element, TraceRole::Created);
+            }
+        }
+        // Blue at the step that marks it, though a variable still refers
+        // to it (the journal's Fig. 9e).
+        StepKind::Mark { element } => {
+            if let Some(element) = element.element() {
+                push_role(paint, theme, element, TraceRole::Output);
+            }
+        }
+        StepKind::Delete { element } => {
+            if let Some(element) = element.element() {
+                push_role(paint, theme, element, TraceRole::Deleted);
+            }
+        }
+        StepKind::Compare { left, right, .. } => {
+            for side in [left, right] {
+                if let Some(element) = side.element() {
+                    push_role(paint, theme, element, TraceRole::Compared);
+                    paint
+                        .pointers
+                        .push((element, theme.trace_colour(TraceRole::Compared)));
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Labels each coloured element with its roles' glyphs, then the names of
+/// the variables that refer to it.
+fn label(paint: &mut Paint, names: &HashMap<ElementRef, Vec<&str>>) {
+    let mut glyphs: HashMap<ElementRef, Vec<&str>> = HashMap::new();
+    for painted in &paint.painted {
+        if let Some(glyph) = TraceRole::parse(&painted.role).and_then(TraceRole::glyph) {
+            let entry = glyphs.entry(painted.element).or_default();
+            if !entry.contains(&glyph) {
+                entry.push(glyph);
+            }
+        }
+    }
+    paint.variable_names = names
+        .iter()
+        .map(|(element, names)| (*element, names.join(", ")))
+        .collect();
+    let labelled: std::collections::BTreeSet<ElementRef> =
+        glyphs.keys().chain(names.keys()).copied().collect();
+    paint.labels = labelled
+        .into_iter()
+        .map(|element| {
+            let marks = glyphs.get(&element).map(|g| g.concat());
+            let names = names.get(&element).map(|n| n.join(", "));
+            let label = [marks, names].into_iter().flatten().collect::<Vec<_>>();
+            (element, label.join(" "))
+        })
+        .collect();
 }
 
 fn type_name(ty: Type) -> &'static str {

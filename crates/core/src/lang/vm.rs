@@ -830,92 +830,10 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                 self.next_check = (self.steps + MEMORY_CHECK_INTERVAL).min(self.limit);
             }
             match op {
-                Op::Lookup { dst, base, field } => {
-                    let base_value = self.get(base);
-                    let Some(element) = base_value.element() else {
-                        let message = self.explain_null(base);
+                Op::Lookup { .. } | Op::Write { .. } | Op::New { .. } | Op::Delete { .. } => {
+                    if let Err(message) = self.mesh_op(pc, op) {
                         return self.fail(pc, message);
-                    };
-                    let result = if field == Column::Position {
-                        match self.store.mesh().position(VertexId::new(element.id)) {
-                            Some(position) => Value::Vector(position),
-                            None => {
-                                return self.fail(pc, format!("{element} has no position"));
-                            }
-                        }
-                    } else {
-                        match self.store.mesh().lookup(element, field) {
-                            Ok(result) => Value::from(result),
-                            Err(error) => {
-                                return self.fail(pc, format!("lookup failed: {error}"));
-                            }
-                        }
-                    };
-                    self.record(pc, base_value, Value::Null, result);
-                    self.set(dst, result);
-                }
-                Op::Write { base, field, src } => {
-                    let base_value = self.get(base);
-                    let Some(element) = base_value.element() else {
-                        let message =
-                            format!("cannot write into null: {}", self.explain_null(base));
-                        return self.fail(pc, message);
-                    };
-                    let value = self.get(src);
-                    let old = if field == Column::Position {
-                        let position = match value {
-                            Value::Vector(v) => v,
-                            other => glam::Vec3::splat(other.number().unwrap_or(0.0)),
-                        };
-                        let vertex = VertexId::new(element.id);
-                        let old = self
-                            .store
-                            .mesh()
-                            .position(vertex)
-                            .map_or(Value::Null, Value::Vector);
-                        if let Err(error) =
-                            self.edit(|editor| editor.set_position(vertex, position))
-                        {
-                            return self.fail(pc, error);
-                        }
-                        old
-                    } else {
-                        let old = self
-                            .store
-                            .mesh()
-                            .lookup(element, field)
-                            .map_or(Value::Null, Value::from);
-                        let target = value.element();
-                        if let Err(error) = self.edit(|editor| editor.set(element, field, target)) {
-                            return self.fail(pc, self.write_refused(error, value, src));
-                        }
-                        old
-                    };
-                    self.record(pc, base_value, old, value);
-                    self.note_changes();
-                }
-                Op::New { dst, kind } => {
-                    let element = match self.edit(|editor| editor.create(kind)) {
-                        Ok(element) => element,
-                        Err(error) => return self.fail(pc, error),
-                    };
-                    let value = Value::from(element);
-                    self.created_rows += 1;
-                    self.record(pc, Value::Null, Value::Null, value);
-                    self.note_changes();
-                    self.set(dst, value);
-                }
-                Op::Delete { element } => {
-                    let value = self.get(element);
-                    let Some(target) = value.element() else {
-                        let message = self.cannot_act_message("delete", element);
-                        return self.fail(pc, message);
-                    };
-                    if let Err(error) = self.edit(|editor| editor.delete(target)) {
-                        return self.fail(pc, error);
                     }
-                    self.record(pc, value, Value::Null, Value::Null);
-                    self.note_changes();
                 }
                 Op::Call {
                     dst,
@@ -1072,6 +990,93 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             }
             pc += 1;
         }
+    }
+
+    /// Runs an operation that reads or changes the mesh and records its
+    /// step; an `Err` is the fault's message.
+    #[inline]
+    fn mesh_op(&mut self, pc: usize, op: Op) -> Result<(), String> {
+        match op {
+            Op::Lookup { dst, base, field } => {
+                let base_value = self.get(base);
+                let Some(element) = base_value.element() else {
+                    return Err(self.explain_null(base));
+                };
+                let result = if field == Column::Position {
+                    match self.store.mesh().position(VertexId::new(element.id)) {
+                        Some(position) => Value::Vector(position),
+                        None => {
+                            return Err(format!("{element} has no position"));
+                        }
+                    }
+                } else {
+                    match self.store.mesh().lookup(element, field) {
+                        Ok(result) => Value::from(result),
+                        Err(error) => {
+                            return Err(format!("lookup failed: {error}"));
+                        }
+                    }
+                };
+                self.record(pc, base_value, Value::Null, result);
+                self.set(dst, result);
+            }
+            Op::Write { base, field, src } => {
+                let base_value = self.get(base);
+                let Some(element) = base_value.element() else {
+                    return Err(format!(
+                        "cannot write into null: {}",
+                        self.explain_null(base)
+                    ));
+                };
+                let value = self.get(src);
+                let old = if field == Column::Position {
+                    let position = match value {
+                        Value::Vector(v) => v,
+                        other => glam::Vec3::splat(other.number().unwrap_or(0.0)),
+                    };
+                    let vertex = VertexId::new(element.id);
+                    let old = self
+                        .store
+                        .mesh()
+                        .position(vertex)
+                        .map_or(Value::Null, Value::Vector);
+                    self.edit(|editor| editor.set_position(vertex, position))?;
+                    old
+                } else {
+                    let old = self
+                        .store
+                        .mesh()
+                        .lookup(element, field)
+                        .map_or(Value::Null, Value::from);
+                    let target = value.element();
+                    if let Err(error) = self.edit(|editor| editor.set(element, field, target)) {
+                        return Err(self.write_refused(error, value, src));
+                    }
+                    old
+                };
+                self.record(pc, base_value, old, value);
+                self.note_changes();
+            }
+            Op::New { dst, kind } => {
+                let element = self.edit(|editor| editor.create(kind))?;
+                let value = Value::from(element);
+                self.created_rows += 1;
+                self.record(pc, Value::Null, Value::Null, value);
+                self.note_changes();
+                self.set(dst, value);
+            }
+            Op::Delete { element } => {
+                let value = self.get(element);
+                let Some(target) = value.element() else {
+                    return Err(self.cannot_act_message("delete", element));
+                };
+                self.edit(|editor| editor.delete(target))?;
+                self.record(pc, value, Value::Null, Value::Null);
+                self.note_changes();
+            }
+            _ => {}
+        }
+        Ok(())
     }
 
     /// Runs an array operation and records its step. Kept out of the main

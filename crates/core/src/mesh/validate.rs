@@ -8,7 +8,7 @@
 use std::fmt;
 
 use super::deleted::Deleted;
-use super::half_edge::HalfEdgeMesh;
+use super::half_edge::{HalfEdge, HalfEdgeMesh};
 use super::ids::{EdgeId, FaceId, HalfEdgeId, VertexId};
 use super::winged_edge::{Side, WingedEdge, WingedEdgeMesh};
 use crate::schema::{Column, ElementKind, ElementRef, Structure};
@@ -175,7 +175,17 @@ impl HalfEdgeMesh {
     /// (successor, then pair) from it reaches every half-edge ending there.
     pub fn validate(&self) -> Vec<Issue> {
         let mut issues = Issues(Vec::new());
-        let (nv, nf, nh) = (self.vertices.len(), self.faces.len(), self.half_edges.len());
+        let (incoming, face_size) = self.check_half_edges(&mut issues);
+        self.check_faces(&mut issues, &face_size);
+        self.check_vertices(&mut issues, &incoming);
+        issues.0
+    }
+
+    /// Checks each half-edge's references, and counts the half-edges that
+    /// end at each vertex and lie in each face, which the face and vertex
+    /// checks compare their cycles with.
+    fn check_half_edges(&self, issues: &mut Issues) -> (Vec<u32>, Vec<u32>) {
+        let (nv, nf) = (self.vertices.len(), self.faces.len());
         let mut incoming = vec![0u32; nv];
         let mut face_size = vec![0u32; nf];
         for (id, h) in (0u32..).map(HalfEdgeId::new).zip(&self.half_edges) {
@@ -203,94 +213,116 @@ impl HalfEdgeMesh {
                     None => issues.push(element, Column::Face, self.missing(f, nf, "faces")),
                 }
             }
-            match self.half_edge(h.pair_edge) {
-                None => issues.push(
-                    element,
-                    Column::PairEdge,
-                    self.missing(h.pair_edge, nh, "half-edges"),
-                ),
-                Some(_) if h.pair_edge == id => {
-                    issues.push(element, Column::PairEdge, "the half-edge is its own pair edge".to_owned());
-                }
-                Some(pair) if pair.pair_edge != id => issues.push(
-                    element,
-                    Column::PairEdge,
-                    format!(
-                        "its pair edge {} has {} as pair edge, not this half-edge (pair(pair(h)) must be h)",
-                        h.pair_edge, pair.pair_edge
-                    ),
-                ),
-                Some(pair) => {
-                    if pair.end_vertex == h.end_vertex {
-                        issues.push(
-                            element,
-                            Column::PairEdge,
-                            format!(
-                                "it and its pair edge {} both end at {}; the halves of an edge end at its two different vertices",
-                                h.pair_edge, h.end_vertex
-                            ),
-                        );
-                    }
-                    if h.face.is_none() && pair.face.is_none() && id < h.pair_edge {
-                        issues.push(
-                            element,
-                            Column::Face,
-                            format!(
-                                "neither it nor its pair edge {} has a face; an edge needs a face on at least one side",
-                                h.pair_edge
-                            ),
-                        );
-                    }
-                }
+            self.check_pair(issues, id, h);
+            self.check_successor(issues, id, h);
+        }
+        (incoming, face_size)
+    }
+
+    /// pair(pair(h)) = h, the halves end at different vertices, and an
+    /// edge has a face on at least one side.
+    fn check_pair(&self, issues: &mut Issues, id: HalfEdgeId, h: &HalfEdge) {
+        let element = Element::HalfEdge(id);
+        let nh = self.half_edges.len();
+        match self.half_edge(h.pair_edge) {
+            None => issues.push(
+                element,
+                Column::PairEdge,
+                self.missing(h.pair_edge, nh, "half-edges"),
+            ),
+            Some(_) if h.pair_edge == id => {
+                issues.push(element, Column::PairEdge, "the half-edge is its own pair edge".to_owned());
             }
-            match self.half_edge(h.successor_edge) {
-                None => issues.push(
-                    element,
-                    Column::SuccessorEdge,
-                    self.missing(h.successor_edge, nh, "half-edges"),
+            Some(pair) if pair.pair_edge != id => issues.push(
+                element,
+                Column::PairEdge,
+                format!(
+                    "its pair edge {} has {} as pair edge, not this half-edge (pair(pair(h)) must be h)",
+                    h.pair_edge, pair.pair_edge
                 ),
-                Some(successor) => {
-                    if successor.face != h.face {
-                        issues.push(
-                            element,
-                            Column::SuccessorEdge,
-                            format!(
-                                "its successor {} lies in {}, but this half-edge lies in {}",
-                                h.successor_edge,
-                                describe_face(successor.face),
-                                describe_face(h.face)
-                            ),
-                        );
-                    }
-                    if let Some(start) = self.start_vertex(h.successor_edge)
-                        && start != h.end_vertex
-                    {
-                        issues.push(
-                            element,
-                            Column::SuccessorEdge,
-                            format!(
-                                "its successor {} starts at {start}, but this half-edge ends at {}",
-                                h.successor_edge, h.end_vertex
-                            ),
-                        );
-                    }
-                    if let Some(first) = self.predecessor_edge(h.successor_edge)
-                        && first != id
-                    {
-                        issues.push(
-                            element,
-                            Column::SuccessorEdge,
-                            format!(
-                                "{} is already the successor of {first}; every half-edge has exactly one predecessor",
-                                h.successor_edge
-                            ),
-                        );
-                    }
+            ),
+            Some(pair) => {
+                if pair.end_vertex == h.end_vertex {
+                    issues.push(
+                        element,
+                        Column::PairEdge,
+                        format!(
+                            "it and its pair edge {} both end at {}; the halves of an edge end at its two different vertices",
+                            h.pair_edge, h.end_vertex
+                        ),
+                    );
+                }
+                if h.face.is_none() && pair.face.is_none() && id < h.pair_edge {
+                    issues.push(
+                        element,
+                        Column::Face,
+                        format!(
+                            "neither it nor its pair edge {} has a face; an edge needs a face on at least one side",
+                            h.pair_edge
+                        ),
+                    );
                 }
             }
         }
+    }
 
-        for ((id, face), &size) in (0u32..).map(FaceId::new).zip(&self.faces).zip(&face_size) {
+    /// The successor lies in the same face, starts where the half-edge
+    /// ends, and has no other predecessor.
+    fn check_successor(&self, issues: &mut Issues, id: HalfEdgeId, h: &HalfEdge) {
+        let element = Element::HalfEdge(id);
+        let nh = self.half_edges.len();
+        match self.half_edge(h.successor_edge) {
+            None => issues.push(
+                element,
+                Column::SuccessorEdge,
+                self.missing(h.successor_edge, nh, "half-edges"),
+            ),
+            Some(successor) => {
+                if successor.face != h.face {
+                    issues.push(
+                        element,
+                        Column::SuccessorEdge,
+                        format!(
+                            "its successor {} lies in {}, but this half-edge lies in {}",
+                            h.successor_edge,
+                            describe_face(successor.face),
+                            describe_face(h.face)
+                        ),
+                    );
+                }
+                if let Some(start) = self.start_vertex(h.successor_edge)
+                    && start != h.end_vertex
+                {
+                    issues.push(
+                        element,
+                        Column::SuccessorEdge,
+                        format!(
+                            "its successor {} starts at {start}, but this half-edge ends at {}",
+                            h.successor_edge, h.end_vertex
+                        ),
+                    );
+                }
+                if let Some(first) = self.predecessor_edge(h.successor_edge)
+                    && first != id
+                {
+                    issues.push(
+                        element,
+                        Column::SuccessorEdge,
+                        format!(
+                            "{} is already the successor of {first}; every half-edge has exactly one predecessor",
+                            h.successor_edge
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
+    /// Each face's successor cycle from its incident edge closes, covers the
+    /// face and has at least three half-edges.
+    fn check_faces(&self, issues: &mut Issues, face_size: &[u32]) {
+        let nh = self.half_edges.len();
+        for ((id, face), &size) in (0u32..).map(FaceId::new).zip(&self.faces).zip(face_size) {
             if self.deleted.contains(id.into()) {
                 continue;
             }
@@ -325,16 +357,21 @@ impl HalfEdgeMesh {
             };
             issues.push(Element::Face(id), Column::IncidentEdge, message);
         }
+    }
 
+    /// Each vertex's position is a point, and its incident edge ends at it
+    /// and starts a loop that reaches every half-edge ending there.
+    fn check_vertices(&self, issues: &mut Issues, incoming: &[u32]) {
+        let nh = self.half_edges.len();
         for ((id, vertex), &count) in (0u32..)
             .map(VertexId::new)
             .zip(&self.vertices)
-            .zip(&incoming)
+            .zip(incoming)
         {
             if self.deleted.contains(id.into()) {
                 continue;
             }
-            check_position(&mut issues, id, vertex.position);
+            check_position(issues, id, vertex.position);
             let message = match vertex.incident_edge {
                 None if count == 0 => continue,
                 None => format!("it has no incident edge, but {count} half-edges end here"),
@@ -366,7 +403,6 @@ impl HalfEdgeMesh {
             };
             issues.push(Element::Vertex(id), Column::IncidentEdge, message);
         }
-        issues.0
     }
 }
 
