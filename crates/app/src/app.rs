@@ -45,6 +45,7 @@ pub mod files;
 pub mod first_visit;
 mod focus_ring;
 mod open_dialog;
+mod pane;
 mod pending;
 mod pictures;
 mod readers;
@@ -516,10 +517,10 @@ impl EdgewiseApp {
             history: self.tab().history.state(),
             renumbering: self.tab().renumbering.clone(),
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
-            coarse_view: self.tab().view.coarse(),
-            styles_patched: self.tab().view.styles_patched(),
-            base_image: self.tab().view.base_image_counts(),
-            motion_proxy: self.tab().view.motion_proxy_frames(),
+            coarse_view: self.tab().pane.view.coarse(),
+            styles_patched: self.tab().pane.view.styles_patched(),
+            base_image: self.tab().pane.view.base_image_counts(),
+            motion_proxy: self.tab().pane.view.motion_proxy_frames(),
             ui_cache: self.render_state.as_ref().map(|_| {
                 let counts = self.ui_cache.counts();
                 [counts.drawn, counts.copied]
@@ -599,11 +600,15 @@ impl EdgewiseApp {
     /// the theme changed.
     fn refresh_styles(&mut self) {
         self.tab_mut().sync_edit();
-        let tab = &self.tabs[self.active_tab];
+        let tab = &mut self.tabs[self.active_tab];
+        let Some(document) = &tab.document else {
+            return;
+        };
+        tab.pane.follow_mesh(document);
         let Some(key) = tab.paint_key(self.theme.key()) else {
             return;
         };
-        if tab.paint_key == Some(key) {
+        if tab.pane.styled_for(key) {
             return;
         }
         let paint = self.current_paint();
@@ -611,7 +616,7 @@ impl EdgewiseApp {
         let Some(document) = &tab.document else {
             return;
         };
-        let styles = scene_styles(document.mesh(), &paint, tab.styles.generation + 1);
+        tab.pane.restyle(key, document.mesh(), &paint);
         tab.table_scroll = [ElementKind::Face, ElementKind::Edge, ElementKind::Vertex]
             .into_iter()
             .filter_map(|kind| {
@@ -619,9 +624,7 @@ impl EdgewiseApp {
                 (tab.paint.focus(kind) != Some(focus)).then_some((kind, focus))
             })
             .collect();
-        tab.styles = styles;
         tab.paint = paint;
-        tab.paint_key = Some(key);
     }
 
     /// Draws a panel's contents as a part of the UI cache: copied from a
@@ -747,7 +750,7 @@ impl EdgewiseApp {
             self.show_statistics = true;
         }
         if ui.button("Frame the mesh").clicked() {
-            self.tab_mut().view.frame_all();
+            self.tab_mut().pane.view.frame_all();
         }
         let mut side_by_side = self.side_by_side;
         if ui
@@ -997,8 +1000,8 @@ impl EdgewiseApp {
         let response = ui
             .scope_builder(egui::UiBuilder::new().max_rect(view_rect), |ui| {
                 let tab = &mut self.tabs[self.active_tab];
-                tab.view.set_preview(tab.table_hovered);
-                tab.view.ui(ui, &tab.styles, &self.view_options)
+                tab.pane.view.set_preview(tab.table_hovered);
+                tab.pane.ui(ui, &self.view_options)
             })
             .inner;
         self.tab_mut().hovered = response.hovered;

@@ -110,7 +110,7 @@ impl EdgewiseApp {
             }
         }
         if let Some(camera) = link.camera {
-            self.tab_mut().view.set_camera(camera.sanitized());
+            self.tab_mut().pane.view.set_camera(camera.sanitized());
         }
         link.apply_view_options(&mut self.view_options);
 
@@ -227,7 +227,7 @@ impl EdgewiseApp {
                 .map(crate::algorithm::TraceSession::step);
             link.selection = None;
         }
-        link.camera = Some(self.tab().view.camera());
+        link.camera = Some(self.tab().pane.view.camera());
         link.set_view_options(&self.view_options);
         let defaults = Settings::default();
         if self.settings.dark != defaults.dark {

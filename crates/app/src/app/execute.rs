@@ -361,7 +361,7 @@ impl EdgewiseApp {
     /// that point at an element. `None` if it is not in view.
     pub fn screen_position(&self, element: ElementRef) -> Option<[f32; 2]> {
         let zoom = self.ctx.as_ref().map_or(1.0, egui::Context::zoom_factor);
-        let at = self.tab().view.screen_position(element)?;
+        let at = self.tab().pane.view.screen_position(element)?;
         Some([at.x * zoom, at.y * zoom])
     }
 }

@@ -118,7 +118,7 @@ impl EdgewiseApp {
         let pending = PendingMesh {
             id,
             label,
-            preparation: Preparation::new(geometry, tab.view.has_gpu()),
+            preparation: Preparation::new(geometry, tab.pane.view.has_gpu()),
             document,
             commit,
             checked: None,
@@ -204,7 +204,8 @@ impl EdgewiseApp {
         let outcome = match commit {
             Commit::Open { frame, merge } => {
                 tab.structure = document.structure();
-                tab.view.show_prepared(preparation, frame);
+                tab.pane
+                    .show_prepared(document.mesh_id(), preparation, frame);
                 let entry = format!("open {}", document.name);
                 // A traced edit is kept (or undone) before the new mesh
                 // replaces it, so undo gives it back.
@@ -224,10 +225,11 @@ impl EdgewiseApp {
                 if tab.document.as_ref().map(Document::mesh_id) == Some(mesh_id) {
                     let structure = document.structure();
                     tab.structure = structure;
+                    tab.pane
+                        .show_prepared(document.mesh_id(), preparation, false);
                     let before = tab.document.replace(document);
                     let entry = format!("convert to {}", structure.prose());
                     tab.history.record(entry, Kind::Load, before, false);
-                    tab.view.show_prepared(preparation, false);
                     None
                 } else {
                     Some(format!("{label} was dropped: the mesh changed meanwhile"))

@@ -37,8 +37,8 @@ impl EdgewiseApp {
         self.refresh_styles();
         self.sync_view_options();
         let tab = &mut self.tabs[self.active_tab];
-        tab.view
-            .lay_out_offscreen(egui::vec2(width, height), &tab.styles, &self.view_options);
+        tab.pane
+            .lay_out_offscreen(egui::vec2(width, height), &self.view_options);
     }
 
     /// The view as vector shapes with the tables beside it, highlighted
@@ -60,6 +60,7 @@ impl EdgewiseApp {
             .into());
         }
         let view = tab
+            .pane
             .view
             .vector_view(&self.view_options)
             .ok_or("the view has not been drawn yet; export it after the next frame")?;
@@ -138,6 +139,7 @@ impl EdgewiseApp {
             let frame = frame_at(trace, step, &self.theme);
             let styles = scene_styles(&mesh, &frame.paint, 0);
             let view = tab
+                .pane
                 .view
                 .vector_view_of(geometry, &styles, &self.view_options)
                 .ok_or("the view has not been drawn yet; export it after the next frame")?;

@@ -11,7 +11,12 @@ use edgewise_core::mesh::{
 };
 use edgewise_core::schema::{Column, ElementKind, ElementRef, NameError};
 
-use super::{EdgewiseApp, edit_menu::EditMenu, twin::Twin};
+use super::{
+    EdgewiseApp,
+    edit_menu::EditMenu,
+    pane::{PaintKey, Pane},
+    twin::Twin,
+};
 use crate::command::{Command, CommandError};
 use crate::{
     algorithm::AlgorithmRun,
@@ -21,33 +26,17 @@ use crate::{
     paint::{MOST_MARKED, Paint},
     state::TabState,
 };
-use edgewise_renderer::view3d::{MeshGeometry, SceneStyles, View3d};
-
-/// Everything the views' colours and labels are derived from, each by a
-/// number that changes with it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct PaintKey {
-    /// The document's generation: its mesh and selection.
-    document: u64,
-    /// The run's generation: its algorithm and step.
-    run: u64,
-    /// The broken records and last changes marked.
-    marks: u64,
-    theme: u64,
-}
 
 /// One open mesh and everything shown for it: its document, 3D view and
 /// camera, colours, algorithm run, OBJ editor text, table scroll, error
 /// and side-by-side twin.
 pub(crate) struct Tab {
     pub(crate) document: Option<Document>,
-    pub(crate) view: View3d,
-    pub(crate) styles: SceneStyles,
-    /// What the views colour: the selection, or the trace's current step.
+    /// The 3D view, following the document.
+    pub(crate) pane: Pane,
+    /// What the views colour: the selection, or the trace's current step
+    /// (derived with the pane's styles).
     pub(crate) paint: Paint,
-    /// What `paint` and `styles` were derived from ([`PaintKey`]); they
-    /// are derived again whenever it differs, and at no other time.
-    pub(crate) paint_key: Option<PaintKey>,
     /// Table rows to bring into view once: where the selection or the
     /// trace's current operation moved to.
     pub(crate) table_scroll: Vec<(ElementKind, u32)>,
@@ -107,10 +96,8 @@ impl Tab {
     ) -> Self {
         Self {
             document: None,
-            view: View3d::new(render_state),
-            styles: SceneStyles::default(),
+            pane: Pane::new(render_state),
             paint: Paint::default(),
-            paint_key: None,
             table_scroll: Vec::new(),
             run: AlgorithmRun::default(),
             structure,
@@ -197,8 +184,6 @@ impl Tab {
         }
         self.edit_applied = wanted;
         let broken = document.mesh().validate();
-        self.view
-            .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
         self.set_broken(broken);
     }
 
@@ -327,8 +312,6 @@ impl Tab {
         self.set_last_changes(Vec::new());
         if let Some(document) = &self.document {
             self.structure = document.structure();
-            self.view
-                .set_geometry(MeshGeometry::from_mesh(document.mesh()), false);
         }
         self.error = None;
     }

@@ -7,25 +7,22 @@ use edgewise_core::mesh::EdgeCorrespondence;
 use edgewise_core::schema::ElementRef;
 
 use super::EdgewiseApp;
+use super::pane::{PaintKey, Pane};
 use crate::command::CommandError;
 use crate::{
     document::{Document, map_element},
     paint::Paint,
 };
-use edgewise_renderer::view3d::{MeshGeometry, SceneStyles, View3d};
 
 /// The other structure's copy of the open mesh and its view.
 pub(crate) struct Twin {
     document: Document,
     correspondence: EdgeCorrespondence,
-    view: View3d,
-    styles: SceneStyles,
+    pane: Pane,
     /// The main document's mesh id the twin was made from.
     source_mesh: u64,
     /// The main document generation whose selection the twin shows.
     synced: u64,
-    /// The twin's own generation and theme key its styles were made for.
-    styles_key: Option<(u64, u64)>,
 }
 
 impl EdgewiseApp {
@@ -71,17 +68,15 @@ impl EdgewiseApp {
                     return Err(format!("side by side: {message}").into());
                 }
             };
-            let mut view = View3d::new(self.render_state.as_ref());
-            view.set_geometry(MeshGeometry::from_mesh(twin_document.mesh()), false);
-            view.set_camera(tab.view.camera());
+            let mut pane = Pane::new(self.render_state.as_ref());
+            pane.follow_mesh(&twin_document);
+            pane.view.set_camera(tab.pane.view.camera());
             tab.twin = Some(Twin {
                 document: twin_document,
                 correspondence,
-                view,
-                styles: SceneStyles::default(),
+                pane,
                 source_mesh: document.mesh_id(),
                 synced: document.generation(),
-                styles_key: None,
             });
             return Ok(());
         }
@@ -107,18 +102,22 @@ impl EdgewiseApp {
         let Some(twin) = &mut self.tabs[self.active_tab].twin else {
             return;
         };
-        let key = (twin.document.generation(), theme_key);
-        if twin.styles_key != Some(key) {
+        // The twin shows the selection only: no run, no marks.
+        let key = PaintKey {
+            document: twin.document.generation(),
+            run: 0,
+            marks: 0,
+            theme: theme_key,
+        };
+        if !twin.pane.styled_for(key) {
             let paint = Paint::from_selection(twin.document.highlights(), &self.theme);
-            twin.styles =
-                super::scene_styles(twin.document.mesh(), &paint, twin.styles.generation + 1);
-            twin.styles_key = Some(key);
+            twin.pane.restyle(key, twin.document.mesh(), &paint);
         }
         ui.weak(match twin.document.structure() {
             edgewise_core::mesh::Structure::WingedEdge => "The same mesh as winged-edge",
             edgewise_core::mesh::Structure::HalfEdge => "The same mesh as half-edge",
         });
-        let response = twin.view.ui(ui, &twin.styles, &self.view_options);
+        let response = twin.pane.ui(ui, &self.view_options);
         let clicked = response.clicked.and_then(|element| {
             map_element(element, twin.document.structure(), &twin.correspondence)
         });

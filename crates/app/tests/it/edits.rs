@@ -306,3 +306,38 @@ fn calls_are_stepped_into_over_and_out_of_with_the_call_stack_shown() {
     let refused = harness.state_mut().trace_step_out().expect_err("refused");
     assert!(refused.contains("not inside a call"), "{refused}");
 }
+
+/// A file opened in the middle of a traced edit: the edit, left unsound,
+/// goes back to the mesh it started from, and then the new mesh replaces
+/// it. The 3D view must show the new mesh, not the old one that the undone
+/// edit put back for a moment.
+#[test]
+fn a_load_in_the_middle_of_an_edit_shows_the_new_mesh_in_the_view() {
+    use edgewise_core::schema::ElementRef;
+    let mut harness = support::harness_with("hexagon", Some(Structure::HalfEdge));
+    start_flip(&mut harness);
+    loop {
+        harness.state_mut().trace_step(1).expect("steps");
+        harness.run();
+        if !harness.state().state().broken.is_empty() {
+            break;
+        }
+    }
+    let eighth = ElementRef::vertex(VertexId::new(7));
+    assert_eq!(
+        harness.state().screen_position(eighth),
+        None,
+        "the hexagon has seven vertices"
+    );
+    harness
+        .state_mut()
+        .load_sample("cube", None)
+        .expect("loads");
+    harness.run();
+    harness.run();
+    assert_eq!(harness.state().state().counts.vertices, 8);
+    assert!(
+        harness.state().screen_position(eighth).is_some(),
+        "the view draws the cube's eighth vertex"
+    );
+}
