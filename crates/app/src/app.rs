@@ -596,8 +596,10 @@ impl EdgewiseApp {
         paint
     }
 
-    /// Re-derives colours and labels when the selection, the trace step or
-    /// the theme changed.
+    /// Brings the active tab's view up to date with its document: the
+    /// geometry when the mesh changed, the colours and labels when the
+    /// selection, the trace step, the marks or the theme did (see
+    /// [`pane`]).
     fn refresh_styles(&mut self) {
         self.tab_mut().sync_edit();
         let tab = &mut self.tabs[self.active_tab];
