@@ -386,23 +386,22 @@ impl Reference<'_> {
             header,
             dim,
         } = self;
+        let words = target.map_or_else(|| NONE.to_owned(), |target| target.id.to_string());
+        let mut text = RichText::new(&words).monospace();
+        // A tinted cell is one the trace reads or writes; an empty one is
+        // weak even where it can be edited.
+        if let Some(tint) = paint.cells.get(&(element, Role::Column(column))) {
+            text = text.background_color(tint.gamma_multiply(0.55)).strong();
+        } else if dim || target.is_none() {
+            text = text.weak();
+        }
         let Some(target) = target else {
-            let text = RichText::new(NONE).monospace();
-            let label = match paint.cells.get(&(element, Role::Column(column))) {
-                Some(tint) => ui.label(text.background_color(tint.gamma_multiply(0.55)).strong()),
-                None => ui.label(text.weak()),
-            };
+            let label = ui.label(text);
             if !dim {
-                start_cell_edit(ui, label, element, column, NONE);
+                start_cell_edit(ui, label, element, column, &words);
             }
             return None;
         };
-        let mut text = RichText::new(target.id.to_string()).monospace();
-        if let Some(tint) = paint.cells.get(&(element, Role::Column(column))) {
-            text = text.background_color(tint.gamma_multiply(0.55)).strong();
-        } else if dim {
-            text = text.weak();
-        }
         let target_name = target.to_string();
         let link = ui.link(text).on_hover_text(format!("select {target_name}"));
         // Screen readers (and UI tests) hear which reference this is.
@@ -422,8 +421,7 @@ impl Reference<'_> {
             response.hovered = Some(target);
         }
         if !dim {
-            let id = target.id.to_string();
-            start_cell_edit(ui, link, element, column, &id);
+            start_cell_edit(ui, link, element, column, &words);
         }
         clicked.then_some(target)
     }

@@ -68,15 +68,15 @@ impl EdgewiseApp {
             .map(|(session, frame)| {
                 accessible::RunCopy::new(&frame, session.trace.algorithm(), session.playing)
             });
-        let variables = copy.as_ref().map(accessible::RunCopy::variables_html);
-        let text = copy
+        let variables = copy
             .as_ref()
-            .zip(variables.as_deref())
-            .map(|(copy, html)| platform::RunText {
-                status: &copy.status,
-                line: &copy.line,
-                variables_html: html,
-            });
+            .map(accessible::RunCopy::variables_html)
+            .unwrap_or_default();
+        let text = copy.as_ref().map(|copy| platform::RunText {
+            status: &copy.status,
+            line: &copy.line,
+            variables_html: &variables,
+        });
         platform::show_run_to_readers(text.as_ref());
     }
 

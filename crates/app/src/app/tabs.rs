@@ -306,8 +306,8 @@ impl Tab {
         Some(before)
     }
 
-    /// After the document's mesh changed: the view and the colours follow
-    /// it.
+    /// After the document's mesh changed: the last changes are cleared and
+    /// the structure follows it (the view follows by itself, `Pane`).
     fn mesh_shown(&mut self) {
         self.set_last_changes(Vec::new());
         if let Some(document) = &self.document {

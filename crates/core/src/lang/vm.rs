@@ -1003,19 +1003,11 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     return Err(self.explain_null(base));
                 };
                 let result = if field == Column::Position {
-                    match self.store.mesh().position(VertexId::new(element.id)) {
-                        Some(position) => Value::Vector(position),
-                        None => {
-                            return Err(format!("{element} has no position"));
-                        }
-                    }
+                    let position = self.store.mesh().position(VertexId::new(element.id));
+                    Value::Vector(position.ok_or_else(|| format!("{element} has no position"))?)
                 } else {
-                    match self.store.mesh().lookup(element, field) {
-                        Ok(result) => Value::from(result),
-                        Err(error) => {
-                            return Err(format!("lookup failed: {error}"));
-                        }
-                    }
+                    let reference = self.store.mesh().lookup(element, field);
+                    Value::from(reference.map_err(|error| format!("lookup failed: {error}"))?)
                 };
                 self.record(pc, base_value, Value::Null, result);
                 self.set(dst, result);

@@ -9,14 +9,12 @@
 use std::time::Duration;
 
 use anyhow::{Context as _, bail};
-use edgewise_browser_tests::{Browser, LaunchOptions, Screenshot};
+use edgewise_browser_tests::{Browser, LaunchOptions, ONE_HEAVY_PAGE_AT_A_TIME, Screenshot};
 use serde_json::Value;
 
 /// A view starts in a fresh frame, rendered on the CPU: on two cores
 /// that can take minutes.
 const START_TIMEOUT: Duration = Duration::from_secs(240);
-
-use edgewise_browser_tests::ONE_HEAVY_PAGE_AT_A_TIME;
 
 /// Where `cargo xtask hosts` (or `cargo xtask test`) serves the hosts.
 fn hosts_url() -> anyhow::Result<String> {

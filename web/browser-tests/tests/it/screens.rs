@@ -12,13 +12,13 @@
 use std::time::Duration;
 
 use anyhow::{Context as _, bail, ensure};
-use edgewise_browser_tests::{Browser, FIRE_MOUSE, LaunchOptions, SCREENS, Screen};
+use edgewise_browser_tests::{
+    Browser, FIRE_MOUSE, LaunchOptions, ONE_HEAVY_PAGE_AT_A_TIME, SCREENS, Screen,
+};
 use serde_json::Value;
 
 const QUESTIONS: &str = include_str!("../../../../algorithms/questions/vertex-adjacent-edge.txt");
 const WAIT: Duration = Duration::from_secs(60);
-
-use edgewise_browser_tests::ONE_HEAVY_PAGE_AT_A_TIME;
 
 #[derive(Clone, Copy, Debug)]
 struct Rect {
