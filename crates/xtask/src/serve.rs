@@ -1,81 +1,181 @@
 //! A small static file server for dist/, used by `serve` and the browser tests.
+//!
+//! One thread per connection, on the standard library. The `tiny_http` pool
+//! used before could leave a new connection queued behind threads that each
+//! waited on one of the browser's idle keep-alive connections; a host page's
+//! load then waited out the tests' four-minute page timeout.
 
 use std::{
-    net::SocketAddr,
+    io::{BufRead, BufReader, Write},
+    net::{SocketAddr, TcpListener, TcpStream},
     path::{Component, Path, PathBuf},
+    time::Duration,
 };
 
 use anyhow::Context as _;
 
+/// How long a kept-alive connection may wait for its next request.
+const IDLE: Duration = Duration::from_secs(30);
+
+/// The longest request head read; longer ones are refused.
+const MAX_HEAD: usize = 16 * 1024;
+
 /// Serves `dist` on 127.0.0.1:`port` until the process is stopped.
 pub fn serve_forever(dist: &Path, port: u16) -> anyhow::Result<()> {
-    let server = bind(port)?;
+    let listener = bind(port)?;
     println!("Edgewise is served at http://127.0.0.1:{port}/ (Ctrl+C stops)");
-    handle_requests(&server, dist);
+    accept(&listener, dist);
     Ok(())
 }
 
 /// Serves `dist` on a free port in a background thread; returns the address.
 pub fn serve_in_background(dist: &Path) -> anyhow::Result<SocketAddr> {
-    let server = bind(0)?;
-    let addr = server
-        .server_addr()
-        .to_ip()
-        .context("the test server has no IP address")?;
+    let listener = bind(0)?;
+    let addr = listener
+        .local_addr()
+        .context("the test server has no address")?;
     let dist = dist.to_path_buf();
-    std::thread::spawn(move || handle_requests(&server, &dist));
+    std::thread::spawn(move || accept(&listener, &dist));
     Ok(addr)
 }
 
-fn bind(port: u16) -> anyhow::Result<tiny_http::Server> {
-    tiny_http::Server::http(("127.0.0.1", port))
-        .map_err(|err| anyhow::anyhow!("cannot listen on 127.0.0.1:{port}: {err}"))
+fn bind(port: u16) -> anyhow::Result<TcpListener> {
+    TcpListener::bind(("127.0.0.1", port))
+        .with_context(|| format!("cannot listen on 127.0.0.1:{port}"))
 }
 
-fn handle_requests(server: &tiny_http::Server, dist: &Path) {
-    for request in server.incoming_requests() {
-        let accepts_gzip = request
-            .headers()
-            .iter()
-            .any(|h| h.field.equiv("Accept-Encoding") && h.value.as_str().contains("gzip"));
-        let response = match resolve(dist, request.url()) {
-            Some(path) => {
-                // The build's precompressed copy, where there is one.
-                let gzipped = accepts_gzip
-                    .then(|| std::fs::read(gzipped_name(&path)).ok())
-                    .flatten();
-                let encoded = gzipped.is_some();
-                match gzipped.map_or_else(|| std::fs::read(&path), Ok) {
-                    Ok(bytes) => {
-                        let response = tiny_http::Response::from_data(bytes)
-                            .with_header(header("Content-Type", content_type(&path)))
-                            .with_header(header("Cache-Control", "no-cache"))
-                            .with_header(header("Vary", "Accept-Encoding"));
-                        if encoded {
-                            response.with_header(header("Content-Encoding", "gzip"))
-                        } else {
-                            response
-                        }
-                    }
-                    Err(_) => not_found(),
-                }
-            }
-            None => not_found(),
-        };
-        // A client that hung up is not our problem.
-        request.respond(response).ok();
+fn accept(listener: &TcpListener, dist: &Path) {
+    for stream in listener.incoming().flatten() {
+        let dist = dist.to_path_buf();
+        std::thread::spawn(move || serve_connection(stream, &dist));
     }
 }
 
-fn not_found() -> tiny_http::Response<std::io::Cursor<Vec<u8>>> {
-    tiny_http::Response::from_string("not found")
-        .with_status_code(404)
-        .with_header(header("Content-Type", "text/plain; charset=utf-8"))
+/// Answers the requests of one connection in turn until the client closes
+/// it, asks to, or stays idle past [`IDLE`].
+fn serve_connection(stream: TcpStream, dist: &Path) {
+    stream.set_read_timeout(Some(IDLE)).ok();
+    let Ok(mut writer) = stream.try_clone() else {
+        return;
+    };
+    let mut reader = BufReader::new(stream);
+    while let Some(request) = read_request(&mut reader) {
+        // A client that hung up is not our problem.
+        if respond(&mut writer, &request, dist).is_err() || !request.keep_alive {
+            break;
+        }
+    }
 }
 
-fn header(name: &str, value: &str) -> tiny_http::Header {
-    tiny_http::Header::from_bytes(name.as_bytes(), value.as_bytes())
-        .unwrap_or_else(|()| unreachable!("static header {name}: {value} is valid"))
+/// What the server reads of a request: it serves files, so no body.
+struct Request {
+    method: String,
+    target: String,
+    accepts_gzip: bool,
+    keep_alive: bool,
+}
+
+/// Reads one request's head; `None` at the end of the stream, after
+/// [`IDLE`], or for a head that is not HTTP or is longer than [`MAX_HEAD`].
+fn read_request(reader: &mut impl BufRead) -> Option<Request> {
+    let mut line = String::new();
+    let mut read = reader.read_line(&mut line).ok()?;
+    let mut words = line.split_whitespace();
+    let (method, target, version) = (words.next()?, words.next()?, words.next()?);
+    let mut request = Request {
+        method: method.to_owned(),
+        target: target.to_owned(),
+        accepts_gzip: false,
+        // HTTP/1.1 keeps the connection unless told otherwise; 1.0 closes it.
+        keep_alive: version == "HTTP/1.1",
+    };
+    loop {
+        line.clear();
+        read += reader.read_line(&mut line).ok()?;
+        if read > MAX_HEAD {
+            return None;
+        }
+        let header = line.trim_end();
+        if header.is_empty() {
+            // A body is never read, so the connection cannot carry on.
+            if request.method != "GET" && request.method != "HEAD" {
+                request.keep_alive = false;
+            }
+            return Some(request);
+        }
+        let (name, value) = header.split_once(':')?;
+        let value = value.trim().to_ascii_lowercase();
+        if name.eq_ignore_ascii_case("Accept-Encoding") {
+            request.accepts_gzip = value.contains("gzip");
+        } else if name.eq_ignore_ascii_case("Connection") {
+            request.keep_alive = match value.as_str() {
+                "close" => false,
+                "keep-alive" => true,
+                _ => request.keep_alive,
+            };
+        }
+    }
+}
+
+/// Writes the answer to `request`: the file, its precompressed copy where
+/// the client takes gzip and the build made one, or an error status.
+fn respond(writer: &mut impl Write, request: &Request, dist: &Path) -> std::io::Result<()> {
+    if request.method != "GET" && request.method != "HEAD" {
+        return write_response(
+            writer,
+            request,
+            "405 Method Not Allowed",
+            &[],
+            b"GET or HEAD only",
+        );
+    }
+    let Some(path) = resolve(dist, &request.target) else {
+        return write_response(writer, request, "404 Not Found", &[], b"not found");
+    };
+    let gzipped = request
+        .accepts_gzip
+        .then(|| std::fs::read(gzipped_name(&path)).ok())
+        .flatten();
+    let encoded = gzipped.is_some();
+    let Ok(body) = gzipped.map_or_else(|| std::fs::read(&path), Ok) else {
+        return write_response(writer, request, "404 Not Found", &[], b"not found");
+    };
+    let mut headers = vec![
+        ("Content-Type", content_type(&path)),
+        ("Cache-Control", "no-cache"),
+        ("Vary", "Accept-Encoding"),
+    ];
+    if encoded {
+        headers.push(("Content-Encoding", "gzip"));
+    }
+    write_response(writer, request, "200 OK", &headers, &body)
+}
+
+fn write_response(
+    writer: &mut impl Write,
+    request: &Request,
+    status: &str,
+    headers: &[(&str, &str)],
+    body: &[u8],
+) -> std::io::Result<()> {
+    let mut head = format!("HTTP/1.1 {status}\r\nContent-Length: {}\r\n", body.len());
+    if !headers.iter().any(|(name, _)| *name == "Content-Type") {
+        head.push_str("Content-Type: text/plain; charset=utf-8\r\n");
+    }
+    for (name, value) in headers {
+        head.push_str(&format!("{name}: {value}\r\n"));
+    }
+    let connection = if request.keep_alive {
+        "keep-alive"
+    } else {
+        "close"
+    };
+    head.push_str(&format!("Connection: {connection}\r\n\r\n"));
+    writer.write_all(head.as_bytes())?;
+    if request.method != "HEAD" {
+        writer.write_all(body)?;
+    }
+    writer.flush()
 }
 
 /// Maps a request URL to a file under `dist`, refusing anything outside it.
@@ -153,7 +253,7 @@ mod tests {
     /// A raw HTTP/1.0 request; the whole response.
     fn get(addr: SocketAddr, path: &str, accept: &str) -> String {
         use std::io::{Read as _, Write as _};
-        let mut stream = std::net::TcpStream::connect(addr).unwrap();
+        let mut stream = TcpStream::connect(addr).unwrap();
         write!(
             stream,
             "GET {path} HTTP/1.0\r\nAccept-Encoding: {accept}\r\n\r\n"
@@ -162,6 +262,83 @@ mod tests {
         let mut response = Vec::new();
         stream.read_to_end(&mut response).unwrap();
         String::from_utf8_lossy(&response).into_owned()
+    }
+
+    /// Idle connections, as a browser keeps them open, never hold up
+    /// another client's request.
+    #[test]
+    fn idle_connections_do_not_hold_up_a_new_one() {
+        let dist = std::env::temp_dir().join(format!("edgewise-serve-idle-{}", std::process::id()));
+        std::fs::create_dir_all(&dist).unwrap();
+        std::fs::write(dist.join("index.html"), "page").unwrap();
+        let addr = serve_in_background(&dist).unwrap();
+        let idle: Vec<_> = (0..16).map(|_| TcpStream::connect(addr).unwrap()).collect();
+        let page = get(addr, "/", "identity");
+        assert!(page.starts_with("HTTP/1.1 200 OK"), "{page}");
+        assert!(page.ends_with("page"), "{page}");
+        drop(idle);
+        std::fs::remove_dir_all(&dist).ok();
+    }
+
+    /// An HTTP/1.1 connection serves request after request; a HEAD gets the
+    /// headers alone, and other methods are refused.
+    #[test]
+    fn a_kept_alive_connection_answers_in_turn() {
+        use std::io::{Read as _, Write as _};
+        let dist = std::env::temp_dir().join(format!("edgewise-serve-keep-{}", std::process::id()));
+        std::fs::create_dir_all(&dist).unwrap();
+        std::fs::write(dist.join("a.txt"), "first").unwrap();
+        std::fs::write(dist.join("b.txt"), "second").unwrap();
+        let addr = serve_in_background(&dist).unwrap();
+        let mut stream = TcpStream::connect(addr).unwrap();
+        write!(
+            stream,
+            "GET /a.txt HTTP/1.1\r\nHost: x\r\n\r\n\
+             HEAD /b.txt HTTP/1.1\r\nHost: x\r\n\r\n\
+             POST /b.txt HTTP/1.1\r\nHost: x\r\nContent-Length: 0\r\n\r\n"
+        )
+        .unwrap();
+        let mut response = String::new();
+        stream.read_to_string(&mut response).unwrap();
+        let answers: Vec<&str> = response.split("HTTP/1.1 ").skip(1).collect();
+        assert_eq!(answers.len(), 3, "{response}");
+        assert!(answers[0].starts_with("200 OK"), "{response}");
+        assert!(answers[0].contains("Connection: keep-alive"), "{response}");
+        assert!(answers[0].ends_with("first"), "{response}");
+        assert!(answers[1].contains("Content-Length: 6"), "{response}");
+        assert!(
+            answers[1].ends_with("\r\n\r\n"),
+            "a HEAD has no body: {response}"
+        );
+        assert!(answers[2].starts_with("405"), "{response}");
+        assert!(answers[2].contains("Connection: close"), "{response}");
+        std::fs::remove_dir_all(&dist).ok();
+    }
+
+    /// A request head longer than [`MAX_HEAD`] gets the connection closed.
+    #[test]
+    fn an_endless_head_is_cut_off() {
+        use std::io::{Read as _, Write as _};
+        let dist = std::env::temp_dir().join(format!("edgewise-serve-head-{}", std::process::id()));
+        std::fs::create_dir_all(&dist).unwrap();
+        let addr = serve_in_background(&dist).unwrap();
+        let mut stream = TcpStream::connect(addr).unwrap();
+        write!(stream, "GET / HTTP/1.1\r\n").unwrap();
+        let header = format!("X-Long: {}\r\n", "a".repeat(1024));
+        // The server closes the connection partway; later writes may fail.
+        for _ in 0..(2 * MAX_HEAD / header.len()) {
+            if stream.write_all(header.as_bytes()).is_err() {
+                break;
+            }
+        }
+        let mut response = Vec::new();
+        stream.read_to_end(&mut response).ok();
+        assert!(
+            response.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&response)
+        );
+        std::fs::remove_dir_all(&dist).ok();
     }
 
     #[test]
