@@ -4,10 +4,14 @@
 
 use std::time::Duration;
 
+use anyhow::Context as _;
 use edgewise_browser_tests::Browser;
 
 /// Two apps start side by side on the CPU renderer: allow for both.
 const START_TIMEOUT: Duration = Duration::from_secs(180);
+
+/// A key's effect on a started view, two frames of the CPU renderer.
+const WAIT: Duration = Duration::from_secs(30);
 
 #[tokio::test]
 async fn the_example_page_starts_both_views() -> anyhow::Result<()> {
@@ -199,8 +203,10 @@ async fn an_embedded_view_takes_the_keys_only_when_asked() -> anyhow::Result<()>
     browser.press_key("Escape", 0).await?;
     assert_eq!(browser.eval(active).await?, "BODY", "Escape kept the keys");
     browser.press_key("ArrowRight", 0).await?;
-    tokio::time::sleep(Duration::from_millis(500)).await;
-    assert_eq!(step().await?, 4, "→ still reached the view after Escape");
+    browser
+        .wait_for(&format!("{view}.state().trace.step === 4"), WAIT)
+        .await
+        .context("→ no longer reached the view after Escape")?;
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
