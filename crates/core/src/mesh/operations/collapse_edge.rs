@@ -59,219 +59,308 @@ pub fn collapse_edge<M: Edit + ?Sized>(
 }
 
 fn plan<M: Records + ?Sized>(patch: &mut Patch<'_, M>, edge: EdgeRow) -> Result<(), Refusal> {
-    let d = patch.edge(edge.0)?;
-    let name = EdgeName(patch.name(d));
-    let action = Action::Collapsing(name);
-    let t = patch.twin(d)?;
-    let (a, b) = (patch.start(d)?, patch.end(d)?);
-    let faces = [patch.face_of(d)?, patch.face_of(t)?];
-    if let [Some(face), Some(other)] = faces
-        && face == other
-    {
-        return Err(Refusal::SameFaceOnBothSides {
-            operation: Operation::CollapseEdge,
-            edge: name,
-            face,
-        });
-    }
-    let mut triangles: [Option<Triangle>; 2] = [None, None];
-    for (slot, side) in triangles.iter_mut().zip([d, t]) {
-        let Some(face) = patch.face_of(side)? else {
-            continue;
-        };
-        if patch.cycle(side)?.len() != 3 {
-            continue;
-        }
-        let s1 = patch.next(side)?;
-        let s2 = patch.next(s1)?;
-        // On d's side s1 runs b → c; on t's side s2 runs x → b.
-        let (deleted, kept) = if side == d { (s1, s2) } else { (s2, s1) };
-        *slot = Some(Triangle {
-            face,
-            corner: patch.end(s1)?,
-            deleted,
-            kept,
-            replaced: patch.twin(deleted)?,
-        });
-    }
-    let corners: Vec<VertexId> = triangles.iter().flatten().map(|t| t.corner).collect();
+    let collapse = Collapse::read(patch, edge)?;
+    collapse.check_link_condition(patch)?;
+    collapse.check_boundary(patch)?;
+    collapse.check_edges_beyond(patch)?;
+    let around_b = patch.ring_from(collapse.b, collapse.d)?;
+    collapse.check_faces_stay_simple(patch, &around_b)?;
+    collapse.write(patch, &around_b)
+}
 
-    // The link condition: the ends share no neighbour but the corners.
-    let of_b = patch.neighbours(b)?;
-    for shared in patch.neighbours(a)? {
-        if shared != b && of_b.contains(&shared) && !corners.contains(&shared) {
-            return Err(Refusal::LinkCondition {
-                action,
-                edge: name,
-                a,
-                b,
-                shared,
-            });
-        }
-    }
-    if faces.iter().all(Option::is_some) && patch.on_boundary(a)? && patch.on_boundary(b)? {
-        return Err(Refusal::BoundaryPinch {
-            action,
-            edge: name,
-            a,
-            b,
-        });
-    }
-    for triangle in triangles.iter().flatten() {
-        let beyond_deleted = patch.face_of(triangle.replaced)?;
-        let beyond_kept = patch.face_of(patch.twin(triangle.kept)?)?;
-        if beyond_deleted == beyond_kept {
-            return Err(Refusal::MergedEdge {
-                action,
-                a,
-                b: triangle.corner,
-                face: beyond_deleted,
-            });
-        }
-        // Two triangles beyond, on the same three vertices once b is a:
-        // the rest of a tetrahedron.
-        let corners = (
-            third_corner(patch, triangle.replaced)?,
-            third_corner(patch, patch.twin(triangle.kept)?)?,
-        );
-        if let (Some(one), Some(other)) = (beyond_deleted, beyond_kept)
-            && let (Some(p), Some(q)) = corners
-            && p == q
+/// What a collapse of d (a → b) reads before it changes anything.
+struct Collapse {
+    /// The two halves of the edge: d runs a → b, t is its twin.
+    d: Dart,
+    t: Dart,
+    a: VertexId,
+    b: VertexId,
+    /// The faces on d's and t's sides (`None` for the boundary).
+    faces: [Option<FaceId>; 2],
+    /// The triangle on each side, if that side is one.
+    triangles: [Option<Triangle>; 2],
+    name: EdgeName,
+    action: Action,
+}
+
+impl Collapse {
+    /// Reads the edge and the triangles beside it; refuses an edge with
+    /// one face on both sides.
+    fn read<M: Records + ?Sized>(patch: &Patch<'_, M>, edge: EdgeRow) -> Result<Self, Refusal> {
+        let d = patch.edge(edge.0)?;
+        let name = EdgeName(patch.name(d));
+        let t = patch.twin(d)?;
+        let (a, b) = (patch.start(d)?, patch.end(d)?);
+        let faces = [patch.face_of(d)?, patch.face_of(t)?];
+        if let [Some(face), Some(other)] = faces
+            && face == other
         {
-            return Err(Refusal::TooSmall {
-                action,
-                faces: [one.min(other), one.max(other)],
+            return Err(Refusal::SameFaceOnBothSides {
+                operation: Operation::CollapseEdge,
+                edge: name,
+                face,
             });
         }
-    }
-
-    let around_b = patch.ring_from(b, d)?;
-    // A face that passes both a and b (not along the edge) would pass a
-    // twice, as KEF and remove-vertex refuse.
-    let removed: Vec<FaceId> = triangles.iter().flatten().map(|t| t.face).collect();
-    let mut checked: Vec<FaceId> = Vec::new();
-    for &dart in &around_b {
-        let Some(face) = patch.face_of(dart)? else {
-            continue;
-        };
-        if removed.contains(&face) || checked.contains(&face) {
-            continue;
-        }
-        checked.push(face);
-        let mut corners = Vec::new();
-        for side in patch.cycle(dart)? {
-            if side == d || side == t {
+        let mut triangles: [Option<Triangle>; 2] = [None, None];
+        for (slot, side) in triangles.iter_mut().zip([d, t]) {
+            let Some(face) = patch.face_of(side)? else {
+                continue;
+            };
+            if patch.cycle(side)?.len() != 3 {
                 continue;
             }
-            let start = patch.start(side)?;
-            let corner = if start == b { a } else { start };
-            if corners.contains(&corner) {
-                return Err(Refusal::NotSimple {
-                    action,
-                    vertex: corner,
+            let s1 = patch.next(side)?;
+            let s2 = patch.next(s1)?;
+            // On d's side s1 runs b → c; on t's side s2 runs x → b.
+            let (deleted, kept) = if side == d { (s1, s2) } else { (s2, s1) };
+            *slot = Some(Triangle {
+                face,
+                corner: patch.end(s1)?,
+                deleted,
+                kept,
+                replaced: patch.twin(deleted)?,
+            });
+        }
+        Ok(Self {
+            d,
+            t,
+            a,
+            b,
+            faces,
+            triangles,
+            name,
+            action: Action::Collapsing(name),
+        })
+    }
+
+    /// The link condition: the ends share no neighbour but the triangles'
+    /// third corners.
+    fn check_link_condition<M: Records + ?Sized>(
+        &self,
+        patch: &Patch<'_, M>,
+    ) -> Result<(), Refusal> {
+        let corners: Vec<VertexId> = self.triangles.iter().flatten().map(|t| t.corner).collect();
+        let of_b = patch.neighbours(self.b)?;
+        for shared in patch.neighbours(self.a)? {
+            if shared != self.b && of_b.contains(&shared) && !corners.contains(&shared) {
+                return Err(Refusal::LinkCondition {
+                    action: self.action,
+                    edge: self.name,
+                    a: self.a,
+                    b: self.b,
+                    shared,
                 });
             }
-            corners.push(corner);
         }
+        Ok(())
     }
 
-    let a_edge = patch.vertex_row(a)?;
-    let before_d = patch.prev(d)?;
-    let corner_edges: Vec<_> = triangles
-        .iter()
-        .flatten()
-        .map(|tri| patch.vertex_row(tri.corner))
-        .collect::<Result<_, _>>()?;
-    let face_edges: Vec<_> = triangles
-        .iter()
-        .flatten()
-        .map(|tri| {
-            patch
-                .face_of(tri.replaced)?
-                .map(|f| patch.face_dart(f).map(|dart| (f, patch.row(dart))))
-                .transpose()
-        })
-        .collect::<Result<_, _>>()?;
-    let mut side_faces = Vec::new();
-    for (side, face) in [d, t].into_iter().zip(faces) {
-        if let Some(face) = face
-            && patch.cycle(side)?.len() > 3
+    /// Two boundary vertices joined by an inner edge would pinch the
+    /// boundary into one vertex.
+    fn check_boundary<M: Records + ?Sized>(&self, patch: &Patch<'_, M>) -> Result<(), Refusal> {
+        if self.faces.iter().all(Option::is_some)
+            && patch.on_boundary(self.a)?
+            && patch.on_boundary(self.b)?
         {
-            side_faces.push((face, patch.row(patch.face_dart(face)?), patch.next(side)?));
+            return Err(Refusal::BoundaryPinch {
+                action: self.action,
+                edge: self.name,
+                a: self.a,
+                b: self.b,
+            });
         }
+        Ok(())
     }
-    let gone: Vec<Dart> = triangles
-        .iter()
-        .flatten()
-        .flat_map(|tri| [tri.deleted, tri.replaced])
-        .chain([d, t])
-        .collect();
 
-    for (side, triangle) in [d, t].into_iter().zip(&triangles) {
-        match triangle {
-            Some(tri) => {
-                let (before, after) = (patch.prev(tri.replaced)?, patch.next(tri.replaced)?);
-                patch.set_face(tri.kept, patch.face_of(tri.replaced)?);
-                patch.set_next(before, tri.kept);
-                patch.set_next(tri.kept, after);
+    /// Each triangle's two remaining edges become one: refused when that
+    /// edge would have one face (or none) on both sides, or when what is
+    /// left beyond it is the rest of a tetrahedron.
+    fn check_edges_beyond<M: Records + ?Sized>(&self, patch: &Patch<'_, M>) -> Result<(), Refusal> {
+        for triangle in self.triangles.iter().flatten() {
+            let beyond_deleted = patch.face_of(triangle.replaced)?;
+            let beyond_kept = patch.face_of(patch.twin(triangle.kept)?)?;
+            if beyond_deleted == beyond_kept {
+                return Err(Refusal::MergedEdge {
+                    action: self.action,
+                    a: self.a,
+                    b: triangle.corner,
+                    face: beyond_deleted,
+                });
             }
-            None => {
-                let (before, after) = (patch.prev(side)?, patch.next(side)?);
-                patch.set_next(before, after);
+            // Two triangles beyond, on the same three vertices once b is a:
+            // the rest of a tetrahedron.
+            let corners = (
+                third_corner(patch, triangle.replaced)?,
+                third_corner(patch, patch.twin(triangle.kept)?)?,
+            );
+            if let (Some(one), Some(other)) = (beyond_deleted, beyond_kept)
+                && let (Some(p), Some(q)) = corners
+                && p == q
+            {
+                return Err(Refusal::TooSmall {
+                    action: self.action,
+                    faces: [one.min(other), one.max(other)],
+                });
             }
         }
+        Ok(())
     }
-    for &dart in &around_b {
-        if !gone.contains(&dart) {
-            patch.set_end(dart, a);
+
+    /// A face that passes both a and b (not along the edge) would pass a
+    /// twice, as KEF and remove-vertex refuse. `around_b`: every dart that
+    /// ends at b, in turn from d.
+    fn check_faces_stay_simple<M: Records + ?Sized>(
+        &self,
+        patch: &Patch<'_, M>,
+        around_b: &[Dart],
+    ) -> Result<(), Refusal> {
+        let removed: Vec<FaceId> = self.triangles.iter().flatten().map(|t| t.face).collect();
+        let mut checked: Vec<FaceId> = Vec::new();
+        for &dart in around_b {
+            let Some(face) = patch.face_of(dart)? else {
+                continue;
+            };
+            if removed.contains(&face) || checked.contains(&face) {
+                continue;
+            }
+            checked.push(face);
+            let mut corners = Vec::new();
+            for side in patch.cycle(dart)? {
+                if side == self.d || side == self.t {
+                    continue;
+                }
+                let start = patch.start(side)?;
+                let corner = if start == self.b { self.a } else { start };
+                if corners.contains(&corner) {
+                    return Err(Refusal::NotSimple {
+                        action: self.action,
+                        vertex: corner,
+                    });
+                }
+                corners.push(corner);
+            }
         }
+        Ok(())
     }
-    let middle = (patch.position(a)? + patch.position(b)?) / 2.0;
-    patch.set_position(a, middle);
-    if a_edge == Some(patch.row(t)) {
-        patch.set_vertex_dart(a, before_d);
-    }
-    let replacement = |dart: Dart| {
-        triangles
+
+    /// The writes and deletions, in the order [`collapse_edge`] lists them.
+    fn write<M: Records + ?Sized>(
+        self,
+        patch: &mut Patch<'_, M>,
+        around_b: &[Dart],
+    ) -> Result<(), Refusal> {
+        let Self {
+            d,
+            t,
+            a,
+            b,
+            faces,
+            triangles,
+            ..
+        } = self;
+        // The incident edges as they were, to decide which must move.
+        let a_edge = patch.vertex_row(a)?;
+        let before_d = patch.prev(d)?;
+        let corner_edges: Vec<_> = triangles
             .iter()
             .flatten()
-            .find(|tri| tri.replaced == dart)
-            .map_or(dart, |tri| tri.kept)
-    };
-    for ((tri, corner_edge), face_edge) in
-        triangles.iter().flatten().zip(corner_edges).zip(face_edges)
-    {
-        if corner_edge
-            .is_some_and(|row| row == patch.row(tri.deleted) || row == patch.row(tri.replaced))
-        {
-            // The kept edge's dart that ends at the corner.
-            let twin = patch.twin(tri.kept)?;
-            let at_corner = if patch.end(tri.kept)? == tri.corner {
-                tri.kept
-            } else {
-                twin
-            };
-            patch.set_vertex_dart(tri.corner, at_corner);
+            .map(|tri| patch.vertex_row(tri.corner))
+            .collect::<Result<_, _>>()?;
+        let face_edges: Vec<_> = triangles
+            .iter()
+            .flatten()
+            .map(|tri| {
+                patch
+                    .face_of(tri.replaced)?
+                    .map(|f| patch.face_dart(f).map(|dart| (f, patch.row(dart))))
+                    .transpose()
+            })
+            .collect::<Result<_, _>>()?;
+        let mut side_faces = Vec::new();
+        for (side, face) in [d, t].into_iter().zip(faces) {
+            if let Some(face) = face
+                && patch.cycle(side)?.len() > 3
+            {
+                side_faces.push((face, patch.row(patch.face_dart(face)?), patch.next(side)?));
+            }
         }
-        if let Some((face, row)) = face_edge
-            && (row == patch.row(tri.deleted) || row == patch.row(tri.replaced))
-        {
-            patch.set_face_dart(face, tri.kept);
-        }
-    }
-    for (face, row, after) in side_faces {
-        if row == patch.row(d) || row == patch.row(t) {
-            patch.set_face_dart(face, replacement(after));
-        }
-    }
+        let gone: Vec<Dart> = triangles
+            .iter()
+            .flatten()
+            .flat_map(|tri| [tri.deleted, tri.replaced])
+            .chain([d, t])
+            .collect();
 
-    patch.delete_edge(d)?;
-    for tri in triangles.iter().flatten() {
-        patch.delete_edge(tri.deleted)?;
-        patch.delete_face(tri.face);
+        // 1. Each side: the triangle's kept dart replaces the twin of its
+        // deleted one, or the cycle skips the edge.
+        for (side, triangle) in [d, t].into_iter().zip(&triangles) {
+            match triangle {
+                Some(tri) => {
+                    let (before, after) = (patch.prev(tri.replaced)?, patch.next(tri.replaced)?);
+                    patch.set_face(tri.kept, patch.face_of(tri.replaced)?);
+                    patch.set_next(before, tri.kept);
+                    patch.set_next(tri.kept, after);
+                }
+                None => {
+                    let (before, after) = (patch.prev(side)?, patch.next(side)?);
+                    patch.set_next(before, after);
+                }
+            }
+        }
+        // 2. and 3. What ended at b ends at a, which moves to the middle.
+        for &dart in around_b {
+            if !gone.contains(&dart) {
+                patch.set_end(dart, a);
+            }
+        }
+        let middle = (patch.position(a)? + patch.position(b)?) / 2.0;
+        patch.set_position(a, middle);
+        // 4. The incident edges that named a deleted edge.
+        if a_edge == Some(patch.row(t)) {
+            patch.set_vertex_dart(a, before_d);
+        }
+        let replacement = |dart: Dart| {
+            triangles
+                .iter()
+                .flatten()
+                .find(|tri| tri.replaced == dart)
+                .map_or(dart, |tri| tri.kept)
+        };
+        for ((tri, corner_edge), face_edge) in
+            triangles.iter().flatten().zip(corner_edges).zip(face_edges)
+        {
+            if corner_edge
+                .is_some_and(|row| row == patch.row(tri.deleted) || row == patch.row(tri.replaced))
+            {
+                // The kept edge's dart that ends at the corner.
+                let twin = patch.twin(tri.kept)?;
+                let at_corner = if patch.end(tri.kept)? == tri.corner {
+                    tri.kept
+                } else {
+                    twin
+                };
+                patch.set_vertex_dart(tri.corner, at_corner);
+            }
+            if let Some((face, row)) = face_edge
+                && (row == patch.row(tri.deleted) || row == patch.row(tri.replaced))
+            {
+                patch.set_face_dart(face, tri.kept);
+            }
+        }
+        for (face, row, after) in side_faces {
+            if row == patch.row(d) || row == patch.row(t) {
+                patch.set_face_dart(face, replacement(after));
+            }
+        }
+
+        patch.delete_edge(d)?;
+        for tri in triangles.iter().flatten() {
+            patch.delete_edge(tri.deleted)?;
+            patch.delete_face(tri.face);
+        }
+        patch.delete_vertex(b);
+        Ok(())
     }
-    patch.delete_vertex(b);
-    Ok(())
 }
 
 /// The corner of a triangle that `dart` does not touch, or `None` when
