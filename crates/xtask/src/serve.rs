@@ -250,6 +250,19 @@ mod tests {
         );
     }
 
+    /// A fresh folder `edgewise-serve-NAME-PID` holding `files`, served on
+    /// a free port.
+    fn serve_files(name: &str, files: &[(&str, &str)]) -> (PathBuf, SocketAddr) {
+        let dist =
+            std::env::temp_dir().join(format!("edgewise-serve-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dist).unwrap();
+        for (file, contents) in files {
+            std::fs::write(dist.join(file), contents).unwrap();
+        }
+        let addr = serve_in_background(&dist).unwrap();
+        (dist, addr)
+    }
+
     /// A raw HTTP/1.0 request; the whole response.
     fn get(addr: SocketAddr, path: &str, accept: &str) -> String {
         use std::io::{Read as _, Write as _};
@@ -268,10 +281,7 @@ mod tests {
     /// another client's request.
     #[test]
     fn idle_connections_do_not_hold_up_a_new_one() {
-        let dist = std::env::temp_dir().join(format!("edgewise-serve-idle-{}", std::process::id()));
-        std::fs::create_dir_all(&dist).unwrap();
-        std::fs::write(dist.join("index.html"), "page").unwrap();
-        let addr = serve_in_background(&dist).unwrap();
+        let (dist, addr) = serve_files("idle", &[("index.html", "page")]);
         let idle: Vec<_> = (0..16).map(|_| TcpStream::connect(addr).unwrap()).collect();
         let page = get(addr, "/", "identity");
         assert!(page.starts_with("HTTP/1.1 200 OK"), "{page}");
@@ -285,11 +295,7 @@ mod tests {
     #[test]
     fn a_kept_alive_connection_answers_in_turn() {
         use std::io::{Read as _, Write as _};
-        let dist = std::env::temp_dir().join(format!("edgewise-serve-keep-{}", std::process::id()));
-        std::fs::create_dir_all(&dist).unwrap();
-        std::fs::write(dist.join("a.txt"), "first").unwrap();
-        std::fs::write(dist.join("b.txt"), "second").unwrap();
-        let addr = serve_in_background(&dist).unwrap();
+        let (dist, addr) = serve_files("keep", &[("a.txt", "first"), ("b.txt", "second")]);
         let mut stream = TcpStream::connect(addr).unwrap();
         write!(
             stream,
@@ -319,9 +325,7 @@ mod tests {
     #[test]
     fn an_endless_head_is_cut_off() {
         use std::io::{Read as _, Write as _};
-        let dist = std::env::temp_dir().join(format!("edgewise-serve-head-{}", std::process::id()));
-        std::fs::create_dir_all(&dist).unwrap();
-        let addr = serve_in_background(&dist).unwrap();
+        let (dist, addr) = serve_files("head", &[]);
         let mut stream = TcpStream::connect(addr).unwrap();
         write!(stream, "GET / HTTP/1.1\r\n").unwrap();
         let header = format!("X-Long: {}\r\n", "a".repeat(1024));
@@ -343,11 +347,7 @@ mod tests {
 
     #[test]
     fn the_precompressed_copy_goes_to_clients_that_take_gzip() {
-        let dist = std::env::temp_dir().join(format!("edgewise-serve-gz-{}", std::process::id()));
-        std::fs::create_dir_all(&dist).unwrap();
-        std::fs::write(dist.join("app.js"), "plain").unwrap();
-        std::fs::write(dist.join("app.js.gz"), "GZIPPED").unwrap();
-        let addr = serve_in_background(&dist).unwrap();
+        let (dist, addr) = serve_files("gz", &[("app.js", "plain"), ("app.js.gz", "GZIPPED")]);
         let gzipped = get(addr, "/app.js", "gzip, deflate, br");
         assert!(
             gzipped
