@@ -106,16 +106,95 @@ impl<'a> CodeEditor<'a> {
         EditorOutput { response, refused }
     }
 
-    fn contents_ui(self, ui: &mut egui::Ui) -> egui::Response {
-        let Self {
-            id_salt,
-            text,
-            diagnostics,
-            highlighter,
-            hint,
-            rows,
-            max_bytes: _,
-        } = self;
+    fn contents_ui(mut self, ui: &mut egui::Ui) -> egui::Response {
+        let look = Look::of(ui, self.text);
+        let by_line = messages_by_line(self.diagnostics);
+        // The frame, gutter and tints go behind the text: reserve their slot now.
+        let background = ui.painter().add(Shape::Noop);
+        let field = self.field_ui(ui, &look, &by_line);
+        paint_background(ui, background, &field, &look, &by_line, self.id_salt);
+        // Line numbers, underlines and messages over the text.
+        paint_line_numbers(ui, &field, &look, &by_line);
+        paint_underlines(ui.painter(), &field, &look, self.text, self.diagnostics);
+        messages_ui(ui, &field, &look, self.text, &by_line);
+        field.response
+    }
+
+    /// The gutter's room and the text field, laid out with room made under
+    /// each line that has a message.
+    fn field_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        look: &Look,
+        by_line: &BTreeMap<usize, String>,
+    ) -> Field {
+        let highlighter = self.highlighter;
+        ui.horizontal_top(|ui| {
+            ui.spacing_mut().item_spacing.x = 0.0;
+            let (gutter, _) =
+                ui.allocate_exact_size(egui::vec2(look.gutter_width, 0.0), Sense::hover());
+            let mut layouter = |ui: &egui::Ui, buffer: &dyn egui::TextBuffer, wrap: f32| {
+                let text = buffer.as_str();
+                let mut job = match highlighter {
+                    Some(highlight) => highlight(ui.style(), text),
+                    None => LayoutJob::single_section(
+                        text.to_owned(),
+                        TextFormat::simple(look.code_font.clone(), ui.visuals().text_color()),
+                    ),
+                };
+                job.wrap.max_width = wrap;
+                for (line, message) in by_line {
+                    let height = ui.fonts_mut(|f| {
+                        f.layout(
+                            message.clone(),
+                            look.message_font.clone(),
+                            look.error,
+                            (wrap - look.message_indent).max(40.0),
+                        )
+                        .size()
+                        .y
+                    });
+                    make_room_under(&mut job, text, *line, height + 4.0);
+                }
+                ui.fonts_mut(|f| f.layout_job(job))
+            };
+            let output = egui::TextEdit::multiline(&mut *self.text)
+                .id_salt(self.id_salt)
+                .font(look.code_font.clone())
+                .code_editor()
+                .frame(egui::Frame::NONE)
+                .margin(egui::Margin::symmetric(4, 2))
+                .desired_width(f32::INFINITY)
+                .desired_rows(self.rows)
+                .hint_text(self.hint)
+                .layouter(&mut layouter)
+                .show(ui);
+            Field {
+                lines: place_lines(&output.galley, output.galley_pos, look.row_height),
+                gutter: Rect::from_x_y_ranges(gutter.x_range(), output.response.rect.y_range()),
+                text_rect: output.response.rect,
+                response: output.response.response,
+            }
+        })
+        .inner
+    }
+}
+
+/// The fonts, colours and sizes the editor draws with.
+struct Look {
+    code_font: FontId,
+    message_font: FontId,
+    row_height: f32,
+    error: Color32,
+    /// A message's text on its tinted band.
+    message_colour: Color32,
+    gutter_width: f32,
+    /// How far a message sits right of the text's left edge.
+    message_indent: f32,
+}
+
+impl Look {
+    fn of(ui: &egui::Ui, text: &str) -> Self {
         let code_font = egui::TextStyle::Monospace.resolve(ui.style());
         let message_font = FontId::proportional(code_font.size);
         let (row_height, digit_width) =
@@ -128,182 +207,192 @@ impl<'a> CodeEditor<'a> {
         } else {
             error.lerp_to_gamma(Color32::BLACK, 0.2)
         };
-        let by_line = messages_by_line(diagnostics);
-
         let line_count = text.split('\n').count();
         let digits = line_count.max(10).ilog10() as f32 + 1.0;
-        let gutter_width = digits * digit_width + 2.0 * GUTTER_PAD;
-        let message_indent = 2.0 * digit_width;
-
-        // The frame, gutter and tints go behind the text: reserve their slot now.
-        let background = ui.painter().add(Shape::Noop);
-        let (response, placed) = ui
-            .horizontal_top(|ui| {
-                ui.spacing_mut().item_spacing.x = 0.0;
-                let (gutter, _) =
-                    ui.allocate_exact_size(egui::vec2(gutter_width, 0.0), Sense::hover());
-                let mut layouter = |ui: &egui::Ui, buffer: &dyn egui::TextBuffer, wrap: f32| {
-                    let text = buffer.as_str();
-                    let mut job = match highlighter {
-                        Some(highlight) => highlight(ui.style(), text),
-                        None => LayoutJob::single_section(
-                            text.to_owned(),
-                            TextFormat::simple(code_font.clone(), ui.visuals().text_color()),
-                        ),
-                    };
-                    job.wrap.max_width = wrap;
-                    for (line, message) in &by_line {
-                        let height = ui.fonts_mut(|f| {
-                            f.layout(
-                                message.clone(),
-                                message_font.clone(),
-                                error,
-                                (wrap - message_indent).max(40.0),
-                            )
-                            .size()
-                            .y
-                        });
-                        make_room_under(&mut job, text, *line, height + 4.0);
-                    }
-                    ui.fonts_mut(|f| f.layout_job(job))
-                };
-                let output = egui::TextEdit::multiline(text)
-                    .id_salt(id_salt)
-                    .font(code_font.clone())
-                    .code_editor()
-                    .frame(egui::Frame::NONE)
-                    .margin(egui::Margin::symmetric(4, 2))
-                    .desired_width(f32::INFINITY)
-                    .desired_rows(rows)
-                    .hint_text(hint)
-                    .layouter(&mut layouter)
-                    .show(ui);
-                let placed = place_lines(&output.galley, output.galley_pos, row_height);
-                let gutter =
-                    Rect::from_x_y_ranges(gutter.x_range(), output.response.rect.y_range());
-                let text_rect = output.response.rect;
-                (output.response.response, (placed, gutter, text_rect))
-            })
-            .inner;
-        let (lines, gutter, text_rect) = placed;
-        let whole = gutter.union(text_rect);
-
-        // The frame, gutter, tints and markers.
-        let visuals = ui.visuals().clone();
-        let mut shapes = vec![
-            Shape::rect_filled(
-                whole,
-                visuals.widgets.inactive.corner_radius,
-                visuals.extreme_bg_color,
-            ),
-            Shape::rect_filled(gutter, 0.0, visuals.faint_bg_color),
-        ];
-        for (&line, message) in &by_line {
-            let Some(placed) = lines.get(line - 1) else {
-                continue;
-            };
-            let band = Rect::from_x_y_ranges(whole.x_range(), placed.rows.clone());
-            shapes.push(Shape::rect_filled(band, 0.0, error.gamma_multiply(0.14)));
-            let marker = Rect::from_x_y_ranges(
-                gutter.left() + 2.0..=gutter.right() - 2.0,
-                placed.top..=placed.top + row_height,
-            );
-            shapes.push(Shape::rect_filled(marker, 3.0, error));
-            ui.interact(
-                marker,
-                ui.scope_id().with((id_salt, "marker", line)),
-                Sense::hover(),
-            )
-            .on_hover_text(message.as_str());
+        Self {
+            code_font,
+            message_font,
+            row_height,
+            error,
+            message_colour,
+            gutter_width: digits * digit_width + 2.0 * GUTTER_PAD,
+            message_indent: 2.0 * digit_width,
         }
-        let stroke = if response.has_focus() {
-            visuals.selection.stroke
-        } else {
-            visuals.widgets.inactive.bg_stroke
-        };
-        shapes.push(Shape::rect_stroke(
+    }
+}
+
+/// What the text field drew, for the layers behind and over it.
+struct Field {
+    response: egui::Response,
+    lines: Vec<PlacedLine>,
+    gutter: Rect,
+    text_rect: Rect,
+}
+
+impl Field {
+    /// The gutter and the text together.
+    fn whole(&self) -> Rect {
+        self.gutter.union(self.text_rect)
+    }
+}
+
+/// Behind the text: the frame, the gutter, each message's tinted band and
+/// its gutter marker (hover for the message).
+fn paint_background(
+    ui: &egui::Ui,
+    slot: egui::layers::ShapeIdx,
+    field: &Field,
+    look: &Look,
+    by_line: &BTreeMap<usize, String>,
+    id_salt: &str,
+) {
+    let visuals = ui.visuals();
+    let whole = field.whole();
+    let mut shapes = vec![
+        Shape::rect_filled(
             whole,
             visuals.widgets.inactive.corner_radius,
-            stroke,
-            egui::StrokeKind::Inside,
+            visuals.extreme_bg_color,
+        ),
+        Shape::rect_filled(field.gutter, 0.0, visuals.faint_bg_color),
+    ];
+    for (&line, message) in by_line {
+        let Some(placed) = field.lines.get(line - 1) else {
+            continue;
+        };
+        let band = Rect::from_x_y_ranges(whole.x_range(), placed.rows.clone());
+        shapes.push(Shape::rect_filled(
+            band,
+            0.0,
+            look.error.gamma_multiply(0.14),
         ));
-        ui.painter().set(background, Shape::Vec(shapes));
+        let marker = Rect::from_x_y_ranges(
+            field.gutter.left() + 2.0..=field.gutter.right() - 2.0,
+            placed.top..=placed.top + look.row_height,
+        );
+        shapes.push(Shape::rect_filled(marker, 3.0, look.error));
+        ui.interact(
+            marker,
+            ui.scope_id().with((id_salt, "marker", line)),
+            Sense::hover(),
+        )
+        .on_hover_text(message.as_str());
+    }
+    let stroke = if field.response.has_focus() {
+        visuals.selection.stroke
+    } else {
+        visuals.widgets.inactive.bg_stroke
+    };
+    shapes.push(Shape::rect_stroke(
+        whole,
+        visuals.widgets.inactive.corner_radius,
+        stroke,
+        egui::StrokeKind::Inside,
+    ));
+    ui.painter().set(slot, Shape::Vec(shapes));
+}
 
-        // Line numbers, underlines and messages over the text.
-        let painter = ui.painter();
-        for (i, placed) in lines.iter().enumerate() {
-            let line = i + 1;
-            let colour = if by_line.contains_key(&line) {
-                Color32::WHITE
-            } else {
-                visuals.weak_text_color()
-            };
-            painter.text(
-                Pos2::new(gutter.right() - GUTTER_PAD, placed.top),
-                egui::Align2::RIGHT_TOP,
-                line.to_string(),
-                code_font.clone(),
-                colour,
+/// The line numbers, in white on the lines with a message.
+fn paint_line_numbers(
+    ui: &egui::Ui,
+    field: &Field,
+    look: &Look,
+    by_line: &BTreeMap<usize, String>,
+) {
+    let painter = ui.painter();
+    let weak = ui.visuals().weak_text_color();
+    for (i, placed) in field.lines.iter().enumerate() {
+        let line = i + 1;
+        let colour = if by_line.contains_key(&line) {
+            Color32::WHITE
+        } else {
+            weak
+        };
+        painter.text(
+            Pos2::new(field.gutter.right() - GUTTER_PAD, placed.top),
+            egui::Align2::RIGHT_TOP,
+            line.to_string(),
+            look.code_font.clone(),
+            colour,
+        );
+    }
+}
+
+/// A wavy line under the field each diagnostic with a column names.
+fn paint_underlines(
+    painter: &egui::Painter,
+    field: &Field,
+    look: &Look,
+    text: &str,
+    diagnostics: &[Diagnostic],
+) {
+    for diagnostic in diagnostics {
+        let Some(placed) = field.lines.get(diagnostic.line.wrapping_sub(1)) else {
+            continue;
+        };
+        let Some(span) = diagnostic.column.and_then(|column| {
+            line_range(text, diagnostic.line).and_then(|range| field_at(&text[range], column))
+        }) else {
+            continue;
+        };
+        let at = |chars: usize| {
+            placed
+                .galley
+                .pos_from_cursor(CCursor::new(placed.first_char + chars))
+                .translate(placed.galley_pos.to_vec2())
+        };
+        let (start, end) = (at(span.start), at(span.end));
+        // Under the field's first row; at least a few pixels wide for an
+        // empty field.
+        let right = if end.top() == start.top() {
+            end.left()
+        } else {
+            field.text_rect.right()
+        };
+        let (left, right) = (start.left(), right.max(start.left() + 6.0));
+        let y = start.top() + look.row_height + 0.5;
+        painter.add(wavy_line(left, right, y, Stroke::new(1.5, look.error)));
+    }
+}
+
+/// Each line's messages, in the room made under it, or after its one word.
+fn messages_ui(
+    ui: &mut egui::Ui,
+    field: &Field,
+    look: &Look,
+    text: &str,
+    by_line: &BTreeMap<usize, String>,
+) {
+    for (&line, message) in by_line {
+        let Some(placed) = field.lines.get(line - 1) else {
+            continue;
+        };
+        let label = egui::Label::new(
+            egui::RichText::new(message.as_str())
+                .font(look.message_font.clone())
+                .color(look.message_colour),
+        )
+        .selectable(false);
+        let text_rect = field.text_rect;
+        if has_blank(text, line) {
+            // In the room made under the line.
+            let rect = Rect::from_min_max(
+                Pos2::new(
+                    text_rect.left() + look.message_indent,
+                    placed.top + look.row_height + 1.0,
+                ),
+                Pos2::new(text_rect.right() - 4.0, placed.message_bottom),
             );
+            put_left(ui, rect, label.wrap());
+        } else {
+            // A line of one word has no room under it: the message follows
+            // the word, shortened if need be (hover shows it all).
+            let rect = Rect::from_min_max(
+                Pos2::new(placed.right + look.message_indent, placed.top),
+                Pos2::new(text_rect.right() - 4.0, placed.top + look.row_height),
+            );
+            put_left(ui, rect, label.truncate());
         }
-        for diagnostic in diagnostics {
-            let Some(placed) = lines.get(diagnostic.line.wrapping_sub(1)) else {
-                continue;
-            };
-            if let Some(column) = diagnostic.column
-                && let Some(span) = line_range(text, diagnostic.line)
-                    .and_then(|range| field_at(&text[range], column))
-            {
-                let at = |chars: usize| {
-                    placed
-                        .galley
-                        .pos_from_cursor(CCursor::new(placed.first_char + chars))
-                        .translate(placed.galley_pos.to_vec2())
-                };
-                let (start, end) = (at(span.start), at(span.end));
-                // Under the field's first row; at least a few pixels wide
-                // for an empty field.
-                let right = if end.top() == start.top() {
-                    end.left()
-                } else {
-                    text_rect.right()
-                };
-                let (left, right) = (start.left(), right.max(start.left() + 6.0));
-                let y = start.top() + row_height + 0.5;
-                painter.add(wavy_line(left, right, y, Stroke::new(1.5, error)));
-            }
-        }
-        for (&line, message) in &by_line {
-            let Some(placed) = lines.get(line - 1) else {
-                continue;
-            };
-            let label = egui::Label::new(
-                egui::RichText::new(message.as_str())
-                    .font(message_font.clone())
-                    .color(message_colour),
-            )
-            .selectable(false);
-            if has_blank(text, line) {
-                // In the room made under the line.
-                let rect = Rect::from_min_max(
-                    Pos2::new(
-                        text_rect.left() + message_indent,
-                        placed.top + row_height + 1.0,
-                    ),
-                    Pos2::new(text_rect.right() - 4.0, placed.message_bottom),
-                );
-                put_left(ui, rect, label.wrap());
-            } else {
-                // A line of one word has no room under it: the message
-                // follows the word, shortened if need be (hover shows it all).
-                let rect = Rect::from_min_max(
-                    Pos2::new(placed.right + message_indent, placed.top),
-                    Pos2::new(text_rect.right() - 4.0, placed.top + row_height),
-                );
-                put_left(ui, rect, label.truncate());
-            }
-        }
-        response
     }
 }
 
