@@ -144,6 +144,11 @@ fn wasm_opt(root: &Path) -> anyhow::Result<PathBuf> {
 
 /// Optimises the bindgen'd wasm for size with wasm-opt; without node and
 /// npm the build goes on, larger.
+///
+/// wasm-opt gives the same output for the same input, and it was most of a
+/// build whose wasm had not changed (about 80 s of the 100 that a restart of
+/// `serve` took), so its last output is kept under target/tools, named by a
+/// hash of its input and options, and reused for that input.
 fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
     let program = match wasm_opt(root) {
         Ok(program) => program,
@@ -152,11 +157,24 @@ fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
             return Ok(());
         }
     };
-    let before = std::fs::metadata(wasm).map(|m| m.len()).unwrap_or(0);
-    eprintln!("==> wasm-opt -Oz");
+    let input = std::fs::read(wasm).with_context(|| format!("cannot read {}", wasm.display()))?;
+    let mut key = Fnv1a::default();
+    for option in [BINARYEN, WASM_OPT_LEVEL].iter().chain(&WASM_FEATURES) {
+        key.write(option.as_bytes());
+        key.write(&[0]);
+    }
+    key.write(&input);
+    let kept_dir = target_dir(root).join("tools/wasm-opt-output");
+    let kept = kept_dir.join(format!("{:016x}.wasm", key.0));
+    if kept.is_file() {
+        copy_file(&kept, wasm)?;
+        eprintln!("==> wasm-opt: the input is unchanged, so its last output is reused");
+        return Ok(());
+    }
+    eprintln!("==> wasm-opt {WASM_OPT_LEVEL}");
     let mut cmd = std::process::Command::new("node");
     cmd.arg(&program)
-        .arg("-Oz")
+        .arg(WASM_OPT_LEVEL)
         .args(WASM_FEATURES)
         .arg(wasm)
         .arg("-o")
@@ -165,11 +183,24 @@ fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
     let after = std::fs::metadata(wasm).map(|m| m.len()).unwrap_or(0);
     eprintln!(
         "==> wasm-opt: {:.1} MB -> {:.1} MB",
-        before as f64 / 1e6,
+        input.len() as f64 / 1e6,
         after as f64 / 1e6
     );
-    Ok(())
+    // Only the latest output is kept.
+    if kept_dir.exists() {
+        std::fs::remove_dir_all(&kept_dir)
+            .with_context(|| format!("cannot clear {}", kept_dir.display()))?;
+    }
+    std::fs::create_dir_all(&kept_dir)?;
+    // Copied whole before it takes its name: a build stopped halfway leaves
+    // no partial output to be reused.
+    let partial = kept.with_extension("partial");
+    copy_file(wasm, &partial)?;
+    rename(&partial, &kept)
 }
+
+/// wasm-opt's optimisation: for size.
+const WASM_OPT_LEVEL: &str = "-Oz";
 
 /// Files worth compressing for the wire.
 fn compressible(path: &Path) -> bool {
