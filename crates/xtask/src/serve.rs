@@ -75,11 +75,18 @@ struct Request {
     keep_alive: bool,
 }
 
+impl Request {
+    /// Whether the method is one a file server answers (GET or HEAD).
+    fn reads_a_file(&self) -> bool {
+        self.method == "GET" || self.method == "HEAD"
+    }
+}
+
 /// Reads one request's head; `None` at the end of the stream, after
 /// [`IDLE`], or for a head that is not HTTP or is longer than [`MAX_HEAD`].
 fn read_request(reader: &mut impl BufRead) -> Option<Request> {
     let mut line = String::new();
-    let mut read = reader.read_line(&mut line).ok()?;
+    let mut read = read_line_within(reader, &mut line, MAX_HEAD)?;
     let mut words = line.split_whitespace();
     let (method, target, version) = (words.next()?, words.next()?, words.next()?);
     let mut request = Request {
@@ -91,14 +98,11 @@ fn read_request(reader: &mut impl BufRead) -> Option<Request> {
     };
     loop {
         line.clear();
-        read += reader.read_line(&mut line).ok()?;
-        if read > MAX_HEAD {
-            return None;
-        }
+        read += read_line_within(reader, &mut line, MAX_HEAD - read)?;
         let header = line.trim_end();
         if header.is_empty() {
             // A body is never read, so the connection cannot carry on.
-            if request.method != "GET" && request.method != "HEAD" {
+            if !request.reads_a_file() {
                 request.keep_alive = false;
             }
             return Some(request);
@@ -117,10 +121,21 @@ fn read_request(reader: &mut impl BufRead) -> Option<Request> {
     }
 }
 
+/// Reads one line of at most `limit` bytes into `line`, returning its
+/// length (0 at the end of the stream); `None` on an error or timeout, and
+/// for a longer line, which is not read whole: a head with no line break
+/// must not fill the memory.
+fn read_line_within(reader: &mut impl BufRead, line: &mut String, limit: usize) -> Option<usize> {
+    let read = std::io::Read::take(&mut *reader, limit as u64 + 1)
+        .read_line(line)
+        .ok()?;
+    (read <= limit).then_some(read)
+}
+
 /// Writes the answer to `request`: the file, its precompressed copy where
 /// the client takes gzip and the build made one, or an error status.
 fn respond(writer: &mut impl Write, request: &Request, dist: &Path) -> std::io::Result<()> {
-    if request.method != "GET" && request.method != "HEAD" {
+    if !request.reads_a_file() {
         return write_response(
             writer,
             request,
@@ -335,6 +350,25 @@ mod tests {
                 break;
             }
         }
+        let mut response = Vec::new();
+        stream.read_to_end(&mut response).ok();
+        assert!(
+            response.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&response)
+        );
+        std::fs::remove_dir_all(&dist).ok();
+    }
+
+    /// So is a head line with no line break, before it is read whole.
+    #[test]
+    fn an_endless_line_is_cut_off() {
+        use std::io::{Read as _, Write as _};
+        let (dist, addr) = serve_files("line", &[]);
+        let mut stream = TcpStream::connect(addr).unwrap();
+        let line = format!("GET /{}", "a".repeat(4 * MAX_HEAD));
+        // The server closes the connection partway; the write may fail.
+        stream.write_all(line.as_bytes()).ok();
         let mut response = Vec::new();
         stream.read_to_end(&mut response).ok();
         assert!(
