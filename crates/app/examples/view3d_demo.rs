@@ -6,9 +6,10 @@
 
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use edgewise_core::schema::{ElementKind, ElementRef};
-use edgewise_renderer::view3d::{
-    DrawIds, ElementStyle, MeshGeometry, PickFilter, Pointer, SceneStyles, View3d, ViewOptions,
-};
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::options::{DrawIds, PickFilter, ViewOptions};
+use edgewise_pictures::styles::{ElementStyle, Pointer, SceneStyles};
+use edgewise_renderer::view3d::View3d;
 use egui::Color32;
 
 struct Demo {

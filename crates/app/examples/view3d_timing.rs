@@ -12,7 +12,10 @@
 use std::time::{Duration, Instant};
 
 use edgewise_core::mesh::{Mesh, Structure, generate};
-use edgewise_renderer::view3d::{DrawIds, MeshGeometry, SceneStyles, View3d, ViewOptions};
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::options::{DrawIds, ViewOptions};
+use edgewise_pictures::styles::SceneStyles;
+use edgewise_renderer::view3d::View3d;
 use eframe::egui_wgpu::RenderState;
 
 // The render tests' offscreen drawing, so a frame here costs what theirs do.

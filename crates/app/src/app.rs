@@ -28,10 +28,9 @@ use crate::{
     tables::{self, TablesResponse},
     theme::Theme,
 };
-use edgewise_renderer::{
-    ui_cache::{PartTextures, UiCache},
-    view3d::{DrawIds, Pointer, SceneStyles, ViewOptions},
-};
+use edgewise_pictures::options::{DrawIds, ViewOptions};
+use edgewise_pictures::styles::{Pointer, SceneStyles};
+use edgewise_renderer::ui_cache::{PartTextures, UiCache};
 
 pub mod algorithm_ui;
 pub mod course;
@@ -507,7 +506,7 @@ impl EdgewiseApp {
                     kind: p.element.kind,
                     id: p.element.id,
                     role: p.role.clone(),
-                    colour: crate::settings::to_hex(p.colour),
+                    colour: edgewise_pictures::palette::to_hex(p.colour),
                 })
                 .collect(),
             error: self.tab().error.clone(),
@@ -903,7 +902,7 @@ impl EdgewiseApp {
                     .sticky_ui(ui, scrolled.inner_rect, &tab.paint, &mut response);
             }
         };
-        let edge_title = tables::edge_table_title(document.mesh());
+        let edge_title = edgewise_pictures::text_table::edge_table_title(document.mesh());
         let titles = [
             (ElementKind::Face, "Faces"),
             (ElementKind::Edge, edge_title),
@@ -1088,7 +1087,7 @@ impl EdgewiseApp {
         } else {
             self.whole_ui(ui);
         }
-        let ring = edgewise_renderer::view3d::Palette::new(self.theme.dark).hover;
+        let ring = edgewise_pictures::palette::Palette::new(self.theme.dark).hover;
         self.focus_ring.ui(ui.ctx(), ring);
         self.observe_for_embedding(ui.ctx());
         crate::platform::deliver_events(&mut self.embed_events);

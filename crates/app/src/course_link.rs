@@ -20,7 +20,8 @@ use edgewise_core::formats::compact;
 use edgewise_core::mesh::{Polygons, Structure};
 
 use crate::Argument;
-use edgewise_renderer::view3d::{Camera, DrawIds, ViewOptions};
+use edgewise_pictures::camera::Camera;
+use edgewise_pictures::options::{DrawIds, ViewOptions};
 
 /// The most base64 text a fragment payload may hold; longer ones are refused
 /// before decoding, so a huge link cannot stall the page.

@@ -12,7 +12,6 @@ pub mod command;
 pub mod course_link;
 mod document;
 mod embed_event;
-pub mod export;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod history;

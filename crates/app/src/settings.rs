@@ -2,6 +2,7 @@
 //! trace colours. It is kept in the browser's local storage and goes into a
 //! shared link only where it differs from the defaults.
 
+use edgewise_pictures::palette::to_hex;
 use std::collections::BTreeMap;
 
 use egui::Color32;
@@ -112,7 +113,7 @@ impl Settings {
     /// Sets (or, with the view's own colour, clears) the colour of
     /// boundary half-edges.
     pub fn set_boundary_colour(&mut self, colour: Color32) {
-        let default = edgewise_renderer::view3d::Palette::new(self.dark).boundary;
+        let default = edgewise_pictures::palette::Palette::new(self.dark).boundary;
         self.set_key_colour(BOUNDARY, colour, default);
     }
 
@@ -159,12 +160,6 @@ pub fn parse_hex(text: &str) -> Option<Color32> {
     let value = u32::from_str_radix(hex, 16).ok()?;
     let [_, r, g, b] = value.to_be_bytes();
     Some(Color32::from_rgb(r, g, b))
-}
-
-/// `#rrggbb`.
-pub fn to_hex(colour: Color32) -> String {
-    let [r, g, b, _] = colour.to_srgba_unmultiplied();
-    format!("#{r:02x}{g:02x}{b:02x}")
 }
 
 /// Loads the settings saved in this browser, if any (natively, settings

@@ -192,7 +192,7 @@ pub fn table_ui(
 ) -> IdColumn {
     let preview_stroke = egui::Stroke::new(
         1.5,
-        edgewise_renderer::view3d::Palette::new(ui.visuals().dark_mode).hover,
+        edgewise_pictures::palette::Palette::new(ui.visuals().dark_mode).hover,
     );
     ui.spacing_mut().item_spacing.x = CELL_SPACING;
     let least = least_width(ui);
@@ -487,7 +487,7 @@ impl IdColumn {
         };
         let shift = egui::vec2(viewport.left() - header.left(), 0.0);
         // The cleared frame's colour: panels are transparent over it.
-        let fill = edgewise_renderer::view3d::Palette::new(ui.visuals().dark_mode).background;
+        let fill = edgewise_pictures::palette::Palette::new(ui.visuals().dark_mode).background;
         let gap = ui.spacing().item_spacing.y * 0.5;
         let band = |cell: egui::Rect| {
             egui::Rect::from_x_y_ranges(
@@ -682,14 +682,6 @@ fn cell_edit_ui(ui: &mut egui::Ui) -> Option<Result<Option<u32>, String>> {
         ui.data_mut(|d| d.insert_temp(cell_edit_id(), edit));
     }
     result
-}
-
-/// The edge table's title: its rows are edges or half-edges.
-pub fn edge_table_title(mesh: &Mesh) -> &'static str {
-    match mesh {
-        Mesh::Winged(_) => "Edges",
-        Mesh::Half(_) => "Half-edges",
-    }
 }
 
 /// How a row is named to a reader: "half-edge 3" in a half-edge mesh.

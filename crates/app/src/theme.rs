@@ -4,14 +4,14 @@
 use egui::Color32;
 
 use crate::{selection::Role, trace_role::TraceRole};
-use edgewise_renderer::view3d::Palette;
+use edgewise_pictures::palette::Palette;
 
 /// The bold code face for keywords (egui ships only a regular monospace).
 const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
 
 /// What the frame is cleared to: the 3D view's background, which is also
 /// the panels' colour. Panels draw no fill of their own and the app's views
-/// none over the clear ([`edgewise_renderer::view3d::ViewOptions::backdrop_cleared`]):
+/// none over the clear ([`edgewise_pictures::options::ViewOptions::backdrop_cleared`]):
 /// a software renderer pays tens of milliseconds for each full-window fill,
 /// and each pixel is now filled once.
 pub fn backdrop(dark: bool) -> [f32; 4] {

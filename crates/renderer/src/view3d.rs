@@ -18,7 +18,6 @@ mod arrows;
 mod axes;
 mod base_image;
 mod bvh;
-mod camera;
 mod coarse;
 mod faces;
 mod gpu;
@@ -27,29 +26,29 @@ mod motion_proxy;
 mod orientation;
 mod picking;
 mod renderer;
-mod scene;
 mod spheres;
 mod style;
-pub mod vector;
 
 use edgewise_core::schema::{ElementKind, ElementRef};
-use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use egui::{PointerButton, Rect, Sense};
 use glam::Vec3;
-use serde::{Deserialize, Serialize};
 
-pub use camera::{Camera, Ray, ViewTransforms};
 pub use gpu::{DEPTH_BITS, depth_format};
-pub use style::Palette;
 
+use edgewise_pictures::camera::{Camera, ViewTransforms};
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::options::{PickFilter, ViewOptions};
+use edgewise_pictures::palette::Palette;
+use edgewise_pictures::scene::Scene;
+use edgewise_pictures::styles::{ElementStyle, SceneStyles};
+use edgewise_pictures::vector;
 use gpu::FrameUniform;
 use picking::{PickAccel, PickQuery};
 use renderer::{DrawFlags, GeometryUpload, Renderers, StyleUpload, UploadState, ViewCallback};
-use scene::Scene;
 
 /// Edges shorter than this many points on screen (the mean edge, at the
 /// mesh's centre) are drawn as lines, without vertex spheres: arrows that
@@ -60,204 +59,9 @@ pub const COARSE_BELOW_POINTS: f32 = 6.0;
 /// they are cheap at any size.
 pub const COARSE_ABOVE_EDGES: usize = 3_000;
 
-/// The mesh as the view draws it.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct MeshGeometry {
-    pub positions: Vec<Vec3>,
-    /// One per drawn arrow: a winged edge, or a half-edge (then `face` is its
-    /// own face, None on the boundary, and `pair` its pair index so offsets
-    /// go to opposite sides).
-    pub edges: Vec<EdgeGeometry>,
-    /// Each face's vertex ids in CCW (OBJ) order.
-    pub faces: Vec<Vec<u32>>,
-    pub half_edges: bool,
-}
-
-impl MeshGeometry {
-    /// The geometry of a winged-edge or half-edge mesh: one arrow per winged
-    /// edge or per half-edge, numbered like the structure's edge table.
-    pub fn from_mesh(mesh: &edgewise_core::mesh::Mesh) -> Self {
-        use edgewise_core::mesh::{HalfEdgeId, Mesh};
-        let faces = mesh.to_polygons().faces().map(<[u32]>::to_vec).collect();
-        match mesh {
-            Mesh::Winged(winged) => Self {
-                positions: mesh.positions(),
-                edges: winged
-                    .edges()
-                    .iter()
-                    .map(|e| EdgeGeometry {
-                        start: e.start_vertex.raw(),
-                        end: e.end_vertex.raw(),
-                        face: None,
-                        pair: None,
-                    })
-                    .collect(),
-                faces,
-                half_edges: false,
-            },
-            Mesh::Half(half) => Self {
-                positions: mesh.positions(),
-                edges: (0_u32..)
-                    .zip(half.half_edges())
-                    .map(|(h, edge)| EdgeGeometry {
-                        start: half
-                            .start_vertex(HalfEdgeId::new(h))
-                            .map_or(edge.end_vertex.raw(), edgewise_core::mesh::VertexId::raw),
-                        end: edge.end_vertex.raw(),
-                        face: edge.face.map(edgewise_core::mesh::FaceId::raw),
-                        pair: Some(edge.pair_edge.raw()),
-                    })
-                    .collect(),
-                faces,
-                half_edges: true,
-            },
-        }
-    }
-}
-
-/// One drawn arrow.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct EdgeGeometry {
-    pub start: u32,
-    pub end: u32,
-    pub face: Option<u32>,
-    pub pair: Option<u32>,
-}
-
 /// What the view's styles were built for: the styles' generation, the
 /// palette's base colours (line, boundary, face) and the geometry.
 type StylesKey = (u64, (egui::Color32, egui::Color32, egui::Color32), u64);
-
-/// Per-element look: the few elements that have a look of their own, and
-/// whether every other element is faded. Sparse, so that a selection or a
-/// trace step costs what it changes rather than what the mesh holds: the
-/// view patches the styles of the elements whose entries changed.
-/// `generation` increases on every change so the view looks only then.
-#[derive(Clone, Debug, Default)]
-pub struct SceneStyles {
-    pub generation: u64,
-    /// Every element without an entry is drawn faded (a selection or a
-    /// trace with "fade the rest" on).
-    pub fade_others: bool,
-    pub elements: BTreeMap<ElementRef, ElementStyle>,
-    pub pointers: Vec<Pointer>,
-}
-
-impl SceneStyles {
-    /// The look of `element`: its own entry, or the base look.
-    pub fn get(&self, element: ElementRef) -> Cow<'_, ElementStyle> {
-        match self.elements.get(&element) {
-            Some(style) => Cow::Borrowed(style),
-            None => Cow::Owned(self.base()),
-        }
-    }
-
-    /// The look of an element without an entry.
-    pub fn base(&self) -> ElementStyle {
-        ElementStyle {
-            faded: self.fade_others,
-            ..ElementStyle::default()
-        }
-    }
-
-    /// The element's label, if it has one.
-    pub fn label(&self, element: ElementRef) -> Option<&str> {
-        self.elements.get(&element)?.label.as_deref()
-    }
-
-    /// Whether the element is drawn with neither a colour nor a label.
-    pub fn is_plain(&self, element: ElementRef) -> bool {
-        self.elements
-            .get(&element)
-            .is_none_or(|style| !style::is_highlighted(style))
-    }
-}
-
-/// How one element looks.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct ElementStyle {
-    /// None = base colour.
-    pub colour: Option<egui::Color32>,
-    pub faded: bool,
-    /// E.g. "3: Left Predecessor"; None = just the id.
-    pub label: Option<String>,
-}
-
-/// A comparison arrow pointing at an element (the journal draws one per
-/// side; the same element twice gets two).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pointer {
-    pub target: ElementRef,
-    pub colour: egui::Color32,
-}
-
-/// Which elements clicks can pick (an algorithm asking for a face makes only
-/// faces pickable).
-#[derive(Clone, Copy, PartialEq, Eq, Debug, Default, Serialize, Deserialize)]
-pub enum PickFilter {
-    #[default]
-    All,
-    Only(ElementKind),
-}
-
-/// When element ids are drawn.
-#[derive(Clone, Copy, PartialEq, Eq, Debug, Default, Serialize, Deserialize)]
-pub enum DrawIds {
-    /// Only for elements with a highlight or a label.
-    #[default]
-    Highlighted,
-    Always,
-    Never,
-}
-
-/// The view options the user controls.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ViewOptions {
-    pub draw_ids: DrawIds,
-    /// Thickness of vertices and edges (1 = default).
-    pub mesh_scale: f32,
-    /// Size of labels (1 = default).
-    pub label_scale: f32,
-    pub show_axes: bool,
-    pub show_orientation: bool,
-    pub solid_faces: bool,
-    pub pickable: PickFilter,
-    pub dark: bool,
-    /// The user's colour for boundary half-edges, in place of the
-    /// palette's (from the theme, so not saved with the view).
-    #[serde(skip)]
-    pub boundary: Option<egui::Color32>,
-    /// The frame was cleared to the background colour
-    /// ([`Palette::background`]), so the view does not fill it again: each
-    /// full-view fill costs a software renderer tens of milliseconds.
-    pub backdrop_cleared: bool,
-    /// Draw the coarse level of detail from an image kept while the camera,
-    /// the mesh and the colours stay (`base_image.rs`); off redraws it every
-    /// frame, to compare the two.
-    #[serde(skip, default = "on")]
-    pub base_image: bool,
-    /// How many lines and triangles a frame draws of a new mesh's base
-    /// image (see `base_image.rs`).
-    #[serde(skip, default = "base_image_part")]
-    pub base_image_part: u32,
-    /// Draw a large mesh's motion proxy while the camera moves
-    /// (`motion_proxy.rs`); off draws the mesh itself, to compare the two.
-    #[serde(skip, default = "on")]
-    pub motion_proxy: bool,
-}
-
-fn on() -> bool {
-    true
-}
-
-/// Under `SwiftShader` a frame drawing a part of 125k took 150 to 200 ms in
-/// all; 100k keeps such frames well under a quarter second, and
-/// torus-200k's 300k lines and 200k triangles take five.
-const BASE_IMAGE_PART: u32 = 100_000;
-
-fn base_image_part() -> u32 {
-    BASE_IMAGE_PART
-}
 
 /// How long, in seconds, the camera must rest before a mesh drawn from its
 /// motion proxy is drawn whole again: longer than the gap between two
@@ -269,26 +73,6 @@ const MOTION_SETTLE: f64 = 0.3;
 /// of the mesh's bounding box: its lines are a pixel wide, and rounding to
 /// pixels moves an edge by less than one.
 const MESH_EXTENT_MARGIN: f32 = 2.0;
-
-impl Default for ViewOptions {
-    fn default() -> Self {
-        Self {
-            draw_ids: DrawIds::Highlighted,
-            mesh_scale: 1.0,
-            label_scale: 1.0,
-            show_axes: false,
-            show_orientation: false,
-            solid_faces: false,
-            pickable: PickFilter::All,
-            dark: false,
-            boundary: None,
-            backdrop_cleared: false,
-            base_image: true,
-            base_image_part: BASE_IMAGE_PART,
-            motion_proxy: true,
-        }
-    }
-}
 
 /// What happened in the view this frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -950,7 +734,8 @@ impl View3d {
             .elements
             .iter()
             .filter(|(element, style)| {
-                style::is_highlighted(style) && self.scene.anchor(**element).is_some()
+                edgewise_pictures::styles::is_highlighted(style)
+                    && self.scene.anchor(**element).is_some()
             })
             .map(|(element, _)| *element)
             .collect();
@@ -997,8 +782,12 @@ impl View3d {
                 .world_per_point((self.scene.center - transforms.eye).length())
                 .max(1e-30);
         let [r, g, b, _] = style::line_style(&base, palette).colour;
-        let coarse_line =
-            style::fade_small(egui::Color32::from_rgb(r, g, b), edge_pixels, 24.0, palette);
+        let coarse_line = edgewise_pictures::palette::fade_small(
+            egui::Color32::from_rgb(r, g, b),
+            edge_pixels,
+            24.0,
+            palette,
+        );
         let (right, up) = transforms.screen_axes();
         let light = (self.camera.backward() + up * 0.7 - right * 0.45).normalize_or_zero();
         let [r, g, b, _] = palette.orientation.to_normalized_gamma_f32();
@@ -1081,6 +870,9 @@ mod tests {
     use egui::{Event, Modifiers, Pos2, Rect, Vec2};
 
     use super::*;
+    use edgewise_pictures::geometry::EdgeGeometry;
+    use edgewise_pictures::options::DrawIds;
+    use edgewise_pictures::styles::Pointer;
 
     fn screen() -> Rect {
         Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0))

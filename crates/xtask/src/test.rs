@@ -16,7 +16,12 @@ const VULKAN_LOADER: &str = "/usr/lib/x86_64-linux-gnu/libvulkan.so.1";
 const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 const BROWSER_TESTS: &str = "edgewise-browser-tests";
 /// The crates that are compiled for the browser.
-const WASM_PACKAGES: [&str; 3] = ["edgewise-core", "edgewise-renderer", "edgewise-app"];
+const WASM_PACKAGES: [&str; 4] = [
+    "edgewise-core",
+    "edgewise-pictures",
+    "edgewise-renderer",
+    "edgewise-app",
+];
 
 /// Runs every check CI runs and stops at the first failure.
 pub fn run_all(root: &Path) -> anyhow::Result<()> {

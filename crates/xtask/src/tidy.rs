@@ -29,10 +29,11 @@ use lexer::Token;
 /// on none.
 pub const LAYERS: &[(&str, &str, u8)] = &[
     ("edgewise-core", "crates/core", 0),
-    ("edgewise-renderer", "crates/renderer", 1),
-    ("edgewise-app", "crates/app", 2),
-    ("edgewise-cli", "crates/cli", 3),
-    ("edgewise-browser-tests", "web/browser-tests", 3),
+    ("edgewise-pictures", "crates/pictures", 1),
+    ("edgewise-renderer", "crates/renderer", 2),
+    ("edgewise-app", "crates/app", 3),
+    ("edgewise-cli", "crates/cli", 4),
+    ("edgewise-browser-tests", "web/browser-tests", 4),
 ];
 const BUILD_TOOL: (&str, &str) = ("xtask", "crates/xtask");
 

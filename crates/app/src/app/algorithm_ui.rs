@@ -14,7 +14,7 @@ use crate::{
     command::Argument,
     state::AlgorithmInfo,
 };
-use edgewise_renderer::view3d::PickFilter;
+use edgewise_pictures::options::PickFilter;
 
 impl EdgewiseApp {
     /// [`Command::LoadAlgorithms`]: adds the algorithms of `source` to the

@@ -134,7 +134,7 @@ impl EdgewiseApp {
         for (key, [r, g, b]) in &link.colors {
             settings.colours.insert(
                 key.clone(),
-                settings::to_hex(egui::Color32::from_rgb(*r, *g, *b)),
+                edgewise_pictures::palette::to_hex(egui::Color32::from_rgb(*r, *g, *b)),
             );
         }
         if let Some(size) = link.code_size {

@@ -249,7 +249,7 @@ impl EdgewiseApp {
         let rect = ctx.content_rect();
         let visuals = ctx.global_style().visuals.clone();
         // Panels have no fill of their own (see `theme::backdrop`).
-        let backdrop = edgewise_renderer::view3d::Palette::new(visuals.dark_mode).background;
+        let backdrop = edgewise_pictures::palette::Palette::new(visuals.dark_mode).background;
         painter.rect_filled(rect, 0.0, backdrop.gamma_multiply(0.9));
         painter.rect_stroke(
             rect.shrink(12.0),

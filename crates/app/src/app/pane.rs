@@ -5,9 +5,10 @@
 //! of mesh, selection, step or theme needs a hand-written reset.
 
 use edgewise_core::mesh::Mesh;
-use edgewise_renderer::view3d::{
-    MeshGeometry, Preparation, SceneStyles, View3d, ViewOptions, ViewResponse,
-};
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::options::ViewOptions;
+use edgewise_pictures::styles::SceneStyles;
+use edgewise_renderer::view3d::{Preparation, View3d, ViewResponse};
 
 use crate::{document::Document, paint::Paint};
 

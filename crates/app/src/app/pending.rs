@@ -11,7 +11,8 @@ use super::EdgewiseApp;
 use crate::document::Document;
 use crate::history::Kind;
 use edgewise_core::mesh::{Issue, MeshStats};
-use edgewise_renderer::view3d::{MeshGeometry, Preparation};
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_renderer::view3d::Preparation;
 
 /// Meshes with more faces than this are prepared in slices across frames; below
 /// it, all of the work takes a few frames' time.

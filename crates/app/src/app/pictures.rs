@@ -3,16 +3,16 @@
 //! per step, and screenshots of the whole window, which the browser encodes
 //! as PNG.
 
+use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
 use super::{EdgewiseApp, scene_styles};
-use crate::{
-    accessible,
-    algorithm::frame::frame_at,
-    command::CommandError,
-    export::{self, Picture, pdf},
-};
-use edgewise_renderer::view3d::MeshGeometry;
+use crate::{algorithm::frame::frame_at, command::CommandError, paint::Paint};
+use edgewise_core::schema::ElementRef;
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::pdf;
+use edgewise_pictures::svg::{self, Picture, RowLook};
+use edgewise_pictures::text_table;
 
 /// The most faces a vector picture draws: beyond, the file would be too
 /// large to open comfortably, and a PNG serves better.
@@ -64,13 +64,13 @@ impl EdgewiseApp {
             .view
             .vector_view(&self.view_options)
             .ok_or("the view has not been drawn yet; export it after the next frame")?;
-        let tables = accessible::text_tables(document.mesh(), export::TABLE_ROWS);
-        let rows = export::row_looks(&self.current_paint());
+        let tables = text_table::text_tables(document.mesh(), svg::TABLE_ROWS);
+        let rows = row_looks(&self.current_paint());
         let title = match tab.run.algorithm() {
             Some(algorithm) => format!("Edgewise: {} on {}", algorithm.name, document.name),
             None => format!("Edgewise: {}", document.name),
         };
-        Ok(export::svg(&Picture {
+        Ok(svg::svg(&Picture {
             title,
             caption: self.message_text(None),
             view: &view,
@@ -172,8 +172,8 @@ impl EdgewiseApp {
                 lines,
                 code: code_of(frame.line),
                 current_line: (step > 0).then_some(frame.line),
-                tables: accessible::text_rows(&mesh, &painted),
-                rows: export::row_looks(&frame.paint),
+                tables: text_table::text_rows(&mesh, &painted),
+                rows: row_looks(&frame.paint),
             });
         }
         let title = format!("{} on {}", trace.algorithm().name, document.name);
@@ -205,4 +205,19 @@ impl EdgewiseApp {
         self.screenshot = None;
         Some(image)
     }
+}
+
+/// Each painted element's row look: its first colour and every role.
+pub fn row_looks(paint: &Paint) -> BTreeMap<ElementRef, RowLook> {
+    let mut rows: BTreeMap<_, RowLook> = BTreeMap::new();
+    for painted in &paint.painted {
+        let look = rows.entry(painted.element).or_insert_with(|| RowLook {
+            colour: painted.colour,
+            roles: Vec::new(),
+        });
+        if !look.roles.contains(&painted.role) {
+            look.roles.push(painted.role.clone());
+        }
+    }
+    rows
 }

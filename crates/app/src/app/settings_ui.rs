@@ -124,7 +124,7 @@ impl EdgewiseApp {
                                     ui.end_row();
                                 }
                                 let mut colour = theme.boundary_override.unwrap_or(
-                                    edgewise_renderer::view3d::Palette::new(theme.dark).boundary,
+                                    edgewise_pictures::palette::Palette::new(theme.dark).boundary,
                                 );
                                 let response = ui.color_edit_button_srgba(&mut colour);
                                 response.widget_info(|| {

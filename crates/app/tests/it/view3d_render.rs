@@ -17,10 +17,11 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
 use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
-use edgewise_renderer::view3d::{
-    Camera, DrawIds, ElementStyle, MeshGeometry, Pointer, SceneStyles, View3d, ViewOptions,
-    ViewResponse,
-};
+use edgewise_pictures::camera::Camera;
+use edgewise_pictures::geometry::MeshGeometry;
+use edgewise_pictures::options::{DrawIds, ViewOptions};
+use edgewise_pictures::styles::{ElementStyle, Pointer, SceneStyles};
+use edgewise_renderer::view3d::{View3d, ViewResponse};
 use eframe::egui_wgpu::RenderState;
 use egui::{Color32, Pos2, Rect, Vec2};
 

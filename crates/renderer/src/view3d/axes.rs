@@ -5,8 +5,8 @@ use glam::Vec3;
 
 use super::arrows::ArrowInstance;
 use super::gpu::StyleVertex;
-use super::scene::{Scene, Sizes};
-use super::style::Palette;
+use edgewise_pictures::palette::Palette;
+use edgewise_pictures::scene::{Scene, Sizes};
 
 /// Arrow scale multiplier range the shader decodes from `extra.z`
 /// (`1 + 40 z`).

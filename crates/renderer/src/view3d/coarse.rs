@@ -14,7 +14,7 @@
 use std::ops::Range;
 
 use super::gpu::{IndexData, PipelineFactory, PipelineSpec, VertexData};
-use super::scene::Scene;
+use edgewise_pictures::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
@@ -228,7 +228,7 @@ mod tests {
     use glam::Vec3;
 
     use super::*;
-    use crate::view3d::{EdgeGeometry, MeshGeometry};
+    use edgewise_pictures::geometry::{EdgeGeometry, MeshGeometry};
 
     #[test]
     fn a_half_edge_and_its_pair_make_one_line_and_broken_edges_none() {

@@ -2,7 +2,7 @@
 //! as an option). Triangles are drawn non-indexed, three corners each.
 
 use super::gpu::{PipelineFactory, PipelineSpec, StyleVertex, StyledBuffers, style_layout};
-use super::scene::Scene;
+use edgewise_pictures::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),

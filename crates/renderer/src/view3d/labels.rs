@@ -7,12 +7,14 @@
 
 use std::collections::HashMap;
 
-use super::camera::ViewTransforms;
+use super::axes;
 use super::picking::PickAccel;
-use super::scene::{Scene, Sizes};
-use super::style::Palette;
-use super::{DrawIds, SceneStyles, ViewOptions, axes};
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_pictures::camera::ViewTransforms;
+use edgewise_pictures::options::{DrawIds, ViewOptions};
+use edgewise_pictures::palette::Palette;
+use edgewise_pictures::scene::{Scene, Sizes};
+use edgewise_pictures::styles::SceneStyles;
 use egui::{Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, Vec2, vec2};
 
 /// Most labels drawn in one frame besides the highlighted ones.

@@ -198,8 +198,8 @@ fn cluster(coarse: &CoarseGeometry, min: [f64; 3], cell: f64) -> CoarseGeometry 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view3d::MeshGeometry;
-    use crate::view3d::scene::Scene;
+    use edgewise_pictures::geometry::MeshGeometry;
+    use edgewise_pictures::scene::Scene;
 
     /// The bounds the scene of `geometry`'s positions finds.
     fn scene_bounds(geometry: &CoarseGeometry) -> (Vec3, Vec3) {

@@ -9,7 +9,7 @@ use bytemuck::{Pod, Zeroable};
 use super::gpu::{
     PipelineFactory, PipelineSpec, Template, TemplateBuffer, VertexData, draw_instanced,
 };
-use super::scene::Scene;
+use edgewise_pictures::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),
@@ -177,7 +177,7 @@ mod tests {
     use glam::Vec3;
 
     use super::*;
-    use crate::view3d::MeshGeometry;
+    use edgewise_pictures::geometry::MeshGeometry;
 
     /// The sense each mark of the open square (in the plane z = 0, its faces
     /// counter-clockwise seen from +z) turns about +z: 1 counter-clockwise.

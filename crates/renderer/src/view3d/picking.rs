@@ -11,9 +11,9 @@ use glam::Vec3;
 
 use super::PickFilter;
 use super::bvh::{Bvh, ray_box};
-use super::camera::{Ray, ViewTransforms};
-use super::scene::{Scene, Sizes};
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_pictures::camera::{Ray, ViewTransforms};
+use edgewise_pictures::scene::{Scene, Sizes};
 
 /// How close (in points) the cursor must come to a vertex or an edge.
 pub const VERTEX_TOLERANCE: f32 = 7.0;
@@ -334,7 +334,8 @@ mod tests {
     use egui::{Pos2, Rect, Vec2};
 
     use super::*;
-    use crate::view3d::{Camera, EdgeGeometry, MeshGeometry};
+    use edgewise_pictures::camera::Camera;
+    use edgewise_pictures::geometry::{EdgeGeometry, MeshGeometry};
 
     /// A unit square in the z = 0 plane split into two triangles, with its
     /// five edges (the diagonal included), seen from +Z.

@@ -9,7 +9,7 @@ use super::gpu::{
     PipelineFactory, PipelineSpec, StyledBuffers, Template, TemplateBuffer, draw_instanced,
     instanced_layouts,
 };
-use super::scene::Scene;
+use edgewise_pictures::scene::Scene;
 
 const SHADER: &str = concat!(
     include_str!("shaders/common.wgsl"),

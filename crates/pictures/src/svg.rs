@@ -1,22 +1,21 @@
-//! Pictures of the view for slides and handouts. An SVG holds the 3D view
-//! as vector shapes ([`edgewise_renderer::view3d::vector`]) with the three tables beside
-//! it, highlighted rows in their colours and roles in words, and a caption
-//! (the trace step's sentence, or the selection's), so it prints crisply at
-//! any size and its text can be searched and copied. [`pdf`] writes a
-//! whole run as a handout.
-
-pub mod pdf;
+//! A picture of the view for slides. An SVG holds the 3D view as vector
+//! shapes ([`crate::vector`]) with the three tables beside it, highlighted
+//! rows in their colours and roles in words, and a caption (the trace
+//! step's sentence, or the selection's), so it prints crisply at any size
+//! and its text can be searched and copied. [`crate::pdf`] writes a whole
+//! run as a handout.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use egui::{Color32, Pos2};
+use ecolor::Color32;
+use emath::Pos2;
 
 use edgewise_core::schema::ElementRef;
 
-use crate::accessible::{Cell, TextTable};
-use crate::settings::to_hex as hex;
-use edgewise_renderer::view3d::vector::{Shape, VectorView, shaft_end};
+use crate::palette::{Palette, to_hex as hex};
+use crate::text_table::{Cell, TextTable};
+use crate::vector::{Shape, VectorView, label_size, shaft_end};
 
 /// Rows each table shows; the rest are counted in a last line.
 pub const TABLE_ROWS: usize = 48;
@@ -34,21 +33,6 @@ const ROLE_COLUMN: f32 = 170.0;
 pub struct RowLook {
     pub colour: Color32,
     pub roles: Vec<String>,
-}
-
-/// Each painted element's row look: its first colour and every role.
-pub fn row_looks(paint: &crate::paint::Paint) -> BTreeMap<ElementRef, RowLook> {
-    let mut rows: BTreeMap<_, RowLook> = BTreeMap::new();
-    for painted in &paint.painted {
-        let look = rows.entry(painted.element).or_insert_with(|| RowLook {
-            colour: painted.colour,
-            roles: Vec::new(),
-        });
-        if !look.roles.contains(&painted.role) {
-            look.roles.push(painted.role.clone());
-        }
-    }
-    rows
 }
 
 /// Everything an exported picture shows.
@@ -81,7 +65,7 @@ pub fn xml_escape(text: &str) -> String {
 }
 
 /// A number as SVG and PDF write it: at most two decimals, no `-0`.
-fn n(x: f32) -> String {
+pub(crate) fn n(x: f32) -> String {
     if !x.is_finite() {
         return "0".to_owned();
     }
@@ -193,12 +177,7 @@ pub fn svg(picture: &Picture<'_>) -> String {
     out
 }
 
-fn shape_svg(
-    out: &mut String,
-    shape: &Shape,
-    dy: f32,
-    palette: &edgewise_renderer::view3d::Palette,
-) {
+fn shape_svg(out: &mut String, shape: &Shape, dy: f32, palette: &Palette) {
     match shape {
         Shape::Polygon {
             points: corners,
@@ -253,10 +232,10 @@ fn shape_svg(
             text,
             border,
         } => {
-            let egui::Vec2 {
+            let emath::Vec2 {
                 x: width,
                 y: height,
-            } = edgewise_renderer::view3d::vector::label_size(text);
+            } = label_size(text);
             let stroke = hex(border.unwrap_or(palette.label_stroke));
             let _ = writeln!(
                 out,

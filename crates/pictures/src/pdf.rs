@@ -13,12 +13,13 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use egui::{Color32, Pos2};
+use ecolor::Color32;
+use emath::Pos2;
 
-use super::{RowLook, cell_text, n};
-use crate::accessible::TextTable;
+use crate::svg::{RowLook, cell_text, n};
+use crate::text_table::TextTable;
+use crate::vector::{Shape, VectorView, label_size, shaft_end};
 use edgewise_core::schema::ElementRef;
-use edgewise_renderer::view3d::vector::{Shape, VectorView, label_size, shaft_end};
 
 /// Landscape A4, in PDF points.
 pub const PAGE: (f32, f32) = (842.0, 595.0);
@@ -620,8 +621,8 @@ mod tests {
     #[test]
     fn the_cross_reference_table_points_at_each_object() {
         let view = VectorView {
-            size: egui::vec2(200.0, 100.0),
-            palette: edgewise_renderer::view3d::Palette::new(false),
+            size: emath::vec2(200.0, 100.0),
+            palette: crate::palette::Palette::new(false),
             shapes: vec![Shape::Disc {
                 centre: Pos2::new(10.0, 10.0),
                 radius: 4.0,

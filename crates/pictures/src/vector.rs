@@ -7,15 +7,17 @@
 //! comparison pointers. A mesh with more than [`MAX_SHAPES_EDGES`] edges is
 //! drawn as its faces only, as the view's coarse level of detail does.
 
-use egui::{Color32, Pos2, Rect, Vec2, vec2};
+use ecolor::Color32;
+use emath::{Pos2, Rect, Vec2, vec2};
 use glam::Vec3;
 
 use edgewise_core::schema::{ElementKind, ElementRef};
 
-use super::camera::ViewTransforms;
-use super::scene::{Scene, Sizes};
-use super::style::{Palette, face_colour, line_colour};
-use super::{DrawIds, ElementStyle, ViewOptions};
+use crate::camera::ViewTransforms;
+use crate::options::{DrawIds, ViewOptions};
+use crate::palette::{Palette, face_colour, line_colour};
+use crate::scene::{Scene, Sizes};
+use crate::styles::ElementStyle;
 
 /// Above this many arrows, edges and vertices are left out.
 pub const MAX_SHAPES_EDGES: usize = 20_000;
@@ -62,7 +64,7 @@ pub struct VectorView {
 }
 
 /// What the view knows about each element's look.
-pub(super) struct Looks<'a> {
+pub struct Looks<'a> {
     pub styles: &'a std::collections::BTreeMap<ElementRef, ElementStyle>,
     pub fade_others: bool,
 }
@@ -83,7 +85,7 @@ impl Looks<'_> {
 }
 
 /// Builds the vector view of `scene` as `transforms` sees it.
-pub(super) fn vector_view(
+pub fn vector_view(
     scene: &Scene,
     looks: &Looks<'_>,
     transforms: &ViewTransforms,
@@ -299,7 +301,7 @@ pub fn label_size(text: &str) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use egui::pos2;
+    use emath::pos2;
 
     #[test]
     fn an_arrowhead_points_along_its_edge() {

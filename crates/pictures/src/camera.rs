@@ -4,7 +4,7 @@
 //! to space `a`, so `clip_from_world = clip_from_view * view_from_world`.
 //! The world is right-handed with +Y up (the usual OBJ convention).
 
-use egui::{Pos2, Rect, Vec2};
+use emath::{Pos2, Rect, Vec2};
 use glam::{Mat4, Vec3, Vec4Swizzles as _};
 use serde::{Deserialize, Serialize};
 

@@ -5,7 +5,7 @@
 
 use glam::Vec3;
 
-use super::MeshGeometry;
+use crate::geometry::MeshGeometry;
 use edgewise_core::schema::{ElementKind, ElementRef};
 
 /// How far a half-edge arrow is pulled from its edge towards its face's
