@@ -6,8 +6,9 @@
 
 use std::time::Instant;
 
-use edgewise_app::{Argument, EdgewiseApp, GraphicsBackend};
+use edgewise_app::{EdgewiseApp, GraphicsBackend};
 use edgewise_core::mesh::Structure;
+use edgewise_model::algorithm::session::Argument;
 use egui_kittest::Harness;
 
 fn main() {

@@ -14,9 +14,9 @@ use edgewise_core::mesh::{Mesh, Structure};
 use edgewise_core::schema::{ElementKind, ElementRef};
 use edgewise_pictures::text_table::{Cell, TextTable, text_tables};
 
-use crate::{
-    algorithm::TraceFrame, course_link::escape_attribute as escape, state::HighlightState, tables,
-    trace_role::TraceRole,
+use crate::state::HighlightState;
+use edgewise_model::{
+    algorithm::frame::TraceFrame, course_link::escape_attribute as escape, trace_role::TraceRole,
 };
 
 /// Rows mirrored per table; a larger mesh's caption says how many are left
@@ -231,7 +231,7 @@ fn table_html(
         let _ = write!(
             html,
             "<tr><th scope=\"row\">{}</th>",
-            tables::row_name(mesh, *element)
+            edgewise_pictures::text_table::row_name(mesh, *element)
         );
         let Some(cells) = cells else {
             let _ = write!(
@@ -247,7 +247,11 @@ fn table_html(
                     let _ = write!(html, "<td>{x:.3}</td>");
                 }
                 Cell::Reference(Some(target)) => {
-                    let _ = write!(html, "<td>{}</td>", tables::row_name(mesh, *target));
+                    let _ = write!(
+                        html,
+                        "<td>{}</td>",
+                        edgewise_pictures::text_table::row_name(mesh, *target)
+                    );
                 }
                 Cell::Reference(None) => html.push_str("<td>none</td>"),
             }

@@ -8,28 +8,25 @@ use egui_extras::{Size, StripBuilder};
 
 use edgewise_core::{
     formats::{self, Format, SaveOptions},
-    mesh::{Mesh, Structure, generate},
+    mesh::{Mesh, Structure},
 };
 
 use crate::{
     GraphicsBackend,
-    algorithm::{Algorithms, Run},
-    document::Document,
+    algorithm::Algorithms,
     files::FileState,
     obj_editor::{EDITOR_FILE, MAX_EDITOR_BYTES},
-    paint::Paint,
-    samples::{self, SampleData},
-    selection::Role,
-    settings::Settings,
     state::{
         AppState, BrokenState, Counts, DialogState, HighlightState, PendingState, StatsState,
         TraceState,
     },
     tables::{self, TablesResponse},
-    theme::Theme,
+};
+use edgewise_model::{
+    algorithm::session::Run, document::Document, message, moment, paint::Paint, samples,
+    selection::Role, settings::Settings, theme::Theme,
 };
 use edgewise_pictures::options::{DrawIds, ViewOptions};
-use edgewise_pictures::styles::{Pointer, SceneStyles};
 use edgewise_renderer::ui_cache::{PartTextures, UiCache};
 
 pub mod algorithm_ui;
@@ -147,7 +144,7 @@ impl EdgewiseApp {
             cc.wgpu_render_state.as_ref(),
         );
         app.ctx = Some(cc.egui_ctx.clone());
-        let (settings, message) = crate::settings::load_stored();
+        let (settings, message) = crate::stored_settings::load_stored();
         app.set_settings(settings);
         if let Some(message) = message {
             app.report(message);
@@ -262,42 +259,15 @@ impl EdgewiseApp {
         name: &str,
         structure: Option<Structure>,
     ) -> Result<(), CommandError> {
-        let Some(sample) = samples::find(name) else {
-            let names: Vec<&str> = samples::SAMPLES.iter().map(|s| s.name).collect();
-            return Err(format!(
-                "there is no sample called '{name}'; the samples are: {}",
-                names.join(", ")
-            )
-            .into());
-        };
-        let structure = match &sample.data {
-            SampleData::File { file_name, .. } | SampleData::Icosphere { file_name, .. } => {
-                structure.unwrap_or_else(|| self.default_structure_for(file_name))
-            }
-            SampleData::Torus { .. } => structure.unwrap_or(self.tab().structure),
-        };
-        let loaded = match &sample.data {
-            SampleData::File { file_name, bytes } => Document::load(bytes, file_name, structure),
-            SampleData::Torus { nu, nv } => {
-                Document::from_polygons(sample.name, &generate::torus(*nu, *nv), structure)
-            }
-            SampleData::Icosphere { file_name, levels } => {
-                Document::from_polygons(file_name, &generate::icosphere(*levels), structure)
-            }
-        };
-        let loaded = loaded.map(|mut document| {
-            document.sample = Some(sample.name.to_owned());
-            document
-        });
+        let fallback = self.tab().structure;
+        let loaded = samples::open(name, structure, fallback);
         self.open(loaded, true, false)
     }
 
     /// A table file opens as the structure it stores; PLY and OBJ as the
     /// structure currently chosen in the top bar.
     fn default_structure_for(&self, name: &str) -> Structure {
-        Format::from_name(name)
-            .and_then(Format::native_structure)
-            .unwrap_or(self.tab().structure)
+        edgewise_model::document::structure_for(name, self.tab().structure)
     }
 
     /// Shows a newly loaded document, undoably, or keeps the current one
@@ -578,21 +548,18 @@ impl EdgewiseApp {
         let Some(document) = &tab.document else {
             return Paint::default();
         };
-        let mut paint = match tab.run.current_frame(&self.theme) {
-            Some(frame) => frame.into_owned().paint,
-            None => Paint::from_selection(document.highlights(), &self.theme),
+        let frame = tab.run.current_frame(&self.theme);
+        let marks = moment::Marks {
+            last_changes: tab.last_changes(),
+            broken: tab.broken(),
         };
-        if document.selection().is_none() && tab.run.session().is_none() {
-            paint.add_changes(tab.last_changes(), &self.theme);
-        }
-        if !tab.broken().is_empty() {
-            paint.add_broken(tab.broken(), &self.theme);
-        }
-        paint.add_deleted(
-            edgewise_core::mesh::Edit::deleted_rows(document.mesh()).iter(),
+        moment::moment_paint(
+            document,
+            frame.as_deref(),
+            tab.run.session().is_some(),
+            marks,
             &self.theme,
-        );
-        paint
+        )
     }
 
     /// Brings the active tab's view up to date with its document: the
@@ -795,26 +762,11 @@ impl EdgewiseApp {
     /// hint. Screen readers hear it too (`accessible.rs`).
     fn message_text(&self, hovered: Option<ElementRef>) -> Option<String> {
         let document = self.tab().document.as_ref()?;
-        let text = if let Some(text) = self.algorithm_message() {
-            text
-        } else if let Some(pick) = hovered.filter(|&h| document.selection() != Some(h)) {
-            format!("{}: click to select", titled(document.mesh(), pick))
-        } else if let Some(first) = document.highlights().first() {
-            let refs: Vec<String> = document.highlights()[1..]
-                .iter()
-                .map(|h| format!("{} {}", h.role.key(), h.element.id))
-                .collect();
-            format!(
-                "{} selected: {}",
-                titled(document.mesh(), first.element),
-                refs.join(", ")
-            )
-        } else if let Some(warning) = document.warnings.first() {
-            format!("Note: {warning}")
-        } else {
-            "Click a vertex, edge or face, here or in the tables.".to_owned()
-        };
-        Some(text)
+        Some(message::message_line(
+            document,
+            self.algorithm_message(),
+            hovered,
+        ))
     }
 
     fn error_ui(&mut self, ui: &mut egui::Ui) {
@@ -1019,16 +971,6 @@ impl EdgewiseApp {
     }
 }
 
-/// "Half-edge 3", "Edge 3", "Vertex 1": a row's name to start a sentence.
-fn titled(mesh: &Mesh, element: ElementRef) -> String {
-    let name = tables::row_name(mesh, element);
-    let mut chars = name.chars();
-    chars
-        .next()
-        .map(|first| first.to_uppercase().chain(chars).collect())
-        .unwrap_or_default()
-}
-
 /// Whether a line of an error belongs to a rendered source excerpt: `  |`,
 /// `12 | text`, or `  = hint: …`, as `lang::render_all` writes them.
 fn is_source_diagram_line(line: &str) -> bool {
@@ -1043,7 +985,7 @@ fn is_source_diagram_line(line: &str) -> bool {
 
 impl eframe::App for EdgewiseApp {
     fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
-        crate::theme::backdrop(visuals.dark_mode)
+        crate::visuals::backdrop(visuals.dark_mode)
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
@@ -1064,11 +1006,11 @@ impl EdgewiseApp {
         self.frames += 1;
         self.frame_cpu_ms = cpu_usage_seconds.map(|seconds| seconds * 1000.0);
         if !self.fonts_installed {
-            crate::theme::install_fonts(ui.ctx());
+            crate::visuals::install_fonts(ui.ctx());
             self.fonts_installed = true;
         }
         if self.applied_theme != Some(self.theme.key()) {
-            self.theme.apply(ui.ctx());
+            crate::visuals::apply_theme(&self.theme, ui.ctx());
             self.applied_theme = Some(self.theme.key());
         }
         self.receive_files(ui.ctx());
@@ -1243,42 +1185,6 @@ const TABLES_SIDE_BY_SIDE: f32 = 690.0;
 fn side_panel_range(window_width: f32, least: f32) -> egui::Rangef {
     let most = window_width * 0.5;
     egui::Rangef::new(least.min(most), most)
-}
-
-/// Per-element styles for `mesh` from a paint: an entry for each painted or
-/// labelled element the mesh has, in time proportional to the paint.
-pub(crate) fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
-    let mut styles = SceneStyles {
-        generation,
-        fade_others: paint.fade_others && !paint.is_empty(),
-        elements: std::collections::BTreeMap::new(),
-        pointers: paint
-            .pointers
-            .iter()
-            .map(|&(element, colour)| Pointer {
-                target: element,
-                colour,
-            })
-            .collect(),
-    };
-    let exists = |element: ElementRef| {
-        let count = match element.kind {
-            ElementKind::Vertex => mesh.vertex_count(),
-            ElementKind::Edge => mesh.edge_row_count(),
-            ElementKind::Face => mesh.face_count(),
-        };
-        (element.id as usize) < count
-    };
-    // An element's first entry gives its colour: paint in reverse.
-    for p in paint.painted.iter().rev().filter(|p| exists(p.element)) {
-        let style = styles.elements.entry(p.element).or_default();
-        style.colour = Some(p.colour);
-    }
-    for (&element, label) in paint.labels.iter().filter(|(e, _)| exists(**e)) {
-        let style = styles.elements.entry(element).or_default();
-        style.label = Some(format!("{}: {label}", element.id));
-    }
-    styles
 }
 
 /// A short guide: what to click, the keys, and what the colours mean.

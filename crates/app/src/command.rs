@@ -13,30 +13,7 @@ use edgewise_core::{
 };
 
 use crate::save_format::SaveFormat;
-
-/// One argument of `run(name, args)` as JavaScript or a URL gives it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Argument {
-    Number(f64),
-    Boolean(bool),
-}
-
-impl Argument {
-    /// Reads `true`, `false` or a finite number, as links and the command
-    /// line write an input.
-    pub fn parse(text: &str) -> Option<Self> {
-        match text {
-            "true" => Some(Self::Boolean(true)),
-            "false" => Some(Self::Boolean(false)),
-            // Rust also reads "inf" and "NaN"; no input has a use for them.
-            _ => text
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .map(Self::Number),
-        }
-    }
-}
+use edgewise_model::algorithm::session::Argument;
 
 /// Something the user asked the app to do.
 #[derive(Clone, Debug, PartialEq)]

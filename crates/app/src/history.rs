@@ -7,7 +7,7 @@
 
 use edgewise_core::schema::{ElementKind, Records as _};
 
-use crate::document::Document;
+use edgewise_model::document::Document;
 
 /// The most entries kept on each side.
 pub const MAX_ENTRIES: usize = 100;

@@ -9,32 +9,23 @@ mod app;
 mod backend;
 pub mod code_editor;
 pub mod command;
-pub mod course_link;
-mod document;
 mod embed_event;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod history;
 pub mod obj_editor;
-pub mod paint;
 mod platform;
-pub mod samples;
 pub mod save_format;
-pub mod selection;
-pub mod settings;
 pub mod state;
+mod stored_settings;
 mod tables;
-mod theme;
+pub mod visuals;
 pub use app::embed_events::preferred_height;
 pub use embed_event::EmbedEvent;
-pub use theme::backdrop;
-pub mod trace_role;
 
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-pub use app::element_box::parse_element;
 pub use app::files;
 pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;
-pub use command::Argument;

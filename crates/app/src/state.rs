@@ -9,10 +9,10 @@ use std::collections::BTreeMap;
 use edgewise_core::mesh::{Issue, MeshStats, Renumbering};
 use serde::Serialize;
 
+use crate::code_editor::Diagnostic;
 pub use crate::history::HistoryState;
-use crate::{
-    algorithm::{TraceFrame, TraceSession, frame::value_text},
-    code_editor::Diagnostic,
+use edgewise_model::{
+    algorithm::frame::TraceFrame, algorithm::frame::value_text, algorithm::session::TraceSession,
 };
 
 /// A JSON-serialisable snapshot of what the app shows.

@@ -10,7 +10,7 @@ use edgewise_core::schema::{Column, ElementKind, ElementRef, Records, Storage};
 use egui::{RichText, emath::GuiRounding as _};
 use egui_extras::TableBuilder;
 
-use crate::{paint::Paint, selection::Role};
+use edgewise_model::{paint::Paint, selection::Role};
 
 const ROW_HEIGHT: f32 = 20.0;
 /// The least width of a column after the id column, in points.
@@ -682,14 +682,6 @@ fn cell_edit_ui(ui: &mut egui::Ui) -> Option<Result<Option<u32>, String>> {
         ui.data_mut(|d| d.insert_temp(cell_edit_id(), edit));
     }
     result
-}
-
-/// How a row is named to a reader: "half-edge 3" in a half-edge mesh.
-pub fn row_name(mesh: &Mesh, element: ElementRef) -> String {
-    match (mesh, element.kind) {
-        (Mesh::Half(_), ElementKind::Edge) => format!("half-edge {}", element.id),
-        _ => element.to_string(),
-    }
 }
 
 /// The cells of one row, in the order of [`Column::table`]: the id, the

@@ -15,10 +15,10 @@ use edgewise_core::formats::MAX_FILE_BYTES;
 
 use crate::{
     EdgewiseApp, FetchedMesh,
-    course_link::{CourseLink, MeshSource},
     files::{ANNOUNCE_BYTES, opening_label},
     platform::{CANVAS_ID, js_error_text},
 };
+use edgewise_model::course_link::{CourseLink, MeshSource};
 
 /// The loading message shown by index.html until the app runs.
 const LOADING_ID: &str = "edgewise_loading";

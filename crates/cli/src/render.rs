@@ -1,13 +1,15 @@
 //! `edgewise render`: the app's pictures from the command line, for
-//! scripted course material. The app itself draws them, without a window,
-//! so a handout made here is the same file as the one its Save menu makes.
+//! scripted course material. A [`Still`] sets the moment up as the app
+//! would, without a window or a GPU, and the pictures come from the same
+//! code as the app's, so a handout made here is the same file as the one
+//! its Save menu makes.
 
 use std::path::Path;
 
-use edgewise_app::command::Command as AppCommand;
-use edgewise_app::course_link::{CourseLink, MeshSource};
-use edgewise_app::{Argument, EdgewiseApp, FetchedMesh, GraphicsBackend};
 use edgewise_core::mesh::Structure;
+use edgewise_model::algorithm::session::Argument;
+use edgewise_model::course_link::{CourseLink, MeshSource};
+use edgewise_model::still::{Fetched, Still};
 
 use super::{Failure, Outcome, StructureArg, emit, read_bytes, read_text, shown};
 
@@ -118,44 +120,40 @@ pub fn render(request: &Request<'_>) -> Outcome {
     }
     let selection = request
         .select
-        .map(|text| edgewise_app::parse_element(text).map_err(|e| usage(format!("--select: {e}"))))
+        .map(|text| {
+            edgewise_model::selection::parse_element(text)
+                .map_err(|e| usage(format!("--select: {e}")))
+        })
         .transpose()?;
 
-    let mut app = EdgewiseApp::with_backend(GraphicsBackend::None, None);
-    if request.dark {
-        let mut settings = app.settings().clone();
-        settings.dark = true;
-        app.set_settings(settings);
-    }
+    let mut still = Still::new(request.dark);
     let structure = request.structure.map(Structure::from);
     match request.link {
-        Some(link) => open_link(&mut app, link, request.meshfile, structure)?,
+        Some(link) => open_link(&mut still, link, request.meshfile, structure)?,
         None => {
             if let Some(path) = request.meshfile {
                 let bytes = read_bytes(path)?;
-                app.execute(AppCommand::LoadMesh {
-                    bytes,
-                    name: shown(path),
-                    structure,
-                    diagnose: false,
-                })
-                .map_err(reported)?;
+                still
+                    .load_mesh(&bytes, &shown(path), structure)
+                    .map_err(reported)?;
             }
         }
     }
-    app.lay_out_offscreen(width, height);
+    still.lay_out(width, height);
 
     if let Some(path) = request.algfile {
         let source = read_text(path)?;
-        app.load_algorithms(&source, &shown(path))
+        still
+            .load_algorithms(&source, &shown(path))
             .map_err(reported)?;
     }
     if let Some(name) = request.run {
-        app.run_algorithm(name, &args)
+        still
+            .run_algorithm(name, &args)
             .map_err(|e| refused("--run", e))?;
-        if app.state().trace.is_none() {
+        if !still.is_traced() {
             // Still waiting for inputs: starting says which.
-            app.execute(AppCommand::Start).map_err(|e| {
+            still.start().map_err(|e| {
                 refused(
                     "--arg",
                     format!("{e}; give each input as --arg NAME=VALUE, such as --arg v=1"),
@@ -164,11 +162,12 @@ pub fn render(request: &Request<'_>) -> Outcome {
         }
     }
     if let Some(element) = selection {
-        app.select(Some(element))
+        still
+            .select(Some(element))
             .map_err(|e| refused("--select", e))?;
     }
     if let Some(step) = request.step {
-        let steps = app.state().trace.map(|trace| trace.steps).ok_or_else(|| {
+        let steps = still.steps().ok_or_else(|| {
             usage("--step needs a run: give --run NAME, or a link with algorithm=")
         })?;
         if step > steps {
@@ -176,18 +175,16 @@ pub fn render(request: &Request<'_>) -> Outcome {
                 "--step {step}: the run has steps 0 to {steps}"
             )));
         }
-        app.trace_goto(step).map_err(|e| refused("--step", e))?;
+        still.goto(step).map_err(|e| refused("--step", e))?;
     }
-    if matches!(picture, Picture::Handout) && app.state().trace.is_none() {
+    if matches!(picture, Picture::Handout) && !still.is_traced() {
         return Err(usage(
             "a .pdf handout has a page per step of a run: give --run NAME, or a link with algorithm=",
         ));
     }
-    app.lay_out_offscreen(width, height);
-
     let bytes = match picture {
-        Picture::Svg => app.export_svg().map(String::into_bytes),
-        Picture::Handout => app.export_handout().map(|(_, bytes)| bytes),
+        Picture::Svg => still.svg().map(String::into_bytes),
+        Picture::Handout => still.handout().map(|(_, bytes)| bytes),
     }
     .map_err(|e| refused(&request.output.display().to_string(), e))?;
     std::fs::write(request.output, &bytes).map_err(|error| {
@@ -210,7 +207,7 @@ pub fn render(request: &Request<'_>) -> Outcome {
 /// current folder (a link's paths never leave it: they are relative, with
 /// no `..`).
 fn open_link(
-    app: &mut EdgewiseApp,
+    still: &mut Still,
     link: &str,
     meshfile: Option<&Path>,
     structure: Option<Structure>,
@@ -225,12 +222,12 @@ fn open_link(
             if parsed.mesh.is_none() {
                 parsed.mesh = Some(MeshSource::Path(shown(path)));
             }
-            Some(FetchedMesh {
+            Some(Fetched {
                 name: shown(path),
                 bytes: Ok(read_bytes(path)?),
             })
         }
-        (Some(MeshSource::Path(path)), None) => Some(FetchedMesh {
+        (Some(MeshSource::Path(path)), None) => Some(Fetched {
             name: path.clone(),
             bytes: std::fs::read(path).map_err(|error| format!("cannot read the file: {error}")),
         }),
@@ -247,7 +244,7 @@ fn open_link(
             ));
         }
     };
-    link_refused(&app.apply_course_link(&parsed, Vec::new(), fetched))
+    link_refused(&still.apply_link(&parsed, fetched))
 }
 
 /// Reports each message about the link; any is a refusal.

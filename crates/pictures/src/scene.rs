@@ -5,6 +5,7 @@
 
 use glam::Vec3;
 
+use crate::camera::Camera;
 use crate::geometry::MeshGeometry;
 use edgewise_core::schema::{ElementKind, ElementRef};
 
@@ -55,6 +56,14 @@ impl Sizes {
 }
 
 impl Scene {
+    /// Points `camera` at the whole mesh in a view of `aspect`, with room
+    /// for the vertex spheres and the labels above them.
+    pub fn frame(&self, camera: &mut Camera, aspect: f32) {
+        let (min, max) = self.bounds;
+        let room = Vec3::splat(self.unit * 0.12);
+        camera.frame_box(min - room, max + room, aspect);
+    }
+
     pub fn new(geometry: MeshGeometry) -> Self {
         let position = |v: u32| -> Vec3 {
             geometry

@@ -12,6 +12,14 @@ pub fn edge_table_title(mesh: &Mesh) -> &'static str {
     }
 }
 
+/// How a row is named to a reader: "half-edge 3" in a half-edge mesh.
+pub fn row_name(mesh: &Mesh, element: ElementRef) -> String {
+    match (mesh, element.kind) {
+        (Mesh::Half(_), ElementKind::Edge) => format!("half-edge {}", element.id),
+        _ => element.to_string(),
+    }
+}
+
 /// One cell of a table as text writers see it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Cell {

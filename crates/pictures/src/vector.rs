@@ -90,8 +90,8 @@ pub fn vector_view(
     looks: &Looks<'_>,
     transforms: &ViewTransforms,
     options: &ViewOptions,
-    palette: Palette,
 ) -> VectorView {
+    let palette = Palette::of(options);
     let viewport = transforms.viewport;
     let origin = viewport.min.to_vec2();
     let local = |p: Pos2| p - origin;

@@ -333,11 +333,7 @@ impl View3d {
     }
 
     pub fn frame_all(&mut self) {
-        // Room for the vertex spheres and the labels above them.
-        let (min, max) = self.scene.bounds;
-        let room = Vec3::splat(self.scene.unit * 0.12);
-        self.camera
-            .frame_box(min - room, max + room, self.last_aspect);
+        self.scene.frame(&mut self.camera, self.last_aspect);
     }
 
     /// The camera, as plain data.
@@ -464,7 +460,6 @@ impl View3d {
             looks,
             &self.transforms(viewport),
             options,
-            Palette::of(options),
         ))
     }
 

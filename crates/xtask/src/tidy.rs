@@ -30,6 +30,7 @@ use lexer::Token;
 pub const LAYERS: &[(&str, &str, u8)] = &[
     ("edgewise-core", "crates/core", 0),
     ("edgewise-pictures", "crates/pictures", 1),
+    ("edgewise-model", "crates/model", 2),
     ("edgewise-renderer", "crates/renderer", 2),
     ("edgewise-app", "crates/app", 3),
     ("edgewise-cli", "crates/cli", 4),
@@ -78,6 +79,7 @@ pub fn problems(root: &Path) -> anyhow::Result<Vec<String>> {
             }
         }
     }
+    problems.extend(members_have_layers(root)?);
     problems.extend(dependency_arrows(root)?);
     problems.extend(crate_map(root)?);
     Ok(problems)
@@ -177,6 +179,34 @@ fn app_impls(shown: &str, module: &[String], tokens: &[(Token, u32)]) -> Vec<Str
         }
     }
     problems
+}
+
+/// Every member of the workspace has its place in [`LAYERS`] (or is the
+/// build tool), so that no crate escapes the layer check.
+fn members_have_layers(root: &Path) -> anyhow::Result<Vec<String>> {
+    let manifest = root.join("Cargo.toml");
+    let text = std::fs::read_to_string(&manifest)
+        .with_context(|| format!("cannot read {}", manifest.display()))?;
+    let Some(list) = text
+        .split_once("members = [")
+        .and_then(|(_, rest)| rest.split_once(']'))
+        .map(|(list, _)| list)
+    else {
+        bail!("Cargo.toml: no `members = [...]` list");
+    };
+    Ok(list
+        .split(',')
+        .map(|member| member.trim().trim_matches('"'))
+        .filter(|member| !member.is_empty())
+        .filter(|member| {
+            *member != BUILD_TOOL.1 && !LAYERS.iter().any(|&(_, folder, _)| folder == *member)
+        })
+        .map(|member| {
+            format!(
+                "Cargo.toml: the member {member} has no layer in tidy.rs's LAYERS (ARCHITECTURE.md)"
+            )
+        })
+        .collect())
 }
 
 /// The workspace crates each crate's Cargo.toml depends on, by layer.

@@ -10,10 +10,8 @@ use super::{
     AlgorithmLibrary,
     highlight::{CodeStyle, Highlighted},
 };
-use crate::{
-    code_editor::{CodeEditor, Diagnostic},
-    theme::Theme,
-};
+use crate::code_editor::{CodeEditor, Diagnostic};
+use edgewise_model::theme::Theme;
 
 /// How long typing must pause before the text is compiled.
 const DEBOUNCE: Duration = Duration::from_millis(400);
@@ -79,7 +77,10 @@ impl AlgorithmEditor {
         match lang::compile(&self.text) {
             Ok(program) => {
                 self.problems.clear();
-                let names = library.add(&program, &super::Origin::User(EDITOR_FILE.to_owned()));
+                let names = library.add(
+                    &program,
+                    &edgewise_model::algorithm::library::Origin::User(EDITOR_FILE.to_owned()),
+                );
                 self.status = Some(format!("In the Algorithm menu: {}", names.join(", ")));
             }
             Err(diagnostics) => {
@@ -134,7 +135,7 @@ impl AlgorithmEditor {
         ui.weak("Write an algorithm; each one that compiles joins the Algorithm menu.");
         if let Some(status) = &self.status {
             ui.colored_label(
-                theme.trace_colour(crate::trace_role::TraceRole::Lookup),
+                theme.trace_colour(edgewise_model::trace_role::TraceRole::Lookup),
                 status,
             );
         }

@@ -1,7 +1,7 @@
 //! Syntax colouring of algorithm source, from the language's own lexer, so
 //! the view and the compiler never disagree about what a word is.
 
-use crate::theme::CODE_BOLD_FAMILY;
+use crate::visuals::CODE_BOLD_FAMILY;
 use edgewise_core::schema::Structure;
 use std::ops::Range;
 

@@ -3,7 +3,7 @@
 //! expression being executed highlighted. Clicking a line number toggles a
 //! breakpoint.
 
-use crate::trace_role::TraceRole;
+use edgewise_model::trace_role::TraceRole;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -16,9 +16,10 @@ use egui::{Align, Color32, RichText, Sense, vec2};
 use super::{
     AlgorithmRun, Algorithms, Run, TraceFrame,
     highlight::{CodeStyle, Mark},
-    quiz::Shown,
+    quiz_ui::{self, Shown},
 };
-use crate::{command::Command, theme::Theme};
+use crate::command::Command;
+use edgewise_model::theme::Theme;
 
 /// The least height of the source listing, in points: a dozen lines, when
 /// the panel is a phone's sheet and everything above it scrolls away.
@@ -467,7 +468,7 @@ fn picking_ui(run: &mut AlgorithmRun, ui: &mut egui::Ui) -> Option<Command> {
                     edited |= ui.checkbox(b, "").changed();
                 }
                 (_, value) => {
-                    ui.label(super::frame::value_text(*value));
+                    ui.label(edgewise_model::algorithm::frame::value_text(*value));
                 }
             }
         });
@@ -519,7 +520,7 @@ fn question_ui(
     };
     let step = session.step();
     let quiz = session.quiz.as_mut()?;
-    quiz.question_ui(ui, &session.trace, step, theme, shows)
+    quiz_ui::question_ui(quiz, ui, &session.trace, step, theme, shows)
 }
 
 /// The message line's sentence, and the output once done, or the error.

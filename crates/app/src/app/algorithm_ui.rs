@@ -4,16 +4,14 @@
 use crate::command::{Command, CommandError};
 use crate::platform::ALGORITHM_FILES;
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_model::algorithm::session::Argument;
 use std::sync::Arc;
 
 use edgewise_core::schema::Structure;
 
 use super::{AlgorithmTab, EdgewiseApp};
-use crate::{
-    algorithm::{Origin, Run, editor::EditorCommand, session::argument_value},
-    command::Argument,
-    state::AlgorithmInfo,
-};
+use crate::{algorithm::editor::EditorCommand, state::AlgorithmInfo};
+use edgewise_model::{algorithm::library::Origin, algorithm::session, algorithm::session::Run};
 use edgewise_pictures::options::PickFilter;
 
 impl EdgewiseApp {
@@ -42,35 +40,7 @@ impl EdgewiseApp {
         };
         let structure = document.structure();
         let algorithm = self.algorithms.find(name, structure)?;
-        let mut inputs = Vec::with_capacity(args.len());
-        for (arg_name, arg) in args {
-            let Some(param) = algorithm.params().find(|p| p.name == *arg_name) else {
-                let names: Vec<&str> = algorithm.params().map(|p| p.name.as_str()).collect();
-                return Err(format!(
-                    "{} has no parameter `{arg_name}` (its parameters: {})",
-                    algorithm.name,
-                    names.join(", ")
-                )
-                .into());
-            };
-            let (number, boolean) = match arg {
-                Argument::Number(n) => (Some(*n), None),
-                Argument::Boolean(b) => (None, Some(*b)),
-            };
-            let Some(value) = argument_value(param.ty, number, boolean) else {
-                let what = match arg {
-                    Argument::Number(n) => n.to_string(),
-                    Argument::Boolean(b) => b.to_string(),
-                };
-                return Err(format!(
-                    "parameter `{arg_name}` of {} is {}, which `{what}` is not",
-                    algorithm.name,
-                    type_phrase(param.ty)
-                )
-                .into());
-            };
-            inputs.push((arg_name.clone(), value));
-        }
+        let inputs = session::argument_inputs(&algorithm, args)?;
         self.set_selection(None)?;
         self.show_algorithm_panel = true;
         self.algorithm_tab = AlgorithmTab::Run;
@@ -156,27 +126,8 @@ impl EdgewiseApp {
 
     /// The message line while an algorithm runs: its prompt or the step.
     pub(super) fn algorithm_message(&self) -> Option<String> {
-        match &self.tab().run.run {
-            Run::Idle => None,
-            Run::Picking(pending) => Some(pending.prompt().unwrap_or_else(|| {
-                format!(
-                    "{}: set its inputs, then press Start",
-                    pending.algorithm.name
-                )
-            })),
-            Run::Tracing(session) => {
-                let frame = self.tab().run.current_frame(&self.theme)?;
-                let step = format!("Step {} of {}: {}", frame.step, frame.steps, frame.message);
-                let question = session
-                    .quiz
-                    .as_ref()
-                    .and_then(|quiz| quiz.waiting(session.step()));
-                Some(match question {
-                    Some(asked) => format!("{step} Question: {}", asked.posed.question.prompt),
-                    None => step,
-                })
-            }
-        }
+        let frame = self.tab().run.current_frame(&self.theme);
+        edgewise_model::message::run_message(&self.tab().run.run, frame.as_deref())
     }
 
     /// Advances a playing trace and schedules the next frame for it.
@@ -239,7 +190,7 @@ impl EdgewiseApp {
         let structure = self.tabs[self.active_tab]
             .document
             .as_ref()
-            .map(crate::document::Document::structure);
+            .map(edgewise_model::document::Document::structure);
         let mut chosen = None;
         let mut write = false;
         self.menu_ui(ui, "Algorithm", |this, ui| {
@@ -325,7 +276,10 @@ impl EdgewiseApp {
                     ui.separator();
                 }
                 let tab = &mut self.tabs[self.active_tab];
-                let mesh = tab.document.as_ref().map(crate::document::Document::mesh);
+                let mesh = tab
+                    .document
+                    .as_ref()
+                    .map(edgewise_model::document::Document::mesh);
                 if let Some(command) = self
                     .algorithms
                     .panel_ui(&mut tab.run, ui, &self.theme, mesh)
@@ -392,21 +346,5 @@ fn other(structure: Structure) -> Structure {
     match structure {
         Structure::WingedEdge => Structure::HalfEdge,
         Structure::HalfEdge => Structure::WingedEdge,
-    }
-}
-
-/// "a Vertex id", "an Integer", "true or false".
-fn type_phrase(ty: edgewise_core::lang::Type) -> &'static str {
-    use edgewise_core::lang::Type;
-    match ty {
-        Type::Vertex => "a Vertex id",
-        Type::Edge => "an Edge id",
-        Type::Face => "a Face id",
-        Type::Integer => "an Integer",
-        Type::Boolean => "true or false",
-        Type::Float => "a number",
-        Type::Vector => "a Vector",
-        Type::Null => "null",
-        Type::Array(_) => "nothing: an array starts empty",
     }
 }

@@ -16,10 +16,10 @@ use edgewise_core::{
 };
 
 use super::{EdgewiseApp, embed::Embed, settings_ui::Presentation};
-use crate::{
-    Argument,
-    algorithm::Origin,
-    command::Command,
+use crate::command::Command;
+use edgewise_model::{
+    algorithm::library::Origin,
+    algorithm::session::Argument,
     course_link::{self, CourseLink, MeshSource, Panels, ThemeChoice},
     selection::Role,
     settings::{self, Settings},
@@ -52,8 +52,9 @@ impl EdgewiseApp {
             }
             Some(MeshSource::Polygons(polygons)) => {
                 let structure = structure.unwrap_or(self.tab().structure);
-                let loaded =
-                    crate::document::Document::from_polygons("link.obj", polygons, structure);
+                let loaded = edgewise_model::document::Document::from_polygons(
+                    "link.obj", polygons, structure,
+                );
                 self.open(loaded, true, false)
             }
             Some(MeshSource::Path(path)) => match fetched {
@@ -78,37 +79,7 @@ impl EdgewiseApp {
         // What follows (an algorithm, a step, a selection) needs the mesh.
         self.finish_pending();
 
-        if let Some(source) = &link.algorithm_source
-            && let Err(message) = self.load_algorithms(source, "link.alg")
-        {
-            messages.push(message.into());
-        }
-        if let Some(name) = &link.algorithm {
-            match self.run_algorithm(name, &link.args) {
-                Ok(()) => {
-                    if let Some(questions) = &link.questions
-                        && let Err(message) = self.execute(Command::SetQuestions(questions.clone()))
-                    {
-                        messages.push(format!("#ask=: {message}"));
-                    }
-                    if let Some(step) = link.step
-                        && let Err(message) = self.trace_goto(step)
-                    {
-                        messages.push(format!("step={step}: {message}"));
-                    }
-                }
-                Err(message) => messages.push(format!("algorithm={name}: {message}")),
-            }
-        } else if link.step.is_some() {
-            messages.push("step= needs an algorithm= to step through".to_owned());
-        }
-        if let Some(selection) = link.selection {
-            if self.tab().run.is_active() {
-                messages.push("select= is ignored while an algorithm runs".to_owned());
-            } else if let Err(message) = self.select(Some(selection)) {
-                messages.push(format!("select=: {message}"));
-            }
-        }
+        link.follow(self, &mut messages);
         if let Some(camera) = link.camera {
             self.tab_mut().pane.view.set_camera(camera.sanitized());
         }
@@ -127,19 +98,7 @@ impl EdgewiseApp {
     /// Theme, colours, code size, embedding and presentation from a link.
     /// They apply to this visit only: the user's saved settings stay.
     fn apply_link_look(&mut self, link: &CourseLink) {
-        let mut settings = self.settings.clone();
-        if let Some(theme) = link.theme {
-            settings.dark = theme == ThemeChoice::Dark;
-        }
-        for (key, [r, g, b]) in &link.colors {
-            settings.colours.insert(
-                key.clone(),
-                edgewise_pictures::palette::to_hex(egui::Color32::from_rgb(*r, *g, *b)),
-            );
-        }
-        if let Some(size) = link.code_size {
-            settings.code_size = size;
-        }
+        let settings = link.look(&self.settings);
         if settings != self.settings {
             let (settings, message) = settings.sanitized();
             if let Some(message) = message {
@@ -195,13 +154,13 @@ impl EdgewiseApp {
         }
         let run = self.tab().run.algorithm().map(|algorithm| {
             let inputs: Vec<(String, Value)> = match &self.tab().run.run {
-                crate::algorithm::Run::Tracing(session) => algorithm
+                edgewise_model::algorithm::session::Run::Tracing(session) => algorithm
                     .params()
                     .zip(session.trace.initial_variables())
                     .map(|(p, v)| (p.name.clone(), v))
                     .collect(),
-                crate::algorithm::Run::Picking(pending) => pending.inputs.clone(),
-                crate::algorithm::Run::Idle => Vec::new(),
+                edgewise_model::algorithm::session::Run::Picking(pending) => pending.inputs.clone(),
+                edgewise_model::algorithm::session::Run::Idle => Vec::new(),
             };
             (Arc::clone(algorithm), inputs)
         });
@@ -224,7 +183,7 @@ impl EdgewiseApp {
             link.step = self.tabs[self.active_tab]
                 .run
                 .session()
-                .map(crate::algorithm::TraceSession::step);
+                .map(edgewise_model::algorithm::session::TraceSession::step);
             link.selection = None;
         }
         link.camera = Some(self.tab().pane.view.camera());
@@ -360,6 +319,36 @@ impl EdgewiseApp {
             self.share_status = None;
         }
         self.show_share = open;
+    }
+}
+
+/// The app follows a link's algorithm, step and selection through its
+/// commands, as a user would.
+impl course_link::Follow for EdgewiseApp {
+    fn load_algorithms(&mut self, source: &str, file: &str) -> Result<(), String> {
+        Ok(self.load_algorithms(source, file).map(drop)?)
+    }
+
+    fn run_algorithm(&mut self, name: &str, args: &[(String, Argument)]) -> Result<(), String> {
+        Ok(self.run_algorithm(name, args)?)
+    }
+
+    fn set_questions(&mut self, text: &str) -> Result<(), String> {
+        Ok(self
+            .execute(Command::SetQuestions(text.to_owned()))
+            .map(drop)?)
+    }
+
+    fn goto(&mut self, step: usize) -> Result<(), String> {
+        Ok(self.trace_goto(step)?)
+    }
+
+    fn is_running(&self) -> bool {
+        self.tab().run.is_active()
+    }
+
+    fn select(&mut self, element: edgewise_core::schema::ElementRef) -> Result<(), String> {
+        Ok(self.select(Some(element))?)
     }
 }
 

@@ -13,9 +13,10 @@ use edgewise_core::mesh::{
 use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
 
 use super::EdgewiseApp;
-use crate::command::{Argument, Command};
-use crate::document::Document;
+use crate::command::Command;
 use crate::state::{EditMenuEntry, EditMenuState};
+use edgewise_model::algorithm::session::Argument;
+use edgewise_model::document::Document;
 
 /// The operations the menu offers on an edge, in this order.
 const EDGE_OPERATIONS: [Operation; 6] = [

@@ -8,7 +8,8 @@ use edgewise_core::mesh::{Edit as _, Renumbering};
 use edgewise_core::schema::ElementKind;
 
 use super::EdgewiseApp;
-use crate::{algorithm::TraceSession, command::Command};
+use crate::command::Command;
+use edgewise_model::algorithm::session::TraceSession;
 
 /// Renumbered ids listed per table before "and N more".
 const MAPPED: usize = 8;

@@ -3,7 +3,7 @@
 //! element does (select it, give it to an algorithm waiting for an input,
 //! answer a question, end a finished run). `/` puts the cursor in it.
 
-use edgewise_core::schema::{ElementKind, ElementRef, Records as _};
+use edgewise_core::schema::Records as _;
 
 use super::EdgewiseApp;
 
@@ -11,30 +11,6 @@ use super::EdgewiseApp;
 const ID: &str = "element_box";
 /// Below this many points of message line, the box shrinks.
 const NARROW: f32 = 520.0;
-
-/// Reads `vertex 3`, `v3`, `edge 5`, `e 5`, `half-edge 5`, `h5`, `face 1`
-/// or `f1` (any case).
-pub fn parse_element(text: &str) -> Result<ElementRef, String> {
-    let text = text.trim().to_ascii_lowercase();
-    let split = text
-        .find(|c: char| c.is_ascii_digit())
-        .unwrap_or(text.len());
-    let (word, number) = text.split_at(split);
-    let kind = match word.trim() {
-        "v" | "vertex" => Some(ElementKind::Vertex),
-        "e" | "h" | "edge" | "half-edge" | "halfedge" => Some(ElementKind::Edge),
-        "f" | "face" => Some(ElementKind::Face),
-        _ => None,
-    };
-    let id = number.trim().parse::<u32>().ok();
-    match (kind, id) {
-        (Some(kind), Some(id)) => Ok(ElementRef::new(kind, id)),
-        _ => Err(format!(
-            "`{}`: type an element as vertex, edge or face and its id, such as e 3 or vertex 1",
-            text.chars().take(40).collect::<String>()
-        )),
-    }
-}
 
 impl EdgewiseApp {
     /// The box, at the right of the message line.
@@ -83,7 +59,7 @@ impl EdgewiseApp {
 
     /// Does what a click on the typed element does, or says why not.
     fn element_typed(&mut self, typed: &str) {
-        let element = match parse_element(typed) {
+        let element = match edgewise_model::selection::parse_element(typed) {
             Ok(element) => element,
             Err(message) => return self.report(message),
         };
@@ -99,32 +75,5 @@ impl EdgewiseApp {
             ));
         }
         self.element_clicked(Some(element));
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn elements_are_read_in_long_and_short_forms() {
-        let cases = [
-            ("vertex 3", ElementRef::new(ElementKind::Vertex, 3)),
-            ("v3", ElementRef::new(ElementKind::Vertex, 3)),
-            (" E 12 ", ElementRef::new(ElementKind::Edge, 12)),
-            ("half-edge 5", ElementRef::new(ElementKind::Edge, 5)),
-            ("h5", ElementRef::new(ElementKind::Edge, 5)),
-            ("face1", ElementRef::new(ElementKind::Face, 1)),
-        ];
-        for (text, element) in cases {
-            assert_eq!(parse_element(text), Ok(element), "{text}");
-        }
-        for text in ["3", "edge", "x 3", "edge -1", "edge 99999999999"] {
-            assert!(parse_element(text).is_err(), "{text}");
-        }
-        assert_eq!(
-            parse_element("q 1"),
-            Err("`q 1`: type an element as vertex, edge or face and its id, such as e 3 or vertex 1".to_owned())
-        );
     }
 }

@@ -41,7 +41,7 @@ impl EdgewiseApp {
         let session = tab.run.session();
         let now = Observed {
             mesh: document.map(|d| (d.mesh_id(), d.structure().link_name())),
-            selection: document.and_then(crate::document::Document::selection),
+            selection: document.and_then(edgewise_model::document::Document::selection),
             step: session.map(|s| (s.trace.algorithm().name.clone(), s.step(), s.steps())),
             height: preferred_height(ctx.content_rect().width(), self.chrome_height),
         };

@@ -5,11 +5,12 @@ use edgewise_core::{
     mesh::{Structure, operations::Operation},
     schema::ElementRef,
 };
+use edgewise_model::algorithm::run::AlgorithmRun;
+use edgewise_model::algorithm::session::Argument;
 
 use crate::{
     EdgewiseApp,
-    algorithm::AlgorithmRun,
-    command::{Argument, Command, CommandError, Reply},
+    command::{Command, CommandError, Reply},
 };
 
 impl EdgewiseApp {
@@ -135,7 +136,12 @@ impl EdgewiseApp {
                 let svg = self.export_svg()?;
                 let name = self.tab().document.as_ref().map_or_else(
                     || "edgewise.svg".to_owned(),
-                    |document| format!("{}.svg", crate::files::mesh_stem(&document.name)),
+                    |document| {
+                        format!(
+                            "{}.svg",
+                            edgewise_model::document::mesh_stem(&document.name)
+                        )
+                    },
                 );
                 done(self.files.io.write(&name, svg.as_bytes()).map(drop))
             }

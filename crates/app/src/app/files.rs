@@ -66,15 +66,6 @@ pub struct SavedFile {
     pub bytes: Vec<u8>,
 }
 
-/// `name` without its extension if it has a mesh format's extension
-/// ("cube.htb" → "cube"; "torus-200k" stays).
-pub fn mesh_stem(name: &str) -> &str {
-    match name.rsplit_once('.') {
-        Some((stem, _)) if !stem.is_empty() && Format::from_name(name).is_some() => stem,
-        _ => name,
-    }
-}
-
 impl EdgewiseApp {
     /// The open mesh written as `format`, named after the mesh
     /// (`cube.htb` saved as OBJ is `cube.obj`). Table formats convert a mesh
@@ -86,7 +77,7 @@ impl EdgewiseApp {
         Ok(SavedFile {
             name: format!(
                 "{}.{}",
-                mesh_stem(&document.name),
+                edgewise_model::document::mesh_stem(&document.name),
                 format.format().extension()
             ),
             bytes,
@@ -270,15 +261,6 @@ impl EdgewiseApp {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_stem_drops_only_mesh_extensions() {
-        assert_eq!(mesh_stem("cube.htb"), "cube");
-        assert_eq!(mesh_stem("my.mesh.obj"), "my.mesh");
-        assert_eq!(mesh_stem("torus-200k"), "torus-200k");
-        assert_eq!(mesh_stem("notes.txt"), "notes.txt");
-        assert_eq!(mesh_stem(".obj"), ".obj");
-    }
 
     #[test]
     fn save_formats_round_trip_their_keys() {

@@ -60,7 +60,7 @@ impl EdgewiseApp {
         self.explaining = false;
         if self.settings.welcome {
             self.settings.welcome = false;
-            crate::settings::store(&self.settings);
+            crate::stored_settings::store(&self.settings);
         }
     }
 
@@ -71,7 +71,7 @@ impl EdgewiseApp {
             .tab()
             .document
             .as_ref()
-            .and_then(crate::document::Document::selection);
+            .and_then(edgewise_model::document::Document::selection);
         let ran = self
             .tab()
             .run

@@ -10,7 +10,7 @@ use edgewise_pictures::options::ViewOptions;
 use edgewise_pictures::styles::SceneStyles;
 use edgewise_renderer::view3d::{Preparation, View3d, ViewResponse};
 
-use crate::{document::Document, paint::Paint};
+use edgewise_model::{document::Document, paint::Paint};
 
 /// Everything a view's colours and labels are derived from, each by a
 /// number that changes with it.
@@ -70,7 +70,7 @@ impl Pane {
 
     /// Derives the styles of `mesh`'s elements from `paint`, for `key`.
     pub(crate) fn restyle(&mut self, key: PaintKey, mesh: &Mesh, paint: &Paint) {
-        self.styles = super::scene_styles(mesh, paint, self.styles.generation + 1);
+        self.styles = edgewise_model::paint::scene_styles(mesh, paint, self.styles.generation + 1);
         self.styled = Some(key);
     }
 

@@ -8,9 +8,9 @@ use std::collections::VecDeque;
 use egui::Widget as _;
 
 use super::EdgewiseApp;
-use crate::document::Document;
 use crate::history::Kind;
 use edgewise_core::mesh::{Issue, MeshStats};
+use edgewise_model::document::Document;
 use edgewise_pictures::geometry::MeshGeometry;
 use edgewise_renderer::view3d::Preparation;
 

@@ -3,8 +3,8 @@
 
 use super::EdgewiseApp;
 use crate::platform;
-use crate::{
-    settings::{self, CODE_SIZES, Settings},
+use edgewise_model::{
+    settings::{CODE_SIZES, Settings},
     trace_role::TraceRole,
 };
 
@@ -38,7 +38,7 @@ impl EdgewiseApp {
         }
         self.theme = settings.theme();
         self.algorithms.code_size = settings.code_size;
-        settings::store(&settings);
+        crate::stored_settings::store(&settings);
         self.settings = settings;
     }
 
@@ -106,7 +106,7 @@ impl EdgewiseApp {
                         egui::Grid::new("role_colours")
                             .num_columns(2)
                             .show(ui, |ui| {
-                                for role in crate::selection::Role::all() {
+                                for role in edgewise_model::selection::Role::all() {
                                     let mut colour = theme.role_colour(role);
                                     let response = ui.color_edit_button_srgba(&mut colour);
                                     let name = role.title(edgewise_core::schema::ElementKind::Edge);

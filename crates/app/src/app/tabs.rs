@@ -2,6 +2,7 @@
 //! belongs to one mesh; the app draws and commands the active one, so a tab
 //! switch only changes which one that is.
 
+use edgewise_model::algorithm::run::AlgorithmRun;
 use std::borrow::Cow;
 use std::cell::RefCell;
 
@@ -19,12 +20,13 @@ use super::{
 };
 use crate::command::{Command, CommandError};
 use crate::{
-    algorithm::AlgorithmRun,
-    document::Document,
     history::{History, Kind},
     obj_editor::ObjEditor,
-    paint::{MOST_MARKED, Paint},
     state::TabState,
+};
+use edgewise_model::{
+    document::Document,
+    paint::{MOST_MARKED, Paint},
 };
 
 /// One open mesh and everything shown for it: its document, 3D view and

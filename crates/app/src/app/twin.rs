@@ -9,7 +9,7 @@ use edgewise_core::schema::ElementRef;
 use super::EdgewiseApp;
 use super::pane::{PaintKey, Pane};
 use crate::command::CommandError;
-use crate::{
+use edgewise_model::{
     document::{Document, map_element},
     paint::Paint,
 };

@@ -368,7 +368,7 @@ fn read_answer(call: &'static str, value: &JsValue, id: &JsValue) -> Result<Comm
         if !n.is_finite() || n.abs() > f64::from(f32::MAX) {
             return Err(expected(call, "value", "a finite number", value));
         }
-        crate::algorithm::quiz::number_value(n as f32)
+        edgewise_model::algorithm::quiz::number_value(n as f32)
     } else if value.is_string() {
         read_element(call, value, id)?.into()
     } else {

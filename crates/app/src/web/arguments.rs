@@ -7,7 +7,7 @@ use eframe::wasm_bindgen::{self, JsCast as _, JsValue, prelude::wasm_bindgen};
 
 use edgewise_core::mesh::Structure;
 
-use crate::Argument;
+use edgewise_model::algorithm::session::Argument;
 
 // Catching forms of the reflection calls the arguments go through. A page
 // can pass a Proxy whose traps throw, or a revoked one; js-sys's own

@@ -65,7 +65,7 @@ async fn record(runner: &eframe::WebRunner, delay: f64) -> Result<JsValue, Strin
         let mesh = tab.document.as_ref().map_or("mesh", |d| d.name.as_str());
         let name = format!(
             "{}-{}.webm",
-            crate::files::mesh_stem(mesh),
+            edgewise_model::document::mesh_stem(mesh),
             session.trace.algorithm().name
         );
         Some((name, session.step(), session.steps()))

@@ -2,7 +2,7 @@
 //! loads `edgewise-embed.js` when it uses it, and carries a course link that
 //! parses without a single complaint and names a real sample and algorithm.
 
-use edgewise_app::course_link::{CourseLink, MeshSource};
+use edgewise_model::course_link::{CourseLink, MeshSource};
 
 const DOC: &str = include_str!("../../../../docs/embedding.md");
 const SERVED_AT: &str = "https://example.edu/edgewise/";
@@ -72,7 +72,7 @@ fn every_lecture_tool_snippet_carries_a_titled_working_link() {
             panic!("{name}: a sample mesh");
         };
         assert!(
-            edgewise_app::samples::find(sample).is_some(),
+            edgewise_model::samples::find(sample).is_some(),
             "{name}: {sample}"
         );
         if let Some(algorithm) = &parsed.algorithm {

@@ -5,8 +5,8 @@
 
 use crate::support;
 
-use edgewise_app::Argument;
 use edgewise_core::mesh::{HalfEdgeId, Mesh, Structure, VertexId};
+use edgewise_model::algorithm::session::Argument;
 
 fn end_vertex(harness: &support::AppHarness, h: u32) -> Option<VertexId> {
     let app = harness.state();

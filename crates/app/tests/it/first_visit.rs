@@ -4,8 +4,8 @@
 
 use crate::support;
 
-use edgewise_app::Argument;
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_model::algorithm::session::Argument;
 use egui_kittest::kittest::Queryable as _;
 
 #[test]

@@ -10,10 +10,8 @@ use crate::support;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::path::PathBuf;
 
-use edgewise_app::{
-    EdgewiseApp,
-    course_link::{self, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS},
-};
+use edgewise_app::EdgewiseApp;
+use edgewise_model::course_link::{self, MAX_INFLATED_BYTES, MAX_PAYLOAD_CHARS};
 use egui_kittest::Harness;
 
 fn expected_path(name: &str) -> PathBuf {

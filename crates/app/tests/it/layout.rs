@@ -6,9 +6,9 @@
 
 use crate::support;
 
-use edgewise_app::Argument;
 use edgewise_app::state::LayoutState;
 use edgewise_core::mesh::Structure;
+use edgewise_model::algorithm::session::Argument;
 
 fn layout(harness: &support::AppHarness) -> LayoutState {
     harness.state().state().layout

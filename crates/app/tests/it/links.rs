@@ -4,9 +4,9 @@
 
 use crate::support;
 
-use edgewise_app::{Argument, course_link};
 use edgewise_core::mesh::{Mesh, Structure, generate, operations::Operation};
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_model::{algorithm::session::Argument, course_link};
 
 #[test]
 fn a_sample_an_algorithm_and_a_step() {

@@ -27,6 +27,7 @@ mod pending;
 mod pixel_cost;
 mod questions;
 mod snapshots;
+mod still;
 mod tabs;
 mod trace;
 mod ui;

@@ -152,7 +152,7 @@ fn an_element_click_answers_and_wrong_kinds_are_refused() {
 
 #[test]
 fn a_course_link_carries_the_set_and_share_keeps_it() {
-    let payload = edgewise_app::course_link::encode_payload(SET);
+    let payload = edgewise_model::course_link::encode_payload(SET);
     let (harness, messages) = support::open_link(
         "sample=tetrahedron&algorithm=vertexAdjacentEdge&args=v:1&step=4",
         &format!("ask={payload}"),
@@ -171,7 +171,7 @@ fn a_course_link_carries_the_set_and_share_keeps_it() {
 
     // A bad set names the parameter and its line and column; the rest of
     // the link still opens.
-    let bad = edgewise_app::course_link::encode_payload("line 13: fine\nstep x: oops\n");
+    let bad = edgewise_model::course_link::encode_payload("line 13: fine\nstep x: oops\n");
     let (harness, messages) = support::open_link(
         "sample=tetrahedron&algorithm=vertexAdjacentEdge&args=v:1",
         &format!("ask={bad}"),

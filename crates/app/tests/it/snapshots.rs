@@ -15,9 +15,10 @@
 use crate::support;
 
 use crate::support::app_renderer::AppRenderer;
-use edgewise_app::{Argument, EdgewiseApp, settings::Settings};
+use edgewise_app::EdgewiseApp;
 use edgewise_core::mesh::Structure;
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_model::{algorithm::session::Argument, settings::Settings};
 use egui_kittest::{Harness, SnapshotOptions, kittest::Queryable as _};
 
 /// Lavapipe and the text rasteriser are deterministic on one machine; the
@@ -217,10 +218,10 @@ fn hostile_link_error_light() {
     );
     let fragment = format!(
         "#alg={}",
-        edgewise_app::course_link::encode_payload(&source)
+        edgewise_model::course_link::encode_payload(&source)
     );
     let (link, messages) =
-        edgewise_app::course_link::CourseLink::parse("?sample=tetrahedron", &fragment);
+        edgewise_model::course_link::CourseLink::parse("?sample=tetrahedron", &fragment);
     let messages = harness.state_mut().apply_course_link(&link, messages, None);
     assert_eq!(messages.len(), 1, "{messages:?}");
     harness.run();

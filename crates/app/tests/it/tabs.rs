@@ -3,12 +3,12 @@
 
 use crate::support;
 
-use edgewise_app::Argument;
 use edgewise_core::schema::{ElementKind, ElementRef};
 use edgewise_core::{
     formats,
     mesh::{EdgeId, Mesh, Structure},
 };
+use edgewise_model::algorithm::session::Argument;
 use egui_kittest::kittest::Queryable as _;
 
 #[test]

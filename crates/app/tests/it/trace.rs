@@ -8,8 +8,9 @@ use crate::support;
 use edgewise_core::schema::ElementKind;
 use std::collections::BTreeSet;
 
-use edgewise_app::{Argument, EdgewiseApp};
+use edgewise_app::EdgewiseApp;
 use edgewise_core::mesh::{EdgeId, HalfEdgeId, Mesh, Structure, VertexId};
+use edgewise_model::algorithm::session::Argument;
 use egui_kittest::{
     Harness,
     kittest::{NodeT as _, Queryable as _},
@@ -435,7 +436,7 @@ fn a_changed_trace_colour_is_used_and_reset_restores_the_journals() {
     let mut harness = support::harness_with("tetrahedron", None);
     let mut settings = harness.state().settings().clone();
     settings.set_colour(
-        edgewise_app::trace_role::TraceRole::Lookup,
+        edgewise_model::trace_role::TraceRole::Lookup,
         egui::Color32::from_rgb(0x12, 0x34, 0x56),
     );
     harness.state_mut().set_settings(settings);

@@ -3,8 +3,8 @@
 //! refused with the option or file it comes from.
 
 use crate::common::{code, root, run, scratch, stderr, stdout};
-use edgewise_app::{EdgewiseApp, GraphicsBackend};
 use edgewise_core::schema::{ElementKind, ElementRef};
+use edgewise_model::still::Still;
 
 /// Pages of a handout: each page object has `/Type /Page` followed by a
 /// space, where the page tree has `/Type /Pages`.
@@ -14,7 +14,7 @@ fn pages(pdf: &[u8]) -> usize {
 }
 
 #[test]
-fn an_svg_is_the_apps_own_export() {
+fn an_svg_is_the_models_picture_of_the_moment() {
     let dir = scratch("render-svg");
     let out = dir.join("edge.svg");
     let output = run(&[
@@ -30,20 +30,18 @@ fn an_svg_is_the_apps_own_export() {
     assert!(stdout(&output).starts_with("wrote "), "{}", stdout(&output));
     let written = std::fs::read_to_string(&out).expect("the SVG is written");
 
-    let mut app = EdgewiseApp::with_backend(GraphicsBackend::None, None);
+    // The app's own export is held to the same `Still` by the app's tests
+    // (`still.rs` there).
+    let mut still = Still::new(false);
     let bytes = std::fs::read(root().join("meshes/tetrahedron.wtb")).expect("the sample");
-    app.execute(edgewise_app::command::Command::LoadMesh {
-        bytes,
-        name: "meshes/tetrahedron.wtb".to_owned(),
-        structure: None,
-        diagnose: false,
-    })
-    .expect("opens");
-    app.lay_out_offscreen(640.0, 480.0);
-    app.select(Some(ElementRef::new(ElementKind::Edge, 0)))
+    still
+        .load_mesh(&bytes, "meshes/tetrahedron.wtb", None)
+        .expect("opens");
+    still.lay_out(640.0, 480.0);
+    still
+        .select(Some(ElementRef::new(ElementKind::Edge, 0)))
         .expect("selects");
-    app.lay_out_offscreen(640.0, 480.0);
-    let exported = app.export_svg().expect("exports");
+    let exported = still.svg().expect("exports");
     assert_eq!(written, exported);
     assert!(written.contains("width=\"640\""), "{written}");
     assert!(written.contains(">left predecessor</text>"), "{written}");

@@ -71,7 +71,7 @@ impl TestRenderer for AppRenderer {
         };
         let jobs = ctx.tessellate(output.shapes.clone(), ppp);
         let [r, g, b, a] =
-            edgewise_app::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
+            edgewise_app::visuals::backdrop(ctx.global_style().visuals.dark_mode).map(f64::from);
         let clear = wgpu::Color { r, g, b, a };
         let pixels = render_to_pixels(rs, &jobs, &screen, clear)?;
         image::RgbaImage::from_raw(width, height, pixels)

@@ -12,11 +12,12 @@ use std::{
     sync::Arc,
 };
 
-use edgewise_app::{EdgewiseApp, GraphicsBackend, course_link::CourseLink};
+use edgewise_app::{EdgewiseApp, GraphicsBackend};
 use edgewise_core::{
     formats,
     mesh::{Mesh, Structure},
 };
+use edgewise_model::course_link::CourseLink;
 use egui_kittest::{Harness, kittest::Queryable as _};
 
 /// The app under test.
@@ -68,7 +69,10 @@ pub fn run_vertex_adjacent_edge(harness: &mut AppHarness, v: u32) {
         .state_mut()
         .run_algorithm(
             "vertexAdjacentEdge",
-            &[("v".to_owned(), edgewise_app::Argument::Number(f64::from(v)))],
+            &[(
+                "v".to_owned(),
+                edgewise_model::algorithm::session::Argument::Number(f64::from(v)),
+            )],
         )
         .expect("vertexAdjacentEdge runs");
     harness.run();
@@ -80,7 +84,10 @@ pub fn run_flip_edge(harness: &mut AppHarness, h: u32) {
         .state_mut()
         .run_algorithm(
             "flipEdge",
-            &[("h".to_owned(), edgewise_app::Argument::Number(f64::from(h)))],
+            &[(
+                "h".to_owned(),
+                edgewise_model::algorithm::session::Argument::Number(f64::from(h)),
+            )],
         )
         .expect("flipEdge runs");
     harness.run();

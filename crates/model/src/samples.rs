@@ -2,6 +2,10 @@
 //! away. The two largest are generated instead of shipped: the 200k-face
 //! torus for scale, and icosphere-20k (the same ids and positions as its file).
 
+use edgewise_core::mesh::{Structure, generate};
+
+use crate::document::{Document, structure_for};
+
 /// Where a sample's data comes from.
 pub enum SampleData {
     /// A file from meshes/, read by its extension.
@@ -133,4 +137,39 @@ pub const SAMPLES: &[Sample] = &[
 /// The sample called `name`.
 pub fn find(name: &str) -> Option<&'static Sample> {
     SAMPLES.iter().find(|s| s.name == name)
+}
+
+/// Opens the sample called `name` as `structure`; with none, a table file
+/// opens as the structure it stores and the others as `fallback`.
+pub fn open(
+    name: &str,
+    structure: Option<Structure>,
+    fallback: Structure,
+) -> Result<Document, String> {
+    let Some(sample) = find(name) else {
+        let names: Vec<&str> = SAMPLES.iter().map(|s| s.name).collect();
+        return Err(format!(
+            "there is no sample called '{name}'; the samples are: {}",
+            names.join(", ")
+        ));
+    };
+    let structure = match &sample.data {
+        SampleData::File { file_name, .. } | SampleData::Icosphere { file_name, .. } => {
+            structure.unwrap_or_else(|| structure_for(file_name, fallback))
+        }
+        SampleData::Torus { .. } => structure.unwrap_or(fallback),
+    };
+    let loaded = match &sample.data {
+        SampleData::File { file_name, bytes } => Document::load(bytes, file_name, structure),
+        SampleData::Torus { nu, nv } => {
+            Document::from_polygons(sample.name, &generate::torus(*nu, *nv), structure)
+        }
+        SampleData::Icosphere { file_name, levels } => {
+            Document::from_polygons(file_name, &generate::icosphere(*levels), structure)
+        }
+    };
+    loaded.map(|mut document| {
+        document.sample = Some(sample.name.to_owned());
+        document
+    })
 }

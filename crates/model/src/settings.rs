@@ -5,13 +5,10 @@
 use edgewise_pictures::palette::to_hex;
 use std::collections::BTreeMap;
 
-use egui::Color32;
+use ecolor::Color32;
 use serde::{Deserialize, Serialize};
 
 use crate::{selection::Role, theme::Theme, trace_role::TraceRole};
-
-/// The local-storage key.
-pub const STORAGE_KEY: &str = "edgewise.settings";
 
 /// The colour key of boundary half-edges, beside the trace and selection
 /// roles' keys.
@@ -160,20 +157,6 @@ pub fn parse_hex(text: &str) -> Option<Color32> {
     let value = u32::from_str_radix(hex, 16).ok()?;
     let [_, r, g, b] = value.to_be_bytes();
     Some(Color32::from_rgb(r, g, b))
-}
-
-/// Loads the settings saved in this browser, if any (natively, settings
-/// last the session).
-pub fn load_stored() -> (Settings, Option<String>) {
-    match crate::platform::load_settings(STORAGE_KEY) {
-        Some(json) => Settings::from_json(&json),
-        None => (Settings::default(), None),
-    }
-}
-
-/// Saves the settings where the platform keeps them.
-pub fn store(settings: &Settings) {
-    crate::platform::store_settings(STORAGE_KEY, &settings.to_json());
 }
 
 #[cfg(test)]

@@ -262,6 +262,82 @@ pub enum Run {
     Tracing(Box<TraceSession>),
 }
 
+/// One argument of `run(name, args)` as JavaScript or a URL gives it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Argument {
+    Number(f64),
+    Boolean(bool),
+}
+
+impl Argument {
+    /// Reads `true`, `false` or a finite number, as links and the command
+    /// line write an input.
+    pub fn parse(text: &str) -> Option<Self> {
+        match text {
+            "true" => Some(Self::Boolean(true)),
+            "false" => Some(Self::Boolean(false)),
+            // Rust also reads "inf" and "NaN"; no input has a use for them.
+            _ => text
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .map(Self::Number),
+        }
+    }
+}
+
+/// The inputs `args` give `algorithm`, each read for its parameter's type;
+/// a name it does not have, or a value that does not fit, is refused with
+/// the parameters or the type it wants.
+pub fn argument_inputs(
+    algorithm: &Algorithm,
+    args: &[(String, Argument)],
+) -> Result<Vec<(String, Value)>, String> {
+    let mut inputs = Vec::with_capacity(args.len());
+    for (arg_name, arg) in args {
+        let Some(param) = algorithm.params().find(|p| p.name == *arg_name) else {
+            let names: Vec<&str> = algorithm.params().map(|p| p.name.as_str()).collect();
+            return Err(format!(
+                "{} has no parameter `{arg_name}` (its parameters: {})",
+                algorithm.name,
+                names.join(", ")
+            ));
+        };
+        let (number, boolean) = match arg {
+            Argument::Number(n) => (Some(*n), None),
+            Argument::Boolean(b) => (None, Some(*b)),
+        };
+        let Some(value) = argument_value(param.ty, number, boolean) else {
+            let what = match arg {
+                Argument::Number(n) => n.to_string(),
+                Argument::Boolean(b) => b.to_string(),
+            };
+            return Err(format!(
+                "parameter `{arg_name}` of {} is {}, which `{what}` is not",
+                algorithm.name,
+                type_phrase(param.ty)
+            ));
+        };
+        inputs.push((arg_name.clone(), value));
+    }
+    Ok(inputs)
+}
+
+/// "a Vertex id", "an Integer", "true or false".
+fn type_phrase(ty: Type) -> &'static str {
+    match ty {
+        Type::Vertex => "a Vertex id",
+        Type::Edge => "an Edge id",
+        Type::Face => "a Face id",
+        Type::Integer => "an Integer",
+        Type::Boolean => "true or false",
+        Type::Float => "a number",
+        Type::Vector => "a Vector",
+        Type::Null => "null",
+        Type::Array(_) => "nothing: an array starts empty",
+    }
+}
+
 /// Reads a JavaScript or URL argument for parameter type `ty`: an element
 /// id, an integer, a number, or true/false.
 pub fn argument_value(ty: Type, number: Option<f64>, boolean: Option<bool>) -> Option<Value> {
@@ -294,7 +370,7 @@ mod tests {
     use edgewise_core::{mesh::generate, schema::Structure};
 
     use super::*;
-    use crate::algorithm::AlgorithmLibrary;
+    use crate::algorithm::library::AlgorithmLibrary;
 
     /// The sample tetrahedron: the journal's Table 2 as printed.
     fn tetrahedron() -> Mesh {

@@ -1,22 +1,10 @@
-//! Colours and text styles: a calm light and dark theme, and the colour of
-//! each selection role.
+//! The colours things are drawn in: a calm light and dark theme, the
+//! journal's trace colours and the colour of each selection role, with the
+//! user's own in their place.
 
-use egui::Color32;
+use ecolor::Color32;
 
 use crate::{selection::Role, trace_role::TraceRole};
-use edgewise_pictures::palette::Palette;
-
-/// The bold code face for keywords (egui ships only a regular monospace).
-const CODE_BOLD: &[u8] = include_bytes!("../assets/fonts/DejaVuSansMono-Bold.ttf");
-
-/// What the frame is cleared to: the 3D view's background, which is also
-/// the panels' colour. Panels draw no fill of their own and the app's views
-/// none over the clear ([`edgewise_pictures::options::ViewOptions::backdrop_cleared`]):
-/// a software renderer pays tens of milliseconds for each full-window fill,
-/// and each pixel is now filled once.
-pub fn backdrop(dark: bool) -> [f32; 4] {
-    Palette::new(dark).background.to_normalized_gamma_f32()
-}
 
 /// The app's visual theme.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
@@ -49,24 +37,6 @@ impl Theme {
         let mut hasher = std::collections::hash_map::DefaultHasher::new();
         self.hash(&mut hasher);
         hasher.finish()
-    }
-
-    /// Applies the theme to egui's visuals.
-    pub fn apply(&self, ctx: &egui::Context) {
-        let mut visuals = if self.dark {
-            egui::Visuals::dark()
-        } else {
-            egui::Visuals::light()
-        };
-        // Panels show the cleared frame ([`backdrop`]).
-        visuals.panel_fill = Color32::TRANSPARENT;
-        visuals.window_shadow = egui::epaint::Shadow::NONE;
-        visuals.popup_shadow = egui::epaint::Shadow::NONE;
-        if !self.dark {
-            visuals.window_fill = Color32::from_rgb(0xfa, 0xf9, 0xf6);
-            visuals.extreme_bg_color = Color32::from_rgb(0xfd, 0xfd, 0xfb);
-        }
-        ctx.set_visuals(visuals);
     }
 
     /// The colour of a selection role in the 3D view and the tables (each
@@ -117,29 +87,4 @@ impl Theme {
         let (r, g, b) = if self.dark { dark } else { light };
         Color32::from_rgb(r, g, b)
     }
-}
-
-/// The font family name of the bold code face, registered by
-/// [`install_fonts`]; the algorithm view sets keywords in it.
-pub const CODE_BOLD_FAMILY: &str = "code-bold";
-
-/// Registers the bold code face as the font family [`CODE_BOLD_FAMILY`],
-/// and as the last fallback of the
-/// other families for the control symbols (▶ ◀ ❚ ✖) the default fonts lack.
-/// Call before any text is laid out in the first frame, so it applies at once.
-pub fn install_fonts(ctx: &egui::Context) {
-    use egui::epaint::text::{FontData, FontInsert, FontPriority, InsertFontFamily};
-    let family = |family, priority| InsertFontFamily { family, priority };
-    ctx.add_font(FontInsert::new(
-        "DejaVuSansMono-Bold",
-        FontData::from_static(CODE_BOLD),
-        vec![
-            family(
-                egui::FontFamily::Name(CODE_BOLD_FAMILY.into()),
-                FontPriority::Highest,
-            ),
-            family(egui::FontFamily::Proportional, FontPriority::Lowest),
-            family(egui::FontFamily::Monospace, FontPriority::Lowest),
-        ],
-    ));
 }

@@ -89,6 +89,27 @@ impl AlgorithmLibrary {
             .or_else(|| of_structure().find(|e| e.algorithm.name.eq_ignore_ascii_case(name)))
             .map(|e| &e.algorithm)
     }
+    /// [`Self::find`], explaining a miss: the algorithm is written for the
+    /// other structure, or there is none of that name.
+    pub fn find_or_explain(
+        &self,
+        name: &str,
+        structure: Structure,
+    ) -> Result<Arc<Algorithm>, String> {
+        if let Some(algorithm) = self.find(name, structure) {
+            return Ok(Arc::clone(algorithm));
+        }
+        if self.exists_anywhere(name) {
+            return Err(format!(
+                "`{name}` is written for the {} structure and the mesh is {}; switch the structure to run it",
+                structure.other().prose(),
+                structure.prose()
+            ));
+        }
+        Err(format!(
+            "there is no algorithm called `{name}`; the Algorithm menu lists them"
+        ))
+    }
 
     /// Whether an algorithm of this name exists for some structure at all.
     pub fn exists_anywhere(&self, name: &str) -> bool {

@@ -5,14 +5,15 @@
 use edgewise_core::schema::{ElementKind, ElementRef};
 use std::collections::HashMap;
 
-use egui::Color32;
+use ecolor::Color32;
 
 use crate::{
     selection::{self, Highlight, Role},
     theme::Theme,
     trace_role::TraceRole,
 };
-use edgewise_core::mesh::{Change, Issue};
+use edgewise_core::mesh::{Change, Issue, Mesh};
+use edgewise_pictures::styles::{Pointer, SceneStyles};
 
 /// The most records marked at once as broken, deleted or changed: a runaway
 /// edit can make hundreds of thousands, and every marked one is outlined,
@@ -194,4 +195,40 @@ impl Paint {
     pub fn is_empty(&self) -> bool {
         self.painted.is_empty() && self.labels.is_empty() && self.pointers.is_empty()
     }
+}
+
+/// Per-element styles for `mesh` from a paint: an entry for each painted or
+/// labelled element the mesh has, in time proportional to the paint.
+pub fn scene_styles(mesh: &Mesh, paint: &Paint, generation: u64) -> SceneStyles {
+    let mut styles = SceneStyles {
+        generation,
+        fade_others: paint.fade_others && !paint.is_empty(),
+        elements: std::collections::BTreeMap::new(),
+        pointers: paint
+            .pointers
+            .iter()
+            .map(|&(element, colour)| Pointer {
+                target: element,
+                colour,
+            })
+            .collect(),
+    };
+    let exists = |element: ElementRef| {
+        let count = match element.kind {
+            ElementKind::Vertex => mesh.vertex_count(),
+            ElementKind::Edge => mesh.edge_row_count(),
+            ElementKind::Face => mesh.face_count(),
+        };
+        (element.id as usize) < count
+    };
+    // An element's first entry gives its colour: paint in reverse.
+    for p in paint.painted.iter().rev().filter(|p| exists(p.element)) {
+        let style = styles.elements.entry(p.element).or_default();
+        style.colour = Some(p.colour);
+    }
+    for (&element, label) in paint.labels.iter().filter(|(e, _)| exists(**e)) {
+        let style = styles.elements.entry(element).or_default();
+        style.label = Some(format!("{}: {label}", element.id));
+    }
+    styles
 }

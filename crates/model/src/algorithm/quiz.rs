@@ -1,15 +1,14 @@
 //! The questions of one traced run ([`edgewise_core::lang::question`]):
-//! which step asks which, what the student answered, and the card that asks.
+//! which step asks which, and what the student answered. The app draws the
+//! card that asks.
 //! Play stops at a question not yet answered; a click on an element, a
 //! button or a number answers it, once, and the card then says whether it
 //! was right and which steps give the answer.
 
 use edgewise_core::lang::question::{Posed, Question, pose};
-use edgewise_core::lang::{Trace, Value};
-use egui::RichText;
+use edgewise_core::lang::{Algorithm, Trace, Value};
 
 use super::frame::value_text;
-use crate::{command::Command, theme::Theme};
 
 /// A student's answer to one question.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -52,8 +51,8 @@ pub struct Quiz {
     answers: Vec<Option<Answered>>,
     /// A sentence for each question the run cannot ask.
     pub problems: Vec<String>,
-    /// What the number field holds.
-    number_text: String,
+    /// What the card's number field holds.
+    pub number_text: String,
 }
 
 /// One question as the card and `state()` show it.
@@ -164,91 +163,6 @@ impl Quiz {
             ),
         }
     }
-
-    /// The question card for `step`: the prompt, the ways to answer, then
-    /// the verdict and the steps that explain it. It names only the parts
-    /// the window `shows` (an embed may have no code and no tables).
-    pub fn question_ui(
-        &mut self,
-        ui: &mut egui::Ui,
-        trace: &Trace,
-        step: usize,
-        theme: &Theme,
-        shows: Shown,
-    ) -> Option<Command> {
-        let (answered_count, right) = self.score();
-        let total = self.len();
-        let asked = self.at(step)?;
-        let (index, expects, answered) = (asked.index, asked.expects, asked.answered);
-        let posed = asked.posed.clone();
-        let mut command = None;
-        let accent = theme.trace_colour(crate::trace_role::TraceRole::Compared);
-        egui::Frame::new()
-            .fill(accent.gamma_multiply(0.12))
-            .stroke(egui::Stroke::new(1.5, accent))
-            .inner_margin(8.0)
-            .corner_radius(4.0)
-            .show(ui, |ui| {
-                ui.set_width(ui.available_width());
-                let heading = if shows.code {
-                    format!(
-                        "Question {} of {total} (line {})",
-                        index + 1,
-                        posed.line(trace)
-                    )
-                } else {
-                    format!("Question {} of {total}", index + 1)
-                };
-                ui.label(RichText::new(heading).small().strong());
-                ui.label(RichText::new(&posed.question.prompt).strong());
-                match answered {
-                    None => {
-                        command = answer_buttons_ui(ui, expects, &mut self.number_text, shows);
-                        if ui
-                            .small_button("Skip")
-                            .on_hover_text("Show the next step without answering")
-                            .clicked()
-                        {
-                            command = Some(Command::Step(1));
-                        }
-                    }
-                    Some(answered) => {
-                        let (verdict, colour) = if answered.correct {
-                            (
-                                "Right",
-                                theme.trace_colour(crate::trace_role::TraceRole::Output),
-                            )
-                        } else {
-                            ("Not quite", ui.visuals().error_fg_color)
-                        };
-                        ui.label(
-                            RichText::new(format!(
-                                "{verdict}: you answered {}; the answer is {}.",
-                                value_text(answered.given),
-                                value_text(posed.expected)
-                            ))
-                            .color(colour)
-                            .strong(),
-                        );
-                        ui.label(posed.explanation(trace));
-                        ui.label(
-                            RichText::new(format!("{right} of {answered_count} answered right"))
-                                .small(),
-                        );
-                    }
-                }
-            });
-        command
-    }
-}
-
-/// What the window around a question card shows besides the view.
-#[derive(Clone, Copy, Debug)]
-pub struct Shown {
-    /// The algorithm's code, so a line number means something.
-    pub code: bool,
-    /// The tables, where an element can be clicked too.
-    pub tables: bool,
 }
 
 /// Why `given` cannot answer a question that `expects` another kind.
@@ -271,44 +185,12 @@ fn wrong_kind(expects: Expects, given: Value) -> Option<String> {
     })
 }
 
-/// The buttons or field for an unanswered question.
-fn answer_buttons_ui(
-    ui: &mut egui::Ui,
-    expects: Expects,
-    number: &mut String,
-    shows: Shown,
-) -> Option<Command> {
-    let mut command = None;
-    ui.horizontal_wrapped(|ui| match expects {
-        Expects::Element => {
-            ui.label(if shows.tables {
-                "Click the element in the view or the tables, or"
-            } else {
-                "Click the element in the view, or"
-            });
-            if ui.button("null").clicked() {
-                command = Some(Command::Answer(Value::Null));
-            }
-        }
-        Expects::Boolean => {
-            for (text, value) in [("True", true), ("False", false)] {
-                if ui.button(text).clicked() {
-                    command = Some(Command::Answer(Value::Boolean(value)));
-                }
-            }
-        }
-        Expects::Number => {
-            let field = ui.add(egui::TextEdit::singleline(number).desired_width(80.0));
-            let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-            if (ui.button("Answer").clicked() || entered)
-                && let Ok(n) = number.trim().parse::<f32>()
-                && n.is_finite()
-            {
-                command = Some(Command::Answer(number_value(n)));
-            }
-        }
-    });
-    command
+/// The questions a run of `algorithm` asks: its `//?` comments, then the
+/// `set` given for it (by a course link or the JavaScript API).
+pub fn questions_of(algorithm: &Algorithm, set: Option<&[Question]>) -> Vec<Question> {
+    let mut questions = edgewise_core::lang::question::from_comments(algorithm);
+    questions.extend(set.unwrap_or_default().iter().cloned());
+    questions
 }
 
 /// A typed number: an Integer when it is whole and fits, else a Float.

@@ -19,7 +19,7 @@ use base64::Engine as _;
 use edgewise_core::formats::compact;
 use edgewise_core::mesh::{Polygons, Structure};
 
-use crate::Argument;
+use crate::algorithm::session::Argument;
 use edgewise_pictures::camera::Camera;
 use edgewise_pictures::options::{DrawIds, ViewOptions};
 
@@ -1125,7 +1125,81 @@ fn decode(text: &str) -> String {
     String::from_utf8_lossy(&out).into_owned()
 }
 
-pub(crate) fn escape_attribute(text: &str) -> String {
+/// What a link sets up once its mesh is open, in the order a lecturer
+/// would: the app and a [`crate::still::Still`] each follow a link through
+/// this, so both refuse the same parts with the same words.
+pub trait Follow {
+    fn load_algorithms(&mut self, source: &str, file: &str) -> Result<(), String>;
+    fn run_algorithm(&mut self, name: &str, args: &[(String, Argument)]) -> Result<(), String>;
+    fn set_questions(&mut self, text: &str) -> Result<(), String>;
+    fn goto(&mut self, step: usize) -> Result<(), String>;
+    /// Whether an algorithm waits for inputs or is traced.
+    fn is_running(&self) -> bool;
+    fn select(&mut self, element: ElementRef) -> Result<(), String>;
+}
+
+impl CourseLink {
+    /// `settings` with the link's theme, colours and code size: a link's
+    /// look applies to one visit, over the user's own settings.
+    pub fn look(&self, settings: &crate::settings::Settings) -> crate::settings::Settings {
+        let mut settings = settings.clone();
+        if let Some(theme) = self.theme {
+            settings.dark = theme == ThemeChoice::Dark;
+        }
+        for (key, [r, g, b]) in &self.colors {
+            settings.colours.insert(
+                key.clone(),
+                edgewise_pictures::palette::to_hex(ecolor::Color32::from_rgb(*r, *g, *b)),
+            );
+        }
+        if let Some(size) = self.code_size {
+            settings.code_size = size;
+        }
+        settings
+    }
+}
+
+impl CourseLink {
+    /// Loads the link's algorithms, runs its algorithm with its inputs and
+    /// questions to its step, or selects its element; each part that cannot
+    /// be followed adds a message naming its parameter.
+    pub fn follow(&self, target: &mut impl Follow, messages: &mut Vec<String>) {
+        if let Some(source) = &self.algorithm_source
+            && let Err(message) = target.load_algorithms(source, "link.alg")
+        {
+            messages.push(message);
+        }
+        if let Some(name) = &self.algorithm {
+            match target.run_algorithm(name, &self.args) {
+                Ok(()) => {
+                    if let Some(questions) = &self.questions
+                        && let Err(message) = target.set_questions(questions)
+                    {
+                        messages.push(format!("#ask=: {message}"));
+                    }
+                    if let Some(step) = self.step
+                        && let Err(message) = target.goto(step)
+                    {
+                        messages.push(format!("step={step}: {message}"));
+                    }
+                }
+                Err(message) => messages.push(format!("algorithm={name}: {message}")),
+            }
+        } else if self.step.is_some() {
+            messages.push("step= needs an algorithm= to step through".to_owned());
+        }
+        if let Some(selection) = self.selection {
+            if target.is_running() {
+                messages.push("select= is ignored while an algorithm runs".to_owned());
+            } else if let Err(message) = target.select(selection) {
+                messages.push(format!("select=: {message}"));
+            }
+        }
+    }
+}
+
+/// Text made safe inside an HTML attribute or element.
+pub fn escape_attribute(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('"', "&quot;")
         .replace('<', "&lt;")

@@ -2,7 +2,7 @@
 
 use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, RecordsMut as _};
 use edgewise_core::{
-    formats::{self, FormatError, Loaded},
+    formats::{self, Format, FormatError, Loaded},
     mesh::{
         EdgeCorrespondence, EdgeId, Edit as _, FaceId, HalfEdgeId, Mesh, Renumbering, Structure,
         VertexId,
@@ -321,9 +321,36 @@ fn next_stamp() -> u64 {
     NEXT.fetch_add(1, Ordering::Relaxed)
 }
 
+/// The structure a file called `name` opens as: a table file's own, else
+/// `fallback` (PLY and OBJ, as the structure chosen in the top bar).
+pub fn structure_for(name: &str, fallback: Structure) -> Structure {
+    Format::from_name(name)
+        .and_then(Format::native_structure)
+        .unwrap_or(fallback)
+}
+
+/// `name` without its extension if it has a mesh format's extension
+/// ("cube.htb" → "cube"; "torus-200k" stays).
+pub fn mesh_stem(name: &str) -> &str {
+    match name.rsplit_once('.') {
+        Some((stem, _)) if !stem.is_empty() && Format::from_name(name).is_some() => stem,
+        _ => name,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_stem_drops_only_mesh_extensions() {
+        assert_eq!(mesh_stem("cube.htb"), "cube");
+        assert_eq!(mesh_stem("my.mesh.obj"), "my.mesh");
+        assert_eq!(mesh_stem("torus-200k"), "torus-200k");
+        assert_eq!(mesh_stem("notes.txt"), "notes.txt");
+        assert_eq!(mesh_stem(".obj"), ".obj");
+    }
+
     use edgewise_core::mesh::generate;
 
     fn tetrahedron() -> Document {
