@@ -8,6 +8,8 @@
 //! - `impl EdgewiseApp` blocks live in the app's `app/` folder.
 //! - Dependencies among the workspace's crates point down the layers, and
 //!   ARCHITECTURE.md describes every crate there is.
+//! - The crates below the UI (core, pictures, model) and the CLI name no
+//!   windowing, GPU or UI crate.
 //!
 //! The reading is lexical (comments and literals skipped, `use` trees and
 //! `crate::`/`super::`/`self::` paths followed), which is enough here: the
@@ -80,6 +82,7 @@ pub fn problems(root: &Path) -> anyhow::Result<Vec<String>> {
         }
     }
     problems.extend(members_have_layers(root)?);
+    problems.extend(headless_manifests(root)?);
     problems.extend(dependency_arrows(root)?);
     problems.extend(crate_map(root)?);
     Ok(problems)
@@ -209,6 +212,49 @@ fn members_have_layers(root: &Path) -> anyhow::Result<Vec<String>> {
         .collect())
 }
 
+/// The crates that build with no window, GPU or UI: the command line, and
+/// everything it stands on.
+const HEADLESS: &[&str] = &[
+    "crates/core",
+    "crates/pictures",
+    "crates/model",
+    "crates/cli",
+];
+
+/// Windowing, GPU and UI crates.
+const GUI_CRATES: &[&str] = &[
+    "eframe",
+    "egui",
+    "egui-wgpu",
+    "egui_extras",
+    "egui_kittest",
+    "wgpu",
+    "winit",
+    "edgewise-renderer",
+    "edgewise-app",
+];
+
+/// A headless crate whose Cargo.toml names a GUI crate, in any section.
+fn headless_manifests(root: &Path) -> anyhow::Result<Vec<String>> {
+    let mut problems = Vec::new();
+    for folder in HEADLESS {
+        let manifest = root.join(folder).join("Cargo.toml");
+        let text = std::fs::read_to_string(&manifest)
+            .with_context(|| format!("cannot read {}", manifest.display()))?;
+        for (number, line) in text.lines().enumerate() {
+            let name = line.split(['=', '.', ' ']).next().unwrap_or_default();
+            if GUI_CRATES.contains(&name) {
+                problems.push(format!(
+                    "{folder}/Cargo.toml:{}: {name} is a windowing, GPU or UI crate, and \
+                     {folder} builds without one (ARCHITECTURE.md)",
+                    number + 1
+                ));
+            }
+        }
+    }
+    Ok(problems)
+}
+
 /// The workspace crates each crate's Cargo.toml depends on, by layer.
 fn dependency_arrows(root: &Path) -> anyhow::Result<Vec<String>> {
     let mut problems = Vec::new();
@@ -306,6 +352,81 @@ mod tests {
             "{} invariant(s) broken:\n{}",
             problems.len(),
             problems.join("\n")
+        );
+    }
+
+    /// A scratch workspace: `files` as (path, text) under a fresh folder.
+    fn scratch_root(name: &str, files: &[(&str, &str)]) -> PathBuf {
+        let root =
+            std::env::temp_dir().join(format!("edgewise-tidy-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        for (path, text) in files {
+            let path = root.join(path);
+            std::fs::create_dir_all(path.parent().expect("a folder")).expect("writable");
+            std::fs::write(path, text).expect("writable");
+        }
+        root
+    }
+
+    #[test]
+    fn a_gui_crate_under_the_cli_is_refused() {
+        let root = scratch_root(
+            "headless",
+            &[
+                (
+                    "crates/core/Cargo.toml",
+                    "[dependencies]
+glam.workspace = true
+",
+                ),
+                (
+                    "crates/pictures/Cargo.toml",
+                    "[dependencies]
+ecolor.workspace = true
+",
+                ),
+                (
+                    "crates/model/Cargo.toml",
+                    "[dependencies]
+egui.workspace = true
+",
+                ),
+                (
+                    "crates/cli/Cargo.toml",
+                    "[dev-dependencies]
+edgewise-app.workspace = true
+",
+                ),
+            ],
+        );
+        let problems = headless_manifests(&root).expect("reads");
+        let _ = std::fs::remove_dir_all(&root);
+        assert_eq!(problems.len(), 2, "{problems:?}");
+        assert!(
+            problems[0].starts_with("crates/model/Cargo.toml:2: egui "),
+            "{problems:?}"
+        );
+        assert!(
+            problems[1].starts_with("crates/cli/Cargo.toml:2: edgewise-app "),
+            "{problems:?}"
+        );
+    }
+
+    #[test]
+    fn a_member_without_a_layer_is_refused() {
+        let root = scratch_root(
+            "members",
+            &[(
+                "Cargo.toml",
+                "[workspace]\nmembers = [\n    \"crates/core\",\n    \"crates/extra\",\n    \"crates/xtask\",\n]\n",
+            )],
+        );
+        let problems = members_have_layers(&root).expect("reads");
+        let _ = std::fs::remove_dir_all(&root);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].contains("crates/extra has no layer"),
+            "{problems:?}"
         );
     }
 
