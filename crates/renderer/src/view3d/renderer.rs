@@ -334,6 +334,105 @@ impl ViewCallback {
     }
 }
 
+/// How the mesh itself is drawn this frame, decided once before drawing.
+#[derive(Clone, Copy)]
+enum MeshDraw<'a> {
+    /// Every vertex a sphere, every edge an arrow, every face filled.
+    Detail,
+    /// The coarse level of detail: lines and flat faces from `source`, and
+    /// the highlighted elements in full over them.
+    Coarse(CoarseSource<'a>),
+}
+
+/// Where the coarse level of detail's lines and faces come from.
+#[derive(Clone, Copy)]
+enum CoarseSource<'a> {
+    /// A copy of the base image, which holds both.
+    BaseImage,
+    /// These buffers: the mesh's own, or its motion proxy.
+    Buffers(&'a CoarseBuffers),
+    /// None yet: the proxy drawn in place of the mesh is being uploaded.
+    Uploading,
+}
+
+impl ViewCallback {
+    /// How this frame draws `view`'s mesh: in detail; or coarse, from the
+    /// base image when it is current for this size, else from the motion
+    /// proxy while the camera moves or the image is drawn, else from the
+    /// coarse buffers.
+    fn mesh_draw<'a>(&self, view: &'a ViewBuffers, info: &egui::PaintCallbackInfo) -> MeshDraw<'a> {
+        if !self.flags.coarse {
+            return MeshDraw::Detail;
+        }
+        let viewport = info.viewport_in_pixels();
+        let draws_proxy = self.draws_proxy(view);
+        let from_image = !draws_proxy
+            && self
+                .base_key()
+                .filter(|key| {
+                    [i64::from(key.size[0]), i64::from(key.size[1])]
+                        == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
+                })
+                .is_some_and(|key| view.base_image.is_current(&key));
+        MeshDraw::Coarse(if from_image {
+            CoarseSource::BaseImage
+        } else if view.uploading && draws_proxy {
+            CoarseSource::Uploading
+        } else if draws_proxy {
+            self.uploaded.proxy_drawn.fetch_add(1, Ordering::Relaxed);
+            CoarseSource::Buffers(&view.proxy)
+        } else {
+            CoarseSource::Buffers(&view.coarse)
+        })
+    }
+
+    /// The mesh's vertices and edges.
+    fn draw_opaque(
+        &self,
+        pass: &mut wgpu::RenderPass<'static>,
+        info: &egui::PaintCallbackInfo,
+        renderers: &Renderers,
+        view: &ViewBuffers,
+        mesh: MeshDraw<'_>,
+    ) {
+        match mesh {
+            MeshDraw::Detail => {
+                renderers.spheres.draw(pass, &view.spheres);
+                renderers.arrows.draw(pass, &view.arrows);
+            }
+            MeshDraw::Coarse(source) => {
+                match source {
+                    CoarseSource::BaseImage => self.copy_base_image_to(pass, info, renderers, view),
+                    CoarseSource::Buffers(buffers) => renderers.coarse.draw_lines(pass, buffers),
+                    CoarseSource::Uploading => {}
+                }
+                renderers.spheres.draw(pass, &view.full_spheres);
+                renderers.arrows.draw(pass, &view.full_arrows);
+            }
+        }
+    }
+
+    /// The mesh's faces, solid or see-through.
+    fn draw_faces(
+        &self,
+        pass: &mut wgpu::RenderPass<'static>,
+        renderers: &Renderers,
+        view: &ViewBuffers,
+        mesh: MeshDraw<'_>,
+    ) {
+        let solid = self.flags.solid_faces;
+        match mesh {
+            MeshDraw::Detail => renderers.faces.draw(pass, &view.faces, solid),
+            MeshDraw::Coarse(source) => {
+                if let CoarseSource::Buffers(buffers) = source {
+                    renderers.coarse.draw_faces(pass, buffers, solid);
+                }
+                renderers.faces.draw(pass, &view.full_faces, solid);
+            }
+        }
+    }
+}
+
 impl CallbackTrait for ViewCallback {
     fn prepare(
         &self,
@@ -470,40 +569,9 @@ impl CallbackTrait for ViewCallback {
             return;
         }
         view.frame.bind(pass);
-        let viewport = info.viewport_in_pixels();
-        let draws_proxy = self.draws_proxy(view);
-        let from_image = !draws_proxy
-            && self
-                .base_key()
-                .filter(|key| {
-                    [i64::from(key.size[0]), i64::from(key.size[1])]
-                        == [i64::from(viewport.width_px), i64::from(viewport.height_px)]
-                })
-                .is_some_and(|key| view.base_image.is_current(&key));
-
-        let coarse = if view.uploading && draws_proxy {
-            &CoarseBuffers::default()
-        } else if draws_proxy {
-            self.uploaded.proxy_drawn.fetch_add(1, Ordering::Relaxed);
-            &view.proxy
-        } else {
-            &view.coarse
-        };
-
-        // Opaque first: spheres, arrows (or lines), axes, orientation marks.
-        // The base image holds the coarse lines and faces.
-        if self.flags.coarse {
-            if from_image {
-                self.copy_base_image_to(pass, &info, renderers, view);
-            } else {
-                renderers.coarse.draw_lines(pass, coarse);
-            }
-            renderers.spheres.draw(pass, &view.full_spheres);
-            renderers.arrows.draw(pass, &view.full_arrows);
-        } else {
-            renderers.spheres.draw(pass, &view.spheres);
-            renderers.arrows.draw(pass, &view.arrows);
-        }
+        let mesh = self.mesh_draw(view, &info);
+        // Opaque first: the mesh's vertices and edges, then the extras.
+        self.draw_opaque(pass, &info, renderers, view, mesh);
         if self.flags.axes {
             renderers.arrows.draw(pass, &view.axes);
         }
@@ -512,14 +580,6 @@ impl CallbackTrait for ViewCallback {
         }
         // Faces last: see-through ones test depth against everything opaque
         // without hiding what is behind them.
-        let solid = self.flags.solid_faces;
-        if self.flags.coarse {
-            if !from_image {
-                renderers.coarse.draw_faces(pass, coarse, solid);
-            }
-            renderers.faces.draw(pass, &view.full_faces, solid);
-        } else {
-            renderers.faces.draw(pass, &view.faces, solid);
-        }
+        self.draw_faces(pass, renderers, view, mesh);
     }
 }
