@@ -163,7 +163,10 @@ impl EdgewiseApp {
             frame_cpu_ms: None,
             clock: 0.0,
             theme: Theme::light(),
-            tabs: vec![tabs::Tab::new(render_state, Structure::WingedEdge)],
+            tabs: vec![tabs::Tab::new(
+                render_state,
+                edgewise_model::document::FIRST_STRUCTURE,
+            )],
             active_tab: 0,
             // The frame is cleared to the view's background (`clear_color`).
             view_options: ViewOptions {

@@ -321,6 +321,10 @@ fn next_stamp() -> u64 {
     NEXT.fetch_add(1, Ordering::Relaxed)
 }
 
+/// The structure chosen when Edgewise starts, which a PLY or OBJ builds as
+/// until the user picks another: the journal's first, the winged edge.
+pub const FIRST_STRUCTURE: Structure = Structure::WingedEdge;
+
 /// The structure a file called `name` opens as: a table file's own, else
 /// `fallback` (PLY and OBJ, as the structure chosen in the top bar).
 pub fn structure_for(name: &str, fallback: Structure) -> Structure {

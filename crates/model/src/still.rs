@@ -23,16 +23,12 @@ use crate::algorithm::quiz::{Quiz, questions_of};
 use crate::algorithm::run::AlgorithmRun;
 use crate::algorithm::session::{Argument, Run, argument_inputs};
 use crate::course_link::{CourseLink, Follow, MeshSource};
-use crate::document::{Document, structure_for};
+use crate::document::{Document, FIRST_STRUCTURE, structure_for};
 use crate::message::{message_line, run_message};
 use crate::moment::{self, Marks};
 use crate::paint::{MOST_MARKED, Paint, scene_styles};
 use crate::settings::Settings;
 use crate::theme::Theme;
-
-/// The structure a PLY or OBJ builds as when nothing asks for one: the
-/// app's own first choice.
-const FIRST_STRUCTURE: Structure = Structure::WingedEdge;
 
 /// A mesh file a link's `mesh=` path names, read by the caller.
 pub struct Fetched {
