@@ -18,10 +18,11 @@ use edgewise_core::schema::Structure;
 use std::collections::{BTreeSet, HashMap};
 use std::sync::Arc;
 
-use edgewise_core::lang::{Algorithm, question::Question};
+use edgewise_core::lang::Algorithm;
 
 use edgewise_model::algorithm::frame::TraceFrame;
 use edgewise_model::algorithm::library::AlgorithmLibrary;
+use edgewise_model::algorithm::question_sets::QuestionSets;
 use edgewise_model::algorithm::run::AlgorithmRun;
 use edgewise_model::algorithm::session::Run;
 
@@ -34,9 +35,8 @@ pub struct Algorithms {
     pub library: AlgorithmLibrary,
     /// Breakpoint lines, kept per algorithm across runs.
     breakpoints: HashMap<(String, Structure), BTreeSet<u32>>,
-    /// Question sets from course links and the JavaScript API, kept per
-    /// algorithm across runs, asked besides its `//?` comments.
-    question_sets: HashMap<(String, Structure), (String, Vec<Question>)>,
+    /// Question sets from course links and the JavaScript API.
+    pub question_sets: QuestionSets,
     /// Seconds between automatic steps.
     pub delay: f32,
     pub editor: editor::AlgorithmEditor,
@@ -57,7 +57,7 @@ impl Default for Algorithms {
         Self {
             library: AlgorithmLibrary::shipped(),
             breakpoints: HashMap::new(),
-            question_sets: HashMap::new(),
+            question_sets: QuestionSets::default(),
             delay: DEFAULT_DELAY,
             editor: editor::AlgorithmEditor::default(),
             code_size: 14.0,
@@ -96,52 +96,6 @@ impl Algorithms {
             set.insert(line);
         }
         run.changed();
-    }
-
-    /// The questions a run of `algorithm` asks: its `//?` comments, then
-    /// the set given for it.
-    pub fn questions_for(&self, algorithm: &Algorithm) -> Vec<Question> {
-        let set = self.question_sets.get(&Self::key_of(algorithm));
-        edgewise_model::algorithm::quiz::questions_of(algorithm, set.map(|(_, set)| set.as_slice()))
-    }
-
-    /// The question set given for `algorithm`, as written, for share links.
-    pub fn question_set_text(&self, algorithm: &Algorithm) -> Option<&str> {
-        self.question_sets
-            .get(&Self::key_of(algorithm))
-            .map(|(text, _)| text.as_str())
-    }
-
-    /// Gives the running algorithm a question set (replacing the last one)
-    /// and asks it from the current run on.
-    pub fn set_questions(&mut self, run: &mut AlgorithmRun, text: &str) -> Result<(), String> {
-        let Some(algorithm) = run.algorithm().cloned() else {
-            return Err("start an algorithm before giving it questions".to_owned());
-        };
-        let set = edgewise_core::lang::question::parse_set(text)
-            .map_err(|error| format!("questions:{error}"))?;
-        self.question_sets
-            .insert(Self::key_of(&algorithm), (text.to_owned(), set));
-        if let Run::Tracing(session) = &mut run.run {
-            session.quiz = None;
-        }
-        self.pose(run);
-        Ok(())
-    }
-
-    /// Poses the run's questions if it is traced and has not yet.
-    pub fn pose(&self, run: &mut AlgorithmRun) {
-        let Run::Tracing(session) = &mut run.run else {
-            return;
-        };
-        if session.quiz.is_none() {
-            let questions = self.questions_for(session.trace.algorithm());
-            session.quiz = Some(edgewise_model::algorithm::quiz::Quiz::new(
-                &session.trace,
-                &questions,
-            ));
-            run.changed();
-        }
     }
 
     /// Advances `run` if it is playing; see [`AlgorithmRun::tick`].

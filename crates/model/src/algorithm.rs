@@ -4,6 +4,7 @@
 
 pub mod frame;
 pub mod library;
+pub mod question_sets;
 pub mod quiz;
 pub mod run;
 pub mod session;

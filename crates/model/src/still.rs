@@ -7,7 +7,6 @@
 
 use std::sync::Arc;
 
-use edgewise_core::lang::question::{Question, parse_set};
 use edgewise_core::mesh::{Issue, Structure};
 use edgewise_core::schema::ElementRef;
 use edgewise_pictures::camera::{Camera, ViewTransforms};
@@ -19,9 +18,9 @@ use edgewise_pictures::vector::{self, Looks, VectorView};
 use emath::{Pos2, Rect, vec2};
 
 use crate::algorithm::library::AlgorithmLibrary;
-use crate::algorithm::quiz::{Quiz, questions_of};
+use crate::algorithm::question_sets::QuestionSets;
 use crate::algorithm::run::AlgorithmRun;
-use crate::algorithm::session::{Argument, Run, argument_inputs};
+use crate::algorithm::session::{Argument, argument_inputs};
 use crate::course_link::{CourseLink, Follow, MeshSource};
 use crate::document::{Document, FIRST_STRUCTURE, structure_for};
 use crate::message::{message_line, run_message};
@@ -42,9 +41,8 @@ pub struct Still {
     theme: Theme,
     options: ViewOptions,
     library: AlgorithmLibrary,
-    /// A link's question set, asked besides the `//?` comments of the
-    /// algorithm it was given for (by name and structure).
-    questions: Option<((String, Structure), Vec<Question>)>,
+    /// A link's question set.
+    questions: QuestionSets,
     document: Option<Document>,
     run: AlgorithmRun,
     /// How many of an editing run's changes the document's mesh has.
@@ -67,7 +65,7 @@ impl Still {
             settings,
             options: ViewOptions::default(),
             library: AlgorithmLibrary::shipped(),
-            questions: None,
+            questions: QuestionSets::default(),
             document: None,
             run: AlgorithmRun::default(),
             applied: 0,
@@ -180,7 +178,7 @@ impl Still {
         let result = self
             .run
             .begin(Arc::clone(&algorithm), &inputs, document.mesh());
-        self.pose();
+        self.questions.pose(&mut self.run);
         result
     }
 
@@ -190,41 +188,8 @@ impl Still {
             return Err("open a mesh before running an algorithm".to_owned());
         };
         let result = self.run.start(document.mesh());
-        self.pose();
+        self.questions.pose(&mut self.run);
         result
-    }
-
-    /// A link's question set for the run's algorithm.
-    fn set_questions(&mut self, text: &str) -> Result<(), String> {
-        let Some(algorithm) = self.run.algorithm() else {
-            return Err("start an algorithm before giving it questions".to_owned());
-        };
-        let key = (algorithm.name.clone(), algorithm.structure);
-        let set = parse_set(text).map_err(|error| format!("questions:{error}"))?;
-        self.questions = Some((key, set));
-        if let Run::Tracing(session) = &mut self.run.run {
-            session.quiz = None;
-        }
-        self.pose();
-        Ok(())
-    }
-
-    /// Poses the traced run's questions, once.
-    fn pose(&mut self) {
-        if let Run::Tracing(session) = &mut self.run.run
-            && session.quiz.is_none()
-        {
-            let algorithm = session.trace.algorithm();
-            let set = self
-                .questions
-                .as_ref()
-                .filter(|((name, structure), _)| {
-                    *name == algorithm.name && *structure == algorithm.structure
-                })
-                .map(|(_, set)| set.as_slice());
-            let questions = questions_of(algorithm, set);
-            session.quiz = Some(Quiz::new(&session.trace, &questions));
-        }
     }
 
     /// The steps of the traced run, if there is one.
@@ -378,7 +343,7 @@ impl Follow for Still {
     }
 
     fn set_questions(&mut self, text: &str) -> Result<(), String> {
-        Still::set_questions(self, text)
+        self.questions.set(&mut self.run, text)
     }
 
     fn goto(&mut self, step: usize) -> Result<(), String> {

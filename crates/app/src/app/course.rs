@@ -174,7 +174,8 @@ impl EdgewiseApp {
             }
             link.questions = self
                 .algorithms
-                .question_set_text(&algorithm)
+                .question_sets
+                .text_for(&algorithm)
                 .map(str::to_owned);
             link.args = inputs
                 .into_iter()

@@ -41,7 +41,7 @@ impl EdgewiseApp {
         let result = self.dispatch(command);
         // A run just traced asks its questions from its first step.
         let run = &mut self.tabs[self.active_tab].run;
-        self.algorithms.pose(run);
+        self.algorithms.question_sets.pose(run);
         if shows_status && result.is_ok() {
             self.show_algorithm_panel = true;
         }
@@ -101,7 +101,7 @@ impl EdgewiseApp {
             }
             Command::SetQuestions(text) => {
                 let run = &mut self.tabs[self.active_tab].run;
-                done(self.algorithms.set_questions(run, &text))
+                done(self.algorithms.question_sets.set(run, &text))
             }
             Command::Back(n) => done(self.tab_mut().run.back(n)),
             Command::SetPlaying(on) => {
