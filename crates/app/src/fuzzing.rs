@@ -7,7 +7,8 @@
 
 use edgewise_core::schema::{ElementKind, ElementRef};
 
-use crate::{EdgewiseApp, FetchedMesh, GraphicsBackend, command::Command};
+use crate::{EdgewiseApp, GraphicsBackend, command::Command};
+use edgewise_model::course_link::FetchedMesh;
 use edgewise_model::course_link::{CourseLink, MeshSource, decode_payload};
 
 /// A course link: the input up to the first `#` or NUL byte is the query,

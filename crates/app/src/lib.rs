@@ -27,5 +27,5 @@ pub use embed_event::EmbedEvent;
 pub mod web;
 
 pub use app::files;
-pub use app::{EdgewiseApp, course::FetchedMesh, embed::Embed, settings_ui::Presentation};
+pub use app::{EdgewiseApp, embed::Embed, settings_ui::Presentation};
 pub use backend::GraphicsBackend;

@@ -14,11 +14,11 @@ use eframe::wasm_bindgen::{JsCast as _, JsValue};
 use edgewise_core::formats::MAX_FILE_BYTES;
 
 use crate::{
-    EdgewiseApp, FetchedMesh,
+    EdgewiseApp,
     files::{ANNOUNCE_BYTES, opening_label},
     platform::{CANVAS_ID, js_error_text},
 };
-use edgewise_model::course_link::{CourseLink, MeshSource};
+use edgewise_model::course_link::{CourseLink, FetchedMesh, MeshSource};
 
 /// The loading message shown by index.html until the app runs.
 const LOADING_ID: &str = "edgewise_loading";

@@ -8,8 +8,8 @@ use std::path::Path;
 
 use edgewise_core::mesh::Structure;
 use edgewise_model::algorithm::session::Argument;
-use edgewise_model::course_link::{CourseLink, MeshSource};
-use edgewise_model::still::{Fetched, Still};
+use edgewise_model::course_link::{CourseLink, FetchedMesh, MeshSource};
+use edgewise_model::still::Still;
 
 use super::{Failure, Outcome, StructureArg, emit, read_bytes, read_text, shown};
 
@@ -222,12 +222,12 @@ fn open_link(
             if parsed.mesh.is_none() {
                 parsed.mesh = Some(MeshSource::Path(shown(path)));
             }
-            Some(Fetched {
+            Some(FetchedMesh {
                 name: shown(path),
                 bytes: Ok(read_bytes(path)?),
             })
         }
-        (Some(MeshSource::Path(path)), None) => Some(Fetched {
+        (Some(MeshSource::Path(path)), None) => Some(FetchedMesh {
             name: path.clone(),
             bytes: std::fs::read(path).map_err(|error| format!("cannot read the file: {error}")),
         }),

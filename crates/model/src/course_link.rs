@@ -1125,6 +1125,13 @@ fn decode(text: &str) -> String {
     String::from_utf8_lossy(&out).into_owned()
 }
 
+/// A mesh file a link's `mesh=` path names, read by the caller (the
+/// browser fetches it; the command line reads it from disk).
+pub struct FetchedMesh {
+    pub name: String,
+    pub bytes: Result<Vec<u8>, String>,
+}
+
 /// What a link sets up once its mesh is open, in the order a lecturer
 /// would: the app and a [`crate::still::Still`] each follow a link through
 /// this, so both refuse the same parts with the same words.

@@ -21,19 +21,13 @@ use crate::algorithm::library::AlgorithmLibrary;
 use crate::algorithm::question_sets::QuestionSets;
 use crate::algorithm::run::AlgorithmRun;
 use crate::algorithm::session::{Argument, argument_inputs};
-use crate::course_link::{CourseLink, Follow, MeshSource};
+use crate::course_link::{CourseLink, FetchedMesh, Follow, MeshSource};
 use crate::document::{Document, FIRST_STRUCTURE, structure_for};
 use crate::message::{message_line, run_message};
 use crate::moment::{self, Marks};
-use crate::paint::{MOST_MARKED, Paint, scene_styles};
+use crate::paint::{MOST_MARKED, scene_styles};
 use crate::settings::Settings;
 use crate::theme::Theme;
-
-/// A mesh file a link's `mesh=` path names, read by the caller.
-pub struct Fetched {
-    pub name: String,
-    pub bytes: Result<Vec<u8>, String>,
-}
 
 /// One moment, set up step by step as the app would be.
 pub struct Still {
@@ -99,7 +93,7 @@ impl Still {
     /// Applies a parsed link in the app's order (look, mesh, algorithm and
     /// its inputs, questions, step, selection, camera, view options);
     /// returns a message for each part that could not be followed.
-    pub fn apply_link(&mut self, link: &CourseLink, fetched: Option<Fetched>) -> Vec<String> {
+    pub fn apply_link(&mut self, link: &CourseLink, fetched: Option<FetchedMesh>) -> Vec<String> {
         let mut messages = Vec::new();
         self.apply_look(link);
         let structure = link.structure;
@@ -116,11 +110,11 @@ impl Still {
                     .map(|d| self.show(d))
             }
             Some(MeshSource::Path(path)) => match fetched {
-                Some(Fetched {
+                Some(FetchedMesh {
                     name,
                     bytes: Ok(bytes),
                 }) => self.load_mesh(&bytes, &name, structure),
-                Some(Fetched {
+                Some(FetchedMesh {
                     bytes: Err(err), ..
                 }) => Err(format!("mesh={path}: {err}")),
                 None => Err(format!("mesh={path}: the file was not fetched")),
@@ -254,21 +248,6 @@ impl Still {
         self.run.session().is_some()
     }
 
-    fn paint(&self, document: &Document) -> Paint {
-        let frame = self.run.current_frame(&self.theme);
-        let marks = Marks {
-            last_changes: &[],
-            broken: &self.broken,
-        };
-        moment::moment_paint(
-            document,
-            frame.as_deref(),
-            self.is_traced(),
-            marks,
-            &self.theme,
-        )
-    }
-
     /// The SVG of the moment: the view and the tables, and the message
     /// line as the caption.
     pub fn svg(&self) -> Result<String, String> {
@@ -277,11 +256,22 @@ impl Still {
             .as_ref()
             .ok_or("open a mesh before exporting a picture of it")?;
         moment::check_picture_size(document)?;
-        let paint = self.paint(document);
+        // The step's frame, derived once for both the colours and the caption.
+        let frame = self.run.current_frame(&self.theme);
+        let marks = Marks {
+            last_changes: &[],
+            broken: &self.broken,
+        };
+        let paint = moment::moment_paint(
+            document,
+            frame.as_deref(),
+            self.is_traced(),
+            marks,
+            &self.theme,
+        );
         let styles = scene_styles(document.mesh(), &paint, 0);
         let scene = Scene::new(MeshGeometry::from_mesh(document.mesh()));
         let view = self.view(&scene, &scene, &styles)?;
-        let frame = self.run.current_frame(&self.theme);
         let caption = message_line(document, run_message(&self.run.run, frame.as_deref()), None);
         Ok(moment::svg_picture(
             document,

@@ -20,17 +20,11 @@ use crate::command::Command;
 use edgewise_model::{
     algorithm::library::Origin,
     algorithm::session::Argument,
-    course_link::{self, CourseLink, MeshSource, Panels, ThemeChoice},
+    course_link::{self, CourseLink, FetchedMesh, MeshSource, Panels, ThemeChoice},
     selection::Role,
     settings::{self, Settings},
     trace_role::TraceRole,
 };
-
-/// A mesh file fetched for a link's `?mesh=` path.
-pub struct FetchedMesh {
-    pub name: String,
-    pub bytes: Result<Vec<u8>, String>,
-}
 
 impl EdgewiseApp {
     /// Applies a parsed link. `messages` are the parser's; `fetched` is the

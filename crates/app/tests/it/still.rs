@@ -4,11 +4,11 @@
 //! edits, questions and themes.
 
 use edgewise_app::command::Command;
-use edgewise_app::{EdgewiseApp, FetchedMesh, GraphicsBackend};
+use edgewise_app::{EdgewiseApp, GraphicsBackend};
 use edgewise_core::mesh::Structure;
 use edgewise_core::schema::ElementRef;
 use edgewise_model::algorithm::session::Argument;
-use edgewise_model::course_link::CourseLink;
+use edgewise_model::course_link::{CourseLink, FetchedMesh};
 use edgewise_model::selection::parse_element;
 use edgewise_model::still::Still;
 
