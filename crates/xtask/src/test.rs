@@ -16,9 +16,10 @@ const VULKAN_LOADER: &str = "/usr/lib/x86_64-linux-gnu/libvulkan.so.1";
 const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 const BROWSER_TESTS: &str = "edgewise-browser-tests";
 /// The crates that are compiled for the browser.
-const WASM_PACKAGES: [&str; 4] = [
+const WASM_PACKAGES: [&str; 5] = [
     "edgewise-core",
     "edgewise-pictures",
+    "edgewise-model",
     "edgewise-renderer",
     "edgewise-app",
 ];

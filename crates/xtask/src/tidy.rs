@@ -212,6 +212,23 @@ fn members_have_layers(root: &Path) -> anyhow::Result<Vec<String>> {
         .collect())
 }
 
+/// Each line's key in `folder`'s Cargo.toml, with its line number: a
+/// dependency's name where the line names one (`egui.workspace = true`,
+/// `wgpu = "30"`).
+fn manifest_keys(root: &Path, folder: &str) -> anyhow::Result<Vec<(usize, String)>> {
+    let manifest = root.join(folder).join("Cargo.toml");
+    let text = std::fs::read_to_string(&manifest)
+        .with_context(|| format!("cannot read {}", manifest.display()))?;
+    Ok(text
+        .lines()
+        .enumerate()
+        .map(|(index, line)| {
+            let key = line.split(['=', '.', ' ']).next().unwrap_or_default();
+            (index + 1, key.to_owned())
+        })
+        .collect())
+}
+
 /// The crates that build with no window, GPU or UI: the command line, and
 /// everything it stands on.
 const HEADLESS: &[&str] = &[
@@ -238,16 +255,11 @@ const GUI_CRATES: &[&str] = &[
 fn headless_manifests(root: &Path) -> anyhow::Result<Vec<String>> {
     let mut problems = Vec::new();
     for folder in HEADLESS {
-        let manifest = root.join(folder).join("Cargo.toml");
-        let text = std::fs::read_to_string(&manifest)
-            .with_context(|| format!("cannot read {}", manifest.display()))?;
-        for (number, line) in text.lines().enumerate() {
-            let name = line.split(['=', '.', ' ']).next().unwrap_or_default();
-            if GUI_CRATES.contains(&name) {
+        for (number, name) in manifest_keys(root, folder)? {
+            if GUI_CRATES.contains(&name.as_str()) {
                 problems.push(format!(
-                    "{folder}/Cargo.toml:{}: {name} is a windowing, GPU or UI crate, and \
-                     {folder} builds without one (ARCHITECTURE.md)",
-                    number + 1
+                    "{folder}/Cargo.toml:{number}: {name} is a windowing, GPU or UI crate, and \
+                     {folder} builds without one (ARCHITECTURE.md)"
                 ));
             }
         }
@@ -267,22 +279,15 @@ fn dependency_arrows(root: &Path) -> anyhow::Result<Vec<String>> {
         .map(|&(name, folder, layer)| (name, folder, Some(layer)))
         .chain(std::iter::once((BUILD_TOOL.0, BUILD_TOOL.1, None)));
     for (name, folder, layer) in all {
-        let manifest = root.join(folder).join("Cargo.toml");
-        let text = std::fs::read_to_string(&manifest)
-            .with_context(|| format!("cannot read {}", manifest.display()))?;
-        for (number, line) in text.lines().enumerate() {
-            let Some(dependency) = line.split(['=', '.', ' ']).next() else {
-                continue;
-            };
-            let Some(&their_layer) = layer_of.get(dependency) else {
+        for (number, dependency) in manifest_keys(root, folder)? {
+            let Some(&their_layer) = layer_of.get(dependency.as_str()) else {
                 continue;
             };
             let allowed = layer.is_some_and(|layer| their_layer < layer);
             if !allowed {
                 problems.push(format!(
-                    "{folder}/Cargo.toml:{}: {name} depends on {dependency}, an arrow \
-                     that does not point down the layers (ARCHITECTURE.md)",
-                    number + 1
+                    "{folder}/Cargo.toml:{number}: {name} depends on {dependency}, an arrow \
+                     that does not point down the layers (ARCHITECTURE.md)"
                 ));
             }
         }
