@@ -18,6 +18,7 @@ pub use crate::schema::deleted;
 pub mod edit;
 pub mod error;
 pub mod generate;
+pub mod grade;
 pub mod half_edge;
 pub use crate::schema::ids;
 pub mod navigation;

@@ -37,6 +37,7 @@
 //! face's outer cycle to an inner one), and a boundary loop is a cycle of
 //! half-edges without a face (winged-edge sides without a face).
 
+pub mod candidates;
 mod collapse_edge;
 mod euler;
 mod flip_edge;
@@ -48,6 +49,7 @@ mod split_face;
 
 use std::fmt;
 
+pub use candidates::candidates;
 pub use collapse_edge::collapse_edge;
 pub use euler::{kef, kemr, kev, mef, mekr, mev};
 pub use flip_edge::flip_edge;

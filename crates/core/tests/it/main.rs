@@ -25,6 +25,7 @@ mod lang_limits;
 mod lang_questions;
 mod lang_subdivision;
 mod lang_vm;
+mod mesh_grading;
 mod mesh_hand;
 mod mesh_operations;
 mod mesh_properties;

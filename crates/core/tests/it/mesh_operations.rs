@@ -9,6 +9,7 @@ use crate::golden;
 use std::path::PathBuf;
 
 use edgewise_core::formats;
+use edgewise_core::mesh::operations::candidates::{boundary_vertices, edges_at, face_vertices};
 use edgewise_core::mesh::operations::{self, Operation, Refusal};
 use edgewise_core::mesh::{
     EdgeId, Edit, FaceId, HalfEdgeId, Mesh, MeshStats, Navigation, Polygons, Structure, VertexId,
@@ -23,10 +24,10 @@ fn root() -> PathBuf {
 /// A sample in both structures: the same vertex and face numbers, and
 /// each winged edge's first half-edge (the one running from its start to
 /// its end, as the winged edge's left side does).
-struct Sample {
-    name: String,
-    winged: Mesh,
-    half: Mesh,
+pub(crate) struct Sample {
+    pub(crate) name: String,
+    pub(crate) winged: Mesh,
+    pub(crate) half: Mesh,
     first_halves: Vec<u32>,
 }
 
@@ -53,7 +54,7 @@ impl Sample {
     }
 
     /// The half-edge mesh's ids for the winged-edge mesh's `ids`.
-    fn half_ids(&self, op: Operation, ids: &[u32]) -> Vec<u32> {
+    pub(crate) fn half_ids(&self, op: Operation, ids: &[u32]) -> Vec<u32> {
         ids.iter()
             .zip(op.arguments())
             .map(|(&id, argument)| match argument.kind {
@@ -65,7 +66,7 @@ impl Sample {
 }
 
 /// The generated fixtures and the small sample files.
-fn samples() -> Vec<Sample> {
+pub(crate) fn samples() -> Vec<Sample> {
     let mut list = Vec::new();
     let generated: [(&str, Polygons); 8] = [
         ("tetrahedron", generate::tetrahedron()),
@@ -137,41 +138,6 @@ fn valence(mesh: &Mesh, v: VertexId) -> i64 {
         Mesh::Winged(m) => m.around_vertex(v).count() as i64,
         Mesh::Half(m) => m.around_vertex(v).count() as i64,
     }
-}
-
-fn face_vertices(mesh: &Mesh, f: FaceId) -> Vec<u32> {
-    match mesh {
-        Mesh::Winged(m) => m.face_vertices(f).map(VertexId::raw).collect(),
-        Mesh::Half(m) => m.face_vertices(f).map(VertexId::raw).collect(),
-    }
-}
-
-/// The edge rows at a vertex, in turn around it.
-fn edges_at(mesh: &Mesh, v: VertexId) -> Vec<u32> {
-    match mesh {
-        Mesh::Winged(m) => m.around_vertex(v).map(EdgeId::raw).collect(),
-        Mesh::Half(m) => m.around_vertex(v).map(HalfEdgeId::raw).collect(),
-    }
-}
-
-/// Vertices on a boundary loop, each once.
-fn boundary_vertices(mesh: &Mesh) -> Vec<u32> {
-    let mut found = Vec::new();
-    for v in 0..mesh.vertex_count() as u32 {
-        let on = match mesh {
-            Mesh::Winged(m) => m.around_vertex(VertexId::new(v)).any(|e| {
-                m.edges()[e.index()].left_face.is_none()
-                    || m.edges()[e.index()].right_face.is_none()
-            }),
-            Mesh::Half(m) => m
-                .around_vertex(VertexId::new(v))
-                .any(|h| m.half_edges()[h.index()].face.is_none()),
-        };
-        if on {
-            found.push(v);
-        }
-    }
-    found
 }
 
 /// V, E, F and boundary loops.
@@ -280,50 +246,8 @@ fn every<T>(items: Vec<T>, step: usize) -> impl Iterator<Item = T> {
 }
 
 /// Every argument list `op` takes on `mesh`, thinned to about `budget`.
-fn arguments(mesh: &Mesh, op: Operation, budget: usize) -> Vec<Vec<u32>> {
-    let mut all: Vec<Vec<u32>> = Vec::new();
-    let faces = 0..mesh.face_count() as u32;
-    let vertices = 0..mesh.vertex_count() as u32;
-    match op {
-        Operation::FlipEdge
-        | Operation::SplitEdge
-        | Operation::CollapseEdge
-        | Operation::Kev
-        | Operation::Kef
-        | Operation::Kemr => all.extend((0..edge_rows(mesh)).map(|e| vec![e])),
-        Operation::RemoveVertex => all.extend(vertices.map(|v| vec![v])),
-        Operation::SplitFace | Operation::Mef => {
-            for f in faces {
-                let corners = face_vertices(mesh, FaceId::new(f));
-                for &u in &corners {
-                    for &w in &corners {
-                        all.push(vec![f, u, w]);
-                    }
-                }
-            }
-        }
-        Operation::Mev => {
-            for v in vertices {
-                let around = edges_at(mesh, VertexId::new(v));
-                all.push(vec![v, around.first().copied().unwrap_or(0)]);
-                for &x in &around {
-                    for &y in &around {
-                        all.push(vec![v, x, y]);
-                    }
-                }
-            }
-        }
-        Operation::Mekr => {
-            let boundary = boundary_vertices(mesh);
-            for f in faces {
-                for u in face_vertices(mesh, FaceId::new(f)) {
-                    for &b in &boundary {
-                        all.push(vec![f, u, b]);
-                    }
-                }
-            }
-        }
-    }
+pub(crate) fn arguments(mesh: &Mesh, op: Operation, budget: usize) -> Vec<Vec<u32>> {
+    let all = operations::candidates(mesh, op);
     let step = all.len().div_ceil(budget.max(1));
     every(all, step).collect()
 }
@@ -996,7 +920,7 @@ fn one_face_edges(mesh: &Mesh) -> Vec<u32> {
 /// Ids for `op` from three random numbers: mostly elements that fit
 /// together (corners of the face chosen, edges at the vertex chosen, a
 /// boundary vertex for MEKR), sometimes any row, deleted ones included.
-fn pick(mesh: &Mesh, op: Operation, picks: [u16; 4]) -> Vec<u32> {
+pub(crate) fn pick(mesh: &Mesh, op: Operation, picks: [u16; 4]) -> Vec<u32> {
     let any = |kind, pick: u16| u32::from(pick) % (mesh.count(kind).max(1) as u32);
     let choose = |list: &[u32], pick: u16, kind| {
         if list.is_empty() || pick.is_multiple_of(11) {
@@ -1034,7 +958,7 @@ fn pick(mesh: &Mesh, op: Operation, picks: [u16; 4]) -> Vec<u32> {
 
 /// A random chain: a start mesh in a random structure, and operations each
 /// with the random numbers [`pick`] turns into ids.
-fn chain(
+pub(crate) fn chain(
     steps: std::ops::Range<usize>,
 ) -> impl proptest::strategy::Strategy<Value = (Mesh, Vec<(Operation, [u16; 4])>)> {
     use proptest::prelude::*;
