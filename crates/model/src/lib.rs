@@ -11,6 +11,7 @@ pub mod document;
 pub mod message;
 pub mod moment;
 pub mod paint;
+pub mod practice;
 pub mod samples;
 pub mod selection;
 pub mod settings;

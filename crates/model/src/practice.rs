@@ -1,0 +1,23 @@
+//! Practice: exercises a student does rather than watches, each drawn as a
+//! fresh instance from a seed and graded step by step (docs/practice.md).
+//!
+//! - [`exercise`] reads the exercise format (TOML) and says where a file is
+//!   wrong;
+//! - [`catalog`] holds the exercises Edgewise ships;
+//! - [`instance`] draws an instance from a seed, always one the task applies
+//!   to and worth doing;
+//! - [`attempt`] grades an answer: a do-it answer by the core's grader
+//!   ([`edgewise_core::mesh::grade`]).
+
+pub mod attempt;
+pub mod catalog;
+pub mod exercise;
+pub mod instance;
+mod seed;
+
+pub use attempt::Outcome;
+pub use exercise::{Exercise, ExerciseError, Feedback, Kind};
+pub use instance::{Instance, Task};
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,201 @@
+//! Drawing an instance: the task with its ids, from a seed. Every drawn
+//! instance applies (the library's operation accepts it) and is worth
+//! doing (a flip or split of an edge with a face on each side, a face cut
+//! between corners that are not neighbours, a vertex split with three
+//! edges or more), so trial and error on one instance gains nothing on
+//! the next.
+
+use edgewise_core::mesh::operations::{self, Operation, Refusal, candidates};
+use edgewise_core::mesh::{Mesh, Structure, VertexId};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records};
+
+use super::exercise::{Exercise, ExerciseError};
+use super::seed::Seeded;
+
+/// At most this many candidates are tried before a draw gives up: enough
+/// for every shipped mesh, and bounded on a hostile one.
+const MAX_TRIES: usize = 2_000;
+
+/// What the student is asked to do.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Task {
+    /// Carry out `operation` on `ids`, as `edgewise edit` names them.
+    DoIt { operation: Operation, ids: Vec<u32> },
+}
+
+impl Task {
+    /// The task in words, naming rows as `structure`'s tables do.
+    pub fn describe(&self, structure: Structure) -> String {
+        let Self::DoIt { operation, ids } = self;
+        let edge = |id: u32| match structure {
+            Structure::HalfEdge => format!("the edge of half-edge {id}"),
+            Structure::WingedEdge => format!("edge {id}"),
+        };
+        let id = |i: usize| ids.get(i).copied().unwrap_or_default();
+        match operation {
+            Operation::FlipEdge => format!("Flip {}.", edge(id(0))),
+            Operation::SplitEdge => format!("Split {} at its midpoint.", edge(id(0))),
+            Operation::SplitFace => format!(
+                "Split face {} between vertices {} and {}.",
+                id(0),
+                id(1),
+                id(2)
+            ),
+            Operation::CollapseEdge => format!(
+                "Collapse {}: its end merges into its start, at the midpoint.",
+                edge(id(0))
+            ),
+            Operation::RemoveVertex => format!("Remove vertex {}.", id(0)),
+            Operation::Mev if ids.len() == 3 => format!(
+                "MEV: split vertex {} between {} and {}, making a new vertex and edge.",
+                id(0),
+                edge(id(1)),
+                edge(id(2))
+            ),
+            Operation::Mev => format!(
+                "MEV: hang a new edge and vertex from vertex {}, beside {}.",
+                id(0),
+                edge(id(1))
+            ),
+            Operation::Mef => format!(
+                "MEF: make an edge from vertex {} to vertex {} across face {}, and a new face.",
+                id(1),
+                id(2),
+                id(0)
+            ),
+            Operation::Kev => format!(
+                "KEV: kill {} and its end vertex, which merges into its start.",
+                edge(id(0))
+            ),
+            Operation::Kef => format!(
+                "KEF: kill {} and merge the two faces beside it.",
+                edge(id(0))
+            ),
+            Operation::Kemr => format!(
+                "KEMR: kill the bridge {}, leaving its inner cycle as a ring.",
+                edge(id(0))
+            ),
+            Operation::Mekr => format!(
+                "MEKR: bridge face {} at vertex {} to the boundary loop at vertex {}.",
+                id(0),
+                id(1),
+                id(2)
+            ),
+        }
+    }
+}
+
+/// One instance of an exercise: its seed, its start mesh and its task.
+#[derive(Clone, Debug)]
+pub struct Instance {
+    pub seed: u64,
+    pub mesh: Mesh,
+    pub task: Task,
+}
+
+impl Exercise {
+    /// The instance `seed` draws. Seed 0 is the file's own ids where it
+    /// gives them; an exercise that draws no fresh instances gives the same
+    /// one for every seed.
+    pub fn instance(&self, seed: u64) -> Result<Instance, ExerciseError> {
+        let seed_used = if self.fresh_instance { seed } else { 0 };
+        let operation = self.do_it.operation;
+        let ids = match (&self.do_it.ids, seed_used) {
+            (Some(ids), 0) => {
+                let mut tried = self.start().clone();
+                operations::apply(&mut tried, operation, ids)
+                    .map_err(|refusal| self.refused(ids, &refusal))?;
+                ids.clone()
+            }
+            _ => self.draw(operation, seed_used)?,
+        };
+        Ok(Instance {
+            seed,
+            mesh: self.start().clone(),
+            task: Task::DoIt { operation, ids },
+        })
+    }
+
+    fn draw(&self, operation: Operation, seed: u64) -> Result<Vec<u32>, ExerciseError> {
+        let mesh = self.start();
+        let mut all: Vec<Vec<u32>> = candidates(mesh, operation)
+            .into_iter()
+            .filter(|ids| worth_doing(mesh, operation, ids))
+            .collect();
+        Seeded::new(seed).shuffle(&mut all);
+        all.into_iter()
+            .take(MAX_TRIES)
+            .find(|ids| operations::apply(&mut mesh.clone(), operation, ids).is_ok())
+            .ok_or_else(|| ExerciseError {
+                source: self.name.clone(),
+                at: None,
+                message: format!(
+                    "{operation} applies nowhere worth practising on this mesh; pick another mesh"
+                ),
+            })
+    }
+
+    fn refused(&self, ids: &[u32], refusal: &Refusal) -> ExerciseError {
+        let ids: Vec<String> = ids.iter().map(ToString::to_string).collect();
+        ExerciseError {
+            source: self.name.clone(),
+            at: None,
+            message: format!(
+                "[do-it] ids: {} {} is refused on this mesh: {refusal}",
+                self.do_it.operation,
+                ids.join(" ")
+            ),
+        }
+    }
+}
+
+/// Whether an instance teaches something: see the module notes.
+fn worth_doing(mesh: &Mesh, operation: Operation, ids: &[u32]) -> bool {
+    let edge = ElementRef::new(ElementKind::Edge, ids.first().copied().unwrap_or_default());
+    match operation {
+        Operation::FlipEdge | Operation::SplitEdge | Operation::CollapseEdge | Operation::Kef => {
+            interior(mesh, edge)
+        }
+        Operation::SplitFace | Operation::Mef => match ids {
+            [f, u, w] => u != w && !neighbours(mesh, *f, *u, *w),
+            _ => false,
+        },
+        Operation::Mev => match ids {
+            [v, x, y] => x != y && valence(mesh, *v) >= 3,
+            _ => false,
+        },
+        Operation::Kev | Operation::RemoveVertex | Operation::Kemr | Operation::Mekr => true,
+    }
+}
+
+/// Whether the edge has a face on both sides.
+fn interior(mesh: &Mesh, edge: ElementRef) -> bool {
+    let columns: &[Column] = match mesh.structure() {
+        Structure::WingedEdge => &[Column::LeftFace, Column::RightFace],
+        Structure::HalfEdge => &[Column::Face],
+    };
+    let faced = |row: ElementRef| {
+        columns
+            .iter()
+            .all(|&c| mesh.reference(row, c).ok().flatten().is_some())
+    };
+    let pair = match mesh.structure() {
+        Structure::HalfEdge => mesh.reference(edge, Column::PairEdge).ok().flatten(),
+        Structure::WingedEdge => Some(edge),
+    };
+    faced(edge) && pair.is_some_and(faced)
+}
+
+/// Whether `u` and `w` are consecutive corners of face `f`.
+fn neighbours(mesh: &Mesh, f: u32, u: u32, w: u32) -> bool {
+    let corners = candidates::face_vertices(mesh, edgewise_core::mesh::FaceId::new(f));
+    let n = corners.len();
+    (0..n).any(|i| {
+        let (a, b) = (corners[i], corners[(i + 1) % n]);
+        (a, b) == (u, w) || (a, b) == (w, u)
+    })
+}
+
+fn valence(mesh: &Mesh, v: u32) -> usize {
+    candidates::edges_at(mesh, VertexId::new(v)).len()
+}

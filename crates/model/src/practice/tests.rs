@@ -1,0 +1,156 @@
+//! The shipped exercises and the exercise format's errors.
+
+use std::collections::HashSet;
+
+use edgewise_core::mesh::operations;
+
+use super::catalog::{self, SHIPPED};
+use super::exercise::Exercise;
+use super::instance::Task;
+
+#[test]
+fn every_exercise_file_is_shipped_and_there_are_at_least_sixteen() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../algorithms/exercises");
+    let mut files: Vec<String> = std::fs::read_dir(dir)
+        .expect("algorithms/exercises")
+        .filter_map(|entry| {
+            let name = entry
+                .expect("entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned();
+            name.strip_suffix(".toml").map(str::to_owned)
+        })
+        .collect();
+    files.sort();
+    let mut shipped = catalog::names();
+    shipped.sort_unstable();
+    assert_eq!(files, shipped);
+    assert!(shipped.len() >= 16);
+}
+
+/// Every shipped exercise reads, and draws instances that apply, that the
+/// library's own result passes and the untouched mesh fails, and that vary
+/// with the seed.
+#[test]
+fn every_shipped_exercise_draws_gradable_instances() {
+    for shipped in SHIPPED {
+        let exercise =
+            Exercise::parse(shipped.name, shipped.text).unwrap_or_else(|err| panic!("{err}"));
+        let mut seen = HashSet::new();
+        for seed in 0..12 {
+            let instance = exercise
+                .instance(seed)
+                .unwrap_or_else(|err| panic!("{}: seed {seed}: {err}", shipped.name));
+            let Task::DoIt { operation, ids } = &instance.task;
+            let mut answer = instance.mesh.clone();
+            operations::apply(&mut answer, *operation, ids).expect("a drawn instance applies");
+            let outcome = exercise.grade(&instance, &answer).expect("grades");
+            assert!(
+                outcome.passed,
+                "{}: seed {seed}: {}",
+                shipped.name, outcome.feedback
+            );
+            assert_eq!(outcome.score, exercise.points);
+            let untouched = exercise.grade(&instance, &instance.mesh).expect("grades");
+            assert!(
+                !untouched.passed && untouched.score == 0,
+                "{}",
+                shipped.name
+            );
+            assert_eq!(
+                exercise.instance(seed).expect("draws").task,
+                instance.task,
+                "{}: one seed, one instance",
+                shipped.name
+            );
+            seen.insert(ids.clone());
+        }
+        assert!(
+            seen.len() >= 3,
+            "{}: only {} instances",
+            shipped.name,
+            seen.len()
+        );
+    }
+}
+
+const GOOD: &str = r#"title = "Flip"
+kind = "do-it"
+structure = "half-edge"
+
+[mesh]
+sample = "octahedron"
+
+[do-it]
+operation = "flip-edge"
+"#;
+
+/// Each fault in a file, with the place it is at.
+#[test]
+fn a_bad_exercise_file_is_refused_with_its_place() {
+    assert!(Exercise::parse("good.toml", GOOD).is_ok());
+    let cases = [
+        (
+            GOOD.replace("title", "titel"),
+            "bad.toml:1:1: unknown field `titel`",
+        ),
+        (
+            GOOD.replace("\"half-edge\"", "\"quad-edge\""),
+            "bad.toml:3:13: structure `quad-edge` is not one of half-edge, winged-edge",
+        ),
+        (
+            GOOD.replace("flip-edge", "flop"),
+            "bad.toml:9:13: no operation is named `flop`; the operations are flip-edge, \
+             split-edge, split-face, collapse-edge, remove-vertex, mev, kev, mef, kef, kemr, mekr",
+        ),
+        (
+            GOOD.replace("octahedron", "teapot"),
+            "bad.toml:6:10: there is no sample called",
+        ),
+        (
+            format!("{GOOD}ids = [1, 2]\n"),
+            "bad.toml:10:7: flip-edge takes 1 (edge); `ids` gives 2",
+        ),
+        (
+            format!("{}ids = [0]\n", GOOD.replace("octahedron", "open-square")),
+            "bad.toml: [do-it] ids: flip-edge 0 is refused on this mesh",
+        ),
+        (
+            GOOD.replace(
+                "sample = \"octahedron\"",
+                "generator = \"torus\"\nsize = [400, 400]",
+            ),
+            "bad.toml:7:8: that makes 320000 faces; an exercise mesh may have 20000",
+        ),
+        (
+            GOOD.replace(
+                "sample = \"octahedron\"",
+                "sample = \"cube\"\ngenerator = \"cube\"",
+            ),
+            "bad.toml:5:1: [mesh] needs exactly one of `sample`, `text` or `generator`",
+        ),
+        (
+            GOOD.replace("kind = \"do-it\"", "kind = \"do-it"),
+            "bad.toml:2:14: invalid basic string",
+        ),
+        (
+            GOOD.replace("[do-it]\noperation = \"flip-edge\"\n", ""),
+            "bad.toml: a do-it exercise needs a [do-it] table",
+        ),
+    ];
+    for (text, expected) in cases {
+        let message = match Exercise::parse("bad.toml", &text) {
+            Ok(exercise) => exercise
+                .instance(0)
+                .map(|_| ())
+                .expect_err("refused")
+                .to_string(),
+            Err(err) => err.to_string(),
+        };
+        assert!(
+            message.starts_with(expected),
+            "expected {expected:?}\n     got {message:?}"
+        );
+    }
+}
