@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
 
+mod practice;
 mod render;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -206,6 +207,12 @@ enum Command {
         #[arg(long)]
         dark: bool,
     },
+    /// Practise: list the shipped exercises, show an instance of one, or
+    /// grade an answer offline (exit 0 for a pass, 1 for a fail).
+    Practice {
+        #[command(subcommand)]
+        command: practice::PracticeCommand,
+    },
     /// Check an algorithm file: print every error and exit 1 if there is any.
     CheckAlg {
         /// The algorithm file.
@@ -301,6 +308,7 @@ fn main() -> ExitCode {
             size: &size,
             dark,
         }),
+        Command::Practice { command } => practice::run(command),
         Command::CheckAlg { algfile } => check_alg(&algfile),
         Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
     };

@@ -7,4 +7,5 @@ mod common;
 
 mod cli;
 mod hostile;
+mod practice;
 mod render;

@@ -1,0 +1,248 @@
+//! `edgewise practice`: the shipped exercises, an instance of one, and
+//! grading an answer offline, as a course's auto-grader calls it
+//! (docs/practice.md). A pass exits 0 and a fail 1, like a test.
+
+use std::path::{Path, PathBuf};
+
+use clap::Subcommand;
+use edgewise_core::formats::{self, Format};
+use edgewise_model::practice::{Exercise, Instance, Task, catalog};
+use serde_json::json;
+
+use crate::{Failure, Outcome, emit, load, read_text, shown};
+
+#[derive(Subcommand, Debug)]
+pub enum PracticeCommand {
+    /// Name every shipped exercise with its kind and structure.
+    List {
+        /// One JSON array instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print an instance of an exercise: the task in words and the tables.
+    Show {
+        /// A shipped exercise's name, or an exercise file (.toml).
+        exercise: String,
+        /// The seed that draws the instance.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// One JSON object instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Also write the instance's mesh as a table file (.wtb or .htb).
+        #[arg(long, value_name = "OUT")]
+        mesh: Option<PathBuf>,
+    },
+    /// Grade an answer: the tables after the edit, as a .wtb or .htb file.
+    /// Exit 0 for a pass, 1 for a fail.
+    Check {
+        /// A shipped exercise's name, or an exercise file (.toml).
+        exercise: String,
+        /// The answer: a .wtb or .htb file (`-` reads standard input).
+        answer: PathBuf,
+        /// The seed of the instance the answer is for.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// One JSON object instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+pub fn run(command: PracticeCommand) -> Outcome {
+    match command {
+        PracticeCommand::List { json } => {
+            list(json);
+            Ok(())
+        }
+        PracticeCommand::Show {
+            exercise,
+            seed,
+            json,
+            mesh,
+        } => show(&exercise, seed, json, mesh.as_deref()),
+        PracticeCommand::Check {
+            exercise,
+            answer,
+            seed,
+            json,
+        } => check(&exercise, &answer, seed, json),
+    }
+}
+
+fn list(json: bool) {
+    let exercises: Vec<Exercise> = catalog::SHIPPED
+        .iter()
+        .filter_map(|shipped| Exercise::parse(shipped.name, shipped.text).ok())
+        .collect();
+    if json {
+        let rows: Vec<_> = exercises
+            .iter()
+            .map(|e| {
+                json!({
+                    "name": e.name,
+                    "title": e.title,
+                    "kind": e.kind.name(),
+                    "structure": e.structure.prose(),
+                })
+            })
+            .collect();
+        emit(&format!("{}\n", serde_json::Value::Array(rows)));
+        return;
+    }
+    let width = exercises.iter().map(|e| e.name.len()).max().unwrap_or(0);
+    let mut text = String::new();
+    for e in &exercises {
+        text.push_str(&format!(
+            "{:<width$}  {:<6}  {:<11}  {}\n",
+            e.name,
+            e.kind.name(),
+            e.structure.prose(),
+            e.title
+        ));
+    }
+    emit(&text);
+}
+
+/// A shipped exercise by name, or an exercise file by path.
+fn exercise(name: &str) -> Result<Exercise, Failure> {
+    let read = match catalog::find(name) {
+        Some(read) => read,
+        None if name.ends_with(".toml") || Path::new(name).exists() => {
+            let path = Path::new(name);
+            Exercise::parse(&shown(path), &read_text(path)?)
+        }
+        None => {
+            eprintln!(
+                "edgewise: no exercise is named `{name}`; the exercises are {} (or give a .toml file)",
+                catalog::names().join(", ")
+            );
+            return Err(Failure::Usage);
+        }
+    };
+    read.map_err(|err| {
+        eprintln!("{err}");
+        Failure::Input
+    })
+}
+
+fn instance(exercise: &Exercise, seed: u64) -> Result<Instance, Failure> {
+    exercise.instance(seed).map_err(|err| {
+        eprintln!("{err}");
+        Failure::Input
+    })
+}
+
+fn show(name: &str, seed: u64, json: bool, mesh: Option<&Path>) -> Outcome {
+    let exercise = exercise(name)?;
+    let instance = instance(&exercise, seed)?;
+    let Task::DoIt { operation, ids } = &instance.task;
+    let task = instance.task.describe(exercise.structure);
+    if let Some(out) = mesh {
+        write_tables(&instance, out)?;
+    }
+    if json {
+        let object = json!({
+            "name": exercise.name,
+            "title": exercise.title,
+            "kind": exercise.kind.name(),
+            "structure": exercise.structure.prose(),
+            "seed": seed,
+            "task": task,
+            "operation": operation.name(),
+            "ids": ids,
+            "points": exercise.points,
+        });
+        emit(&format!("{object}\n"));
+    } else {
+        let mut text = format!(
+            "{} ({}, {}, seed {seed})\n\n",
+            exercise.title,
+            exercise.kind.name(),
+            exercise.structure.prose()
+        );
+        if let Some(about) = &exercise.about {
+            text.push_str(about.trim());
+            text.push_str("\n\n");
+        }
+        text.push_str(&format!("Task: {task}\n\n"));
+        text.push_str(&formats::listing(&instance.mesh));
+        emit(&text);
+    }
+    Ok(())
+}
+
+/// Writes the instance's mesh as its structure's table file.
+fn write_tables(instance: &Instance, out: &Path) -> Outcome {
+    let format = table_format(instance, out)?;
+    let bytes =
+        formats::save(&instance.mesh, format, &formats::SaveOptions::default()).map_err(|err| {
+            eprintln!("{}: {err}", out.display());
+            Failure::Input
+        })?;
+    std::fs::write(out, bytes).map_err(|err| {
+        eprintln!("{}: cannot write the file: {err}", out.display());
+        Failure::Input
+    })
+}
+
+fn table_format(instance: &Instance, out: &Path) -> Result<Format, Failure> {
+    let wanted = match instance.mesh.structure() {
+        edgewise_core::mesh::Structure::WingedEdge => Format::Wtb,
+        edgewise_core::mesh::Structure::HalfEdge => Format::Htb,
+    };
+    match Format::from_name(&out.to_string_lossy()) {
+        Some(format) if format == wanted => Ok(format),
+        _ => {
+            eprintln!(
+                "edgewise: the instance is in the {} structure: write it as a .{} file",
+                instance.mesh.structure().prose(),
+                if wanted == Format::Wtb { "wtb" } else { "htb" }
+            );
+            Err(Failure::Usage)
+        }
+    }
+}
+
+fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
+    let exercise = exercise(name)?;
+    let instance = instance(&exercise, seed)?;
+    let loaded = load(answer, |format| {
+        format.native_structure().unwrap_or(exercise.structure)
+    })?;
+    if loaded.format.native_structure().is_none() {
+        eprintln!(
+            "{}: an answer is the tables after the edit: a .wtb or .htb file, not {}",
+            shown(answer),
+            loaded.format.description()
+        );
+        return Err(Failure::Input);
+    }
+    let outcome = exercise.grade(&instance, &loaded.mesh).map_err(|err| {
+        eprintln!("{err}");
+        Failure::Input
+    })?;
+    if json {
+        let mut object = serde_json::to_value(&outcome).unwrap_or_default();
+        if let Some(map) = object.as_object_mut() {
+            map.insert("exercise".to_owned(), json!(exercise.name));
+            map.insert("seed".to_owned(), json!(seed));
+        }
+        emit(&format!("{object}\n"));
+    } else {
+        let verdict = if outcome.passed { "pass" } else { "fail" };
+        let mut text = format!(
+            "{}: {verdict} ({} of {} points)\n{}\n",
+            exercise.name, outcome.score, outcome.max_score, outcome.feedback
+        );
+        if let Some(fewest) = outcome.fewest_writes {
+            text.push_str(&format!("The library's operation makes {fewest} writes.\n"));
+        }
+        emit(&text);
+    }
+    if outcome.passed {
+        Ok(())
+    } else {
+        Err(Failure::Input)
+    }
+}
