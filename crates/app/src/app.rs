@@ -23,8 +23,8 @@ use crate::{
     tables::{self, TablesResponse},
 };
 use edgewise_model::{
-    algorithm::session::Run, document::Document, message, moment, paint::Paint, samples,
-    selection::Role, settings::Settings, theme::Theme,
+    algorithm::session::Run, document::Document, message, moment, paint::Paint, practice::Session,
+    samples, selection::Role, settings::Settings, theme::Theme,
 };
 use edgewise_pictures::options::{DrawIds, ViewOptions};
 use edgewise_renderer::ui_cache::{PartTextures, UiCache};
@@ -44,6 +44,7 @@ mod open_dialog;
 mod pane;
 mod pending;
 mod pictures;
+pub(crate) mod practice;
 mod readers;
 mod screen;
 pub mod settings_ui;
@@ -486,6 +487,7 @@ impl EdgewiseApp {
             broken: self.tab().broken().iter().map(BrokenState::new).collect(),
             broken_count: self.tab().broken_total,
             diagnosis: self.tab().diagnosis,
+            exercise: self.tab().practice.as_ref().map(Session::state),
             history: self.tab().history.state(),
             renumbering: self.tab().renumbering.clone(),
             edit_menu: self.tab().edit_menu.as_ref().map(EditMenu::state),
@@ -684,6 +686,7 @@ impl EdgewiseApp {
             self.toggle_obj_editor();
         }
         self.algorithm_menu_ui(ui);
+        self.practice_menu_ui(ui);
         self.view_options_menu_ui(ui);
         self.help_menu_ui(ui);
         let share = ui

@@ -9,7 +9,7 @@ use std::fmt;
 use edgewise_core::{
     lang::Value,
     mesh::{Structure, operations::Operation},
-    schema::ElementRef,
+    schema::{ElementKind, ElementRef},
 };
 
 use crate::save_format::SaveFormat;
@@ -121,6 +121,31 @@ pub enum Command {
     Redo,
     /// Drops deleted rows and renumbers the rest.
     CompactIds,
+    /// Appends an empty row to a table by hand (a new vertex, edge or
+    /// half-edge, or face, its references unset).
+    AddRow(ElementKind),
+    /// Marks a row deleted by hand.
+    DeleteRow(ElementRef),
+    /// Moves a vertex by hand to a typed position.
+    SetPosition {
+        vertex: u32,
+        position: [f32; 3],
+    },
+    /// Starts an exercise: a shipped one's name or an exercise file's text,
+    /// at the instance `seed` draws (a random one if none is given).
+    StartExercise {
+        exercise: String,
+        seed: Option<u64>,
+    },
+    /// Grades the exercise's answer as the tables now hold it (Check).
+    SubmitExercise,
+    /// Shows the library's result as the model answer; the attempt scores 0.
+    ShowModelAnswer,
+    /// Starts the exercise's next attempt, on a fresh instance where it
+    /// draws them.
+    NewInstance,
+    /// Leaves the exercise; the mesh stays as it is.
+    EndExercise,
     /// Sets one reference of a record by hand (a table cell): `column` is
     /// named as the language names it (`leftSuccessor`, `pair`), and
     /// `target` is the id of the element it is to name, or `None`.

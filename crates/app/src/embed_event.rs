@@ -5,6 +5,8 @@
 use edgewise_core::schema::ElementRef;
 use serde::Serialize;
 
+use edgewise_model::practice::ExerciseState;
+
 use crate::state::{AnswerState, Counts, TraceState};
 
 /// One event, named `edgewise:<name>` on the page.
@@ -38,6 +40,14 @@ pub enum EmbedEvent {
     },
     /// A question was answered.
     Answer(AnswerState),
+    /// An exercise or a new attempt of one started.
+    ExerciseStart(ExerciseState),
+    /// An action of an exercise was graded (a check, or a write with live
+    /// feedback).
+    ExerciseStep(ExerciseState),
+    /// An attempt ended with a score: `{exercise, seed, attempt, score,
+    /// maxScore, passed, statement}`, the statement shaped as xAPI.
+    Score(serde_json::Value),
 }
 
 impl EmbedEvent {
@@ -50,6 +60,9 @@ impl EmbedEvent {
             Self::StepChange { .. } => "stepchange",
             Self::Resize { .. } => "resize",
             Self::Answer(_) => "answer",
+            Self::ExerciseStart(_) => "exercisestart",
+            Self::ExerciseStep(_) => "exercisestep",
+            Self::Score(_) => "score",
         }
     }
 }

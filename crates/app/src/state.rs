@@ -51,6 +51,8 @@ pub struct AppState {
     pub broken_count: usize,
     /// The mesh is a broken table opened to be fixed (see `broken`).
     pub diagnosis: bool,
+    /// The exercise being done, or null (docs/practice.md).
+    pub exercise: Option<edgewise_model::practice::ExerciseState>,
     /// What undo and redo would take back and make again, oldest first.
     pub history: HistoryState,
     /// The old-to-new ids of the last compacting, until dismissed: per

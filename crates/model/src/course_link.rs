@@ -91,9 +91,11 @@ const QUERY_KEYS: &[&str] = &[
     "present",
     "colors",
     "codeSize",
+    "exercise",
+    "seed",
 ];
 /// The fragment parameters, in the order `to_url` writes them.
-const FRAGMENT_KEYS: &[&str] = &["mesh", "poly", "format", "alg", "ask"];
+const FRAGMENT_KEYS: &[&str] = &["mesh", "poly", "format", "alg", "ask", "exercise"];
 
 /// Where the link's mesh comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -167,6 +169,29 @@ pub struct CourseLink {
     pub colors: BTreeMap<String, [u8; 3]>,
     /// The algorithm view's font size, in points.
     pub code_size: Option<f32>,
+    /// An exercise to start (`?exercise=flip-edge-half-edge`, or any
+    /// exercise's text as `#exercise=<payload>`).
+    pub exercise: Option<ExerciseLink>,
+    /// The seed of the exercise's instance (`?seed=12`).
+    pub seed: Option<u64>,
+}
+
+/// The exercise a link opens.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ExerciseLink {
+    /// A shipped exercise by name.
+    Name(String),
+    /// An exercise file's text.
+    Text(String),
+}
+
+impl ExerciseLink {
+    /// What `startExercise` takes: the name, or the text.
+    pub fn as_str(&self) -> &str {
+        match self {
+            Self::Name(text) | Self::Text(text) => text,
+        }
+    }
 }
 
 /// Splits a URL, or just its `?…#…` part, into what `location.search`
@@ -226,6 +251,9 @@ impl CourseLink {
         }
         if let Some(questions) = &self.questions {
             check_payload_size("ask", questions.len(), built.ask_payload_chars)?;
+        }
+        if let Some(ExerciseLink::Text(text)) = &self.exercise {
+            check_payload_size("exercise", text.len(), built.exercise_payload_chars)?;
         }
         Ok(built.url)
     }
@@ -382,6 +410,13 @@ impl CourseLink {
         if let Some(size) = self.code_size {
             push("codeSize", size.to_string());
         }
+        match &self.exercise {
+            Some(ExerciseLink::Name(name)) => push("exercise", name.clone()),
+            Some(ExerciseLink::Text(_)) | None => {}
+        }
+        if let Some(seed) = self.seed {
+            push("seed", seed.to_string());
+        }
         if let Some(source) = &self.algorithm_source {
             let payload = encode_payload(source);
             built.alg_payload_chars = payload.len();
@@ -391,6 +426,12 @@ impl CourseLink {
             let payload = encode_payload(questions);
             built.ask_payload_chars = payload.len();
             fragment.push(format!("ask={payload}"));
+        }
+
+        if let Some(ExerciseLink::Text(text)) = &self.exercise {
+            let payload = encode_payload(text);
+            built.exercise_payload_chars = payload.len();
+            fragment.push(format!("exercise={payload}"));
         }
 
         let base = base.split(['?', '#']).next().unwrap_or_default();
@@ -495,6 +536,7 @@ struct Built {
     mesh_payload_chars: usize,
     alg_payload_chars: usize,
     ask_payload_chars: usize,
+    exercise_payload_chars: usize,
 }
 
 fn check_payload_size(name: &str, text_bytes: usize, payload_chars: usize) -> Result<(), String> {
@@ -569,6 +611,14 @@ impl Parser {
                 .parse()
                 .map(|n| self.link.step = Some(n))
                 .map_err(|_| "expected a whole number of steps, such as step=12"),
+            "exercise" => {
+                self.exercise(value);
+                Ok(())
+            }
+            "seed" => value
+                .parse()
+                .map(|n| self.link.seed = Some(n))
+                .map_err(|_| "expected a whole number, such as seed=12"),
             "select" => parse_selection(value)
                 .map(|e| self.link.selection = Some(e))
                 .ok_or("expected vertex, edge or face and an id, such as select=edge:3"),
@@ -660,6 +710,10 @@ impl Parser {
                 Ok(source) => self.link.algorithm_source = Some(source),
                 Err(message) => self.messages.push(message),
             },
+            "exercise" => match decode_payload("exercise", value) {
+                Ok(text) => self.link.exercise = Some(ExerciseLink::Text(text)),
+                Err(message) => self.messages.push(message),
+            },
             "ask" => match decode_payload("ask", value) {
                 Ok(text) => match edgewise_core::lang::question::parse_set(&text) {
                     Ok(_) => self.link.questions = Some(text),
@@ -681,6 +735,21 @@ impl Parser {
             ));
         } else {
             self.seen.push(shown);
+        }
+    }
+
+    fn exercise(&mut self, name: &str) {
+        if crate::practice::catalog::SHIPPED
+            .iter()
+            .any(|e| e.name == name)
+        {
+            self.link.exercise = Some(ExerciseLink::Name(name.to_owned()));
+        } else {
+            self.messages.push(format!(
+                "exercise={}: no exercise has that name; the exercises are {}",
+                quote(name),
+                crate::practice::catalog::names().join(", ")
+            ));
         }
     }
 

@@ -9,6 +9,8 @@ use edgewise_core::{
     },
 };
 
+use glam::Vec3;
+
 use crate::selection::{self, Highlight};
 
 /// A mesh open in the app with its selection. Cloned whole into the undo
@@ -232,6 +234,49 @@ impl Document {
         }
         self.mesh
             .set_reference(element, column, target)
+            .map_err(|error| error.to_string())?;
+        self.changed();
+        Ok(())
+    }
+
+    /// A document of a mesh made here (an exercise's instance), nothing
+    /// selected.
+    pub fn from_mesh(name: &str, mesh: Mesh) -> Self {
+        Self::new(name, mesh, Vec::new())
+    }
+
+    /// Appends an empty row to one table, by hand: its references are unset
+    /// until written, and a vertex sits at the origin.
+    pub fn add_row(&mut self, kind: ElementKind) -> Result<ElementRef, String> {
+        let row = self
+            .mesh
+            .push_row(kind)
+            .map_err(|error| error.to_string())?;
+        self.changed();
+        Ok(row)
+    }
+
+    /// Marks a row deleted, by hand; it keeps its number until the ids are
+    /// compacted.
+    pub fn delete_row(&mut self, element: ElementRef) -> Result<(), String> {
+        if !self.mesh.contains(element) {
+            return Err(self.missing(element));
+        }
+        self.mesh
+            .set_deleted(element, true)
+            .map_err(|error| error.to_string())?;
+        self.changed();
+        Ok(())
+    }
+
+    /// Moves a vertex, by hand (a typed position).
+    pub fn set_position(&mut self, vertex: VertexId, position: Vec3) -> Result<(), String> {
+        let element = ElementRef::from(vertex);
+        if !self.mesh.contains(element) {
+            return Err(self.missing(element));
+        }
+        self.mesh
+            .set_position(vertex, position)
             .map_err(|error| error.to_string())?;
         self.changed();
         Ok(())

@@ -7,17 +7,21 @@
 //! - [`instance`] draws an instance from a seed, always one the task applies
 //!   to and worth doing;
 //! - [`attempt`] grades an answer: a do-it answer by the core's grader
-//!   ([`edgewise_core::mesh::grade`]).
+//!   ([`edgewise_core::mesh::grade`]);
+//! - [`session`] is one student's go: attempts, writes, grades and the
+//!   score the embed protocol reports.
 
 pub mod attempt;
 pub mod catalog;
 pub mod exercise;
 pub mod instance;
 mod seed;
+pub mod session;
 
 pub use attempt::Outcome;
 pub use exercise::{Exercise, ExerciseError, Feedback, Kind};
 pub use instance::{Instance, Task};
+pub use session::{ExerciseState, Session};
 
 #[cfg(test)]
 mod tests;

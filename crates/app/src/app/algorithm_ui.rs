@@ -269,6 +269,7 @@ impl EdgewiseApp {
         ui.separator();
         match self.algorithm_tab {
             AlgorithmTab::Run => {
+                self.practice_ui(ui);
                 // A phone's sheet keeps its height for the trace: the top bar
                 // already counts the mesh's elements.
                 if !(self.algorithms.in_sheet && self.tab().run.is_active()) {
@@ -276,6 +277,11 @@ impl EdgewiseApp {
                     ui.separator();
                 }
                 let tab = &mut self.tabs[self.active_tab];
+                // An exercise is done by hand: the algorithms wait until it
+                // is left.
+                if tab.practice.is_some() {
+                    return;
+                }
                 let mesh = tab
                     .document
                     .as_ref()

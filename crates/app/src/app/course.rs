@@ -20,7 +20,8 @@ use crate::command::Command;
 use edgewise_model::{
     algorithm::library::Origin,
     algorithm::session::Argument,
-    course_link::{self, CourseLink, FetchedMesh, MeshSource, Panels, ThemeChoice},
+    course_link::{self, CourseLink, ExerciseLink, FetchedMesh, MeshSource, Panels, ThemeChoice},
+    practice::catalog,
     selection::Role,
     settings::{self, Settings},
     trace_role::TraceRole,
@@ -74,6 +75,17 @@ impl EdgewiseApp {
         self.finish_pending();
 
         link.follow(self, &mut messages);
+        match &link.exercise {
+            Some(exercise) => {
+                if let Err(message) = self.start_exercise(exercise.as_str(), link.seed) {
+                    messages.push(format!("exercise=: {message}"));
+                }
+            }
+            None if link.seed.is_some() => {
+                messages.push("seed= needs an exercise= to draw its instance from".to_owned());
+            }
+            None => {}
+        }
         if let Some(camera) = link.camera {
             self.tab_mut().pane.view.set_camera(camera.sanitized());
         }
@@ -179,6 +191,21 @@ impl EdgewiseApp {
                 .run
                 .session()
                 .map(edgewise_model::algorithm::session::TraceSession::step);
+            link.selection = None;
+        }
+        // An exercise's link opens the exercise at its instance: the mesh
+        // is the instance's, not the student's tables.
+        if let Some(session) = &self.tab().practice {
+            let exercise = &session.exercise;
+            let shipped = catalog::SHIPPED.iter().any(|e| e.name == exercise.name);
+            link.exercise = Some(if shipped {
+                ExerciseLink::Name(exercise.name.clone())
+            } else {
+                ExerciseLink::Text(exercise.text.clone())
+            });
+            link.seed = Some(session.instance.seed);
+            link.mesh = None;
+            link.structure = None;
             link.selection = None;
         }
         link.camera = Some(self.tab().pane.view.camera());

@@ -36,9 +36,26 @@ impl EdgewiseApp {
         // redo.
         let shows_status = matches!(
             command,
-            Command::Edit { .. } | Command::SetCell { .. } | Command::CompactIds
+            Command::Edit { .. }
+                | Command::SetCell { .. }
+                | Command::CompactIds
+                | Command::AddRow(_)
+                | Command::DeleteRow(_)
+                | Command::SetPosition { .. }
         );
-        let result = self.dispatch(command);
+        let written = matches!(
+            command,
+            Command::SetCell { .. }
+                | Command::AddRow(_)
+                | Command::DeleteRow(_)
+                | Command::SetPosition { .. }
+        );
+        let result = self
+            .refuse_during_practice(&command)
+            .and_then(|()| self.dispatch(command));
+        if written && result.is_ok() {
+            self.exercise_written();
+        }
         // A run just traced asks its questions from its first step.
         let run = &mut self.tabs[self.active_tab].run;
         self.algorithms.question_sets.pose(run);
@@ -61,6 +78,29 @@ impl EdgewiseApp {
     pub(crate) fn issue(&mut self, command: Command) {
         // Recorded by execute; nothing else to do with it here.
         let _reported = self.execute(command);
+    }
+
+    /// While an exercise is open the student makes the edit by hand: the
+    /// library's operations, traced or not, and a change of structure wait
+    /// until it is left (the model answer applies the operation).
+    fn refuse_during_practice(&self, command: &Command) -> Result<(), CommandError> {
+        let Some(session) = self.tab().practice.as_ref() else {
+            return Ok(());
+        };
+        let what = match command {
+            Command::Edit { .. } => "the library's operations",
+            Command::RunAlgorithm { .. } => "algorithms",
+            Command::SetStructure(structure) if *structure != session.exercise.structure => {
+                "another structure"
+            }
+            _ => return Ok(()),
+        };
+        Err(format!(
+            "the exercise {} is open: do the edit by hand in the tables; {what} wait until you \
+             leave it (Practice card, Leave)",
+            session.exercise.name
+        )
+        .into())
     }
 
     fn dispatch(&mut self, command: Command) -> Result<Reply, CommandError> {
@@ -155,6 +195,16 @@ impl EdgewiseApp {
             Command::RestoreBeforeEdit => done(self.tab_mut().restore_before_edit()),
             Command::Undo => done(self.tab_mut().undo()),
             Command::Redo => done(self.tab_mut().redo()),
+            Command::AddRow(kind) => done(self.tab_mut().add_row(kind)),
+            Command::DeleteRow(element) => done(self.tab_mut().delete_row(element)),
+            Command::SetPosition { vertex, position } => {
+                done(self.tab_mut().set_position(vertex, position))
+            }
+            Command::StartExercise { exercise, seed } => done(self.start_exercise(&exercise, seed)),
+            Command::SubmitExercise => done(self.submit_exercise()),
+            Command::ShowModelAnswer => done(self.show_model_answer()),
+            Command::NewInstance => done(self.new_instance()),
+            Command::EndExercise => done(self.end_exercise()),
             Command::CompactIds => done(self.tab_mut().compact_ids()),
             Command::SetCell {
                 element,

@@ -213,6 +213,8 @@ impl EdgewiseApp {
                 tab.end_run();
                 let before = tab.document.replace(document);
                 tab.history.record(entry, Kind::Load, before, merge);
+                // Another mesh ends the exercise on this tab.
+                tab.practice = None;
                 match broken {
                     Some(broken) => tab.diagnose_with(broken),
                     None => tab.rediagnose(),

@@ -7,7 +7,7 @@ use std::borrow::Cow;
 use std::cell::RefCell;
 
 use edgewise_core::mesh::{
-    Change, Edit as _, Issue, Mesh, MeshStats, Polygons, Renumbering, Structure,
+    Change, Edit as _, Issue, Mesh, MeshStats, Polygons, Renumbering, Structure, VertexId,
     operations::{self, Operation},
 };
 use edgewise_core::schema::{Column, ElementKind, ElementRef, NameError};
@@ -27,6 +27,7 @@ use crate::{
 use edgewise_model::{
     document::Document,
     paint::{MOST_MARKED, Paint},
+    practice::Session,
 };
 
 /// One open mesh and everything shown for it: its document, 3D view and
@@ -88,6 +89,8 @@ pub(crate) struct Tab {
     /// A large mesh being opened or converted, a slice per frame; the tab
     /// shows its old mesh meanwhile.
     pub(crate) pending: Option<super::pending::PendingMesh>,
+    /// The exercise being done on this tab's tables (practice).
+    pub(crate) practice: Option<Session>,
 }
 
 impl Tab {
@@ -121,6 +124,7 @@ impl Tab {
             stats: RefCell::new(None),
             exact_polygons: RefCell::new(None),
             pending: None,
+            practice: None,
         }
     }
 
@@ -251,6 +255,13 @@ impl Tab {
     /// [`Self::rediagnose`] with the rules already checked: `broken` are
     /// the current mesh's broken records.
     pub(crate) fn diagnose_with(&mut self, broken: Vec<Issue>) {
+        // An exercise judges nothing before Check, unless it asks for live
+        // feedback: its broken records are the student's to find.
+        let broken = if self.practice.as_ref().is_some_and(|p| !p.grades_live()) {
+            Vec::new()
+        } else {
+            broken
+        };
         self.set_broken(broken);
         let was = std::mem::replace(&mut self.diagnosis, !self.broken.is_empty());
         if was && !self.diagnosis {
@@ -398,14 +409,56 @@ impl Tab {
             resolved.language_name().unwrap_or(column),
             target.map_or_else(|| "null".to_owned(), |t| t.to_string())
         );
-        let mut edited = document.clone();
-        edited
-            .set_reference(element, resolved, target)
-            .map_err(|error| format!("{call}: {error}"))?;
+        self.by_hand(&call, label, |document| {
+            document.set_reference(element, resolved, target)
+        })
+    }
+
+    /// Appends an empty row by hand, undoably.
+    pub(crate) fn add_row(&mut self, kind: ElementKind) -> Result<(), CommandError> {
+        let call = format!("addRow({})", kind.prose());
+        let label = format!("new {} row", kind.prose());
+        self.by_hand(&call, label, |document| document.add_row(kind).map(drop))
+    }
+
+    /// Marks a row deleted by hand, undoably.
+    pub(crate) fn delete_row(&mut self, element: ElementRef) -> Result<(), CommandError> {
+        let call = format!("deleteRow({element})");
+        self.by_hand(&call, format!("delete {element}"), |document| {
+            document.delete_row(element)
+        })
+    }
+
+    /// Moves a vertex by hand, undoably.
+    pub(crate) fn set_position(
+        &mut self,
+        vertex: u32,
+        [x, y, z]: [f32; 3],
+    ) -> Result<(), CommandError> {
+        let call = format!("setPosition({vertex}, [{x}, {y}, {z}])");
+        let label = format!("vertex {vertex} position := ({x}, {y}, {z})");
+        self.by_hand(&call, label, |document| {
+            document.set_position(VertexId::new(vertex), glam::Vec3::new(x, y, z))
+        })
+    }
+
+    /// One change of the tables by hand on a copy of the document, kept
+    /// undoably as `label` if it succeeds; `call` names it in a refusal.
+    fn by_hand(
+        &mut self,
+        call: &str,
+        label: String,
+        change: impl FnOnce(&mut Document) -> Result<(), String>,
+    ) -> Result<(), CommandError> {
+        let mut edited = self.document.as_ref().ok_or("no mesh is open")?.clone();
+        change(&mut edited).map_err(|error| format!("{call}: {error}"))?;
         let before = self.document.replace(edited);
         self.history.record(label, Kind::Edit, before, false);
         self.mesh_changed_by_hand();
         self.rediagnose();
+        if let Some(practice) = &mut self.practice {
+            practice.wrote();
+        }
         Ok(())
     }
 

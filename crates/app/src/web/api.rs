@@ -19,7 +19,7 @@ use edgewise_core::{
 
 use super::arguments::{
     MAX_NAME_CHARS, arguments, check_options, expected, is_array, items, option_bool,
-    option_string, shown, structure_option, text_argument, whole_number,
+    option_string, option_whole_number, shown, structure_option, text_argument, whole_number,
 };
 use super::{after_a_paint, after_ms, exported_object, with_app};
 use crate::{
@@ -197,6 +197,62 @@ const COMMANDS: &[CommandEntry] = &[
         read: |_, _, _| Ok(Command::CompactIds),
     },
     CommandEntry {
+        name: "addRow",
+        call: "addRow(kind)",
+        read: |call, kind, _| {
+            let kind = kind
+                .as_string()
+                .and_then(|k| ElementKind::parse(&k))
+                .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
+            Ok(Command::AddRow(kind))
+        },
+    },
+    CommandEntry {
+        name: "deleteRow",
+        call: "deleteRow(kind, id)",
+        read: |call, kind, id| Ok(Command::DeleteRow(read_element(call, kind, id)?)),
+    },
+    CommandEntry {
+        name: "setPosition",
+        call: "setPosition(id, position)",
+        read: read_set_position,
+    },
+    CommandEntry {
+        name: "startExercise",
+        call: "startExercise(exercise, options)",
+        read: |call, exercise, options| {
+            let exercise = text_argument(
+                call,
+                "exercise",
+                exercise,
+                crate::app::practice::MAX_EXERCISE_BYTES,
+            )?;
+            check_options(call, options, &["seed"])?;
+            let seed = option_whole_number(call, options, "seed")?;
+            Ok(Command::StartExercise { exercise, seed })
+        },
+    },
+    CommandEntry {
+        name: "submitExercise",
+        call: "submitExercise()",
+        read: |_, _, _| Ok(Command::SubmitExercise),
+    },
+    CommandEntry {
+        name: "showModelAnswer",
+        call: "showModelAnswer()",
+        read: |_, _, _| Ok(Command::ShowModelAnswer),
+    },
+    CommandEntry {
+        name: "newInstance",
+        call: "newInstance()",
+        read: |_, _, _| Ok(Command::NewInstance),
+    },
+    CommandEntry {
+        name: "endExercise",
+        call: "endExercise()",
+        read: |_, _, _| Ok(Command::EndExercise),
+    },
+    CommandEntry {
         name: "newTab",
         call: "newTab()",
         read: |_, _, _| Ok(Command::NewTab),
@@ -343,6 +399,37 @@ fn read_set_cell(
         column,
         target,
     })
+}
+
+/// `setPosition(id, [x, y, z])`: a vertex moved by hand.
+fn read_set_position(
+    call: &'static str,
+    id: &JsValue,
+    position: &JsValue,
+) -> Result<Command, String> {
+    let vertex = read_element(call, &"vertex".into(), id)?.id;
+    if !is_array(position) {
+        return Err(expected(call, "position", "an array [x, y, z]", position));
+    }
+    let (values, length) = items(call, "position", position, 3)?;
+    let numbers: Vec<f32> = values
+        .iter()
+        .filter_map(JsValue::as_f64)
+        .filter(|n| n.is_finite() && n.abs() <= f64::from(f32::MAX))
+        .map(|n| n as f32)
+        .collect();
+    match numbers.as_slice() {
+        [x, y, z] if length == 3 => Ok(Command::SetPosition {
+            vertex,
+            position: [*x, *y, *z],
+        }),
+        _ => Err(expected(
+            call,
+            "position",
+            "three finite numbers [x, y, z]",
+            position,
+        )),
+    }
 }
 
 /// An element named by its kind (`'vertex'`, `'edge'`, `'face'`) and id.

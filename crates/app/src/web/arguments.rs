@@ -196,6 +196,23 @@ pub(super) fn option_bool(
         .ok_or_else(|| expected(call, &argument, "true or false", &value))
 }
 
+/// `options[key]` as a whole number, if present.
+pub(super) fn option_whole_number(
+    call: &str,
+    options: &JsValue,
+    key: &str,
+) -> Result<Option<u64>, String> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(None);
+    }
+    let argument = format!("options.{key}");
+    let value = property(call, &argument, options, key)?;
+    if value.is_undefined() {
+        return Ok(None);
+    }
+    whole_number(call, &argument, &value).map(Some)
+}
+
 pub(super) fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {
     option_string(call, options, "structure")?
         .map(|name| {

@@ -25,6 +25,7 @@ mod limits;
 mod links;
 mod pending;
 mod pixel_cost;
+mod practice;
 mod questions;
 mod snapshots;
 mod still;

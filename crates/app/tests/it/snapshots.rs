@@ -288,3 +288,31 @@ fn keyboard_focus_ring_light() {
     assert!(harness.state().focus_ring().is_some());
     harness.snapshot_options("keyboard-focus-ring-light", &options());
 }
+
+/// The practice card after a check that found a wrong cell: the task, the
+/// row tools, the feedback naming the difference.
+#[test]
+fn a_flip_exercise_checked_with_one_wrong_cell() {
+    use edgewise_app::command::Command;
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    let app = harness.state_mut();
+    app.execute(Command::StartExercise {
+        exercise: "flip-edge-half-edge".to_owned(),
+        seed: Some(3),
+    })
+    .unwrap();
+    // Half-edge 16's end moved to the flip's new end; the rest not yet done.
+    app.execute(Command::SetCell {
+        element: ElementRef::new(ElementKind::Edge, 16),
+        column: "endVertex".to_owned(),
+        target: Some(0),
+    })
+    .unwrap();
+    app.execute(Command::SubmitExercise).unwrap();
+    harness.run();
+    let exercise = harness.state().state().exercise.unwrap();
+    assert_eq!(exercise.passed, Some(false));
+    harness.snapshot_options("practice-flip-one-wrong-cell", &options());
+}

@@ -56,6 +56,8 @@ fn full_link() -> CourseLink {
             ("marked".to_owned(), [0x1d, 0x5b, 0xd8]),
         ]),
         code_size: Some(18.0),
+        exercise: Some(ExerciseLink::Name("flip-edge-half-edge".into())),
+        seed: Some(9),
     }
 }
 
@@ -67,7 +69,7 @@ fn a_full_link_is_written_in_a_stable_readable_order() {
          &algorithm=vertexAdjacentEdge&args=v:1,closed:true&step=3&select=edge:3\
          &camera=0.55,0.4,5,0,-0.25,1.5&ids=always&axes=1&orientation=0&solid=1\
          &meshScale=1.5&labelScale=2&theme=dark&embed=1&tables=0&panels=algorithm,tables\
-         &present=1&colors=lookup:22aa44,marked:1d5bd8&codeSize=18"
+         &present=1&colors=lookup:22aa44,marked:1d5bd8&codeSize=18&exercise=flip-edge-half-edge&seed=9"
     );
     let (link, messages) = parse_url(&full_link().to_url(BASE));
     assert_eq!(messages, Vec::<String>::new());
@@ -501,6 +503,8 @@ fn arb_link() -> impl Strategy<Value = CourseLink> {
                 present,
                 colors,
                 code_size,
+                exercise: None,
+                seed: None,
             }
         })
 }

@@ -171,6 +171,8 @@ pub struct Exercise {
     pub fresh_instance: bool,
     pub mesh: MeshSource,
     pub do_it: DoIt,
+    /// The file's text, for a link that carries the exercise.
+    pub text: String,
     /// The start mesh, built once.
     start: Mesh,
 }
@@ -264,6 +266,7 @@ impl Exercise {
             fresh_instance: file.fresh_instance,
             mesh,
             do_it,
+            text: text.to_owned(),
             start,
         })
     }

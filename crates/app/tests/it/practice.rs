@@ -1,0 +1,299 @@
+//! Practice in the app: an exercise opened by command and by link, the
+//! operation done cell by cell and graded, one wrong cell named, the model
+//! answer, a fresh instance, live feedback, and the events and state a page
+//! and a script see.
+
+use crate::support;
+
+use edgewise_app::{EmbedEvent, command::Command};
+use edgewise_core::mesh::operations::{self, Operation};
+use edgewise_core::mesh::{Edit as _, Mesh, VertexId};
+use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, Storage};
+use edgewise_model::practice::ExerciseState;
+
+type App = support::AppHarness;
+
+fn exercise(harness: &App) -> ExerciseState {
+    harness
+        .state()
+        .state()
+        .exercise
+        .expect("an exercise is open")
+}
+
+fn run(harness: &mut App, command: Command) {
+    let shown = format!("{command:?}");
+    harness
+        .state_mut()
+        .execute(command)
+        .unwrap_or_else(|err| panic!("{shown}: {err}"));
+    harness.run();
+}
+
+fn start(harness: &mut App, name: &str, seed: u64) -> ExerciseState {
+    run(
+        harness,
+        Command::StartExercise {
+            exercise: name.to_owned(),
+            seed: Some(seed),
+        },
+    );
+    exercise(harness)
+}
+
+/// The writes that turn the app's tables into `target`, as a student
+/// makes them: new rows, positions, every reference that differs, then
+/// deletions.
+fn writes_to(current: &Mesh, target: &Mesh) -> Vec<Command> {
+    let mut writes = Vec::new();
+    for kind in ElementKind::ALL {
+        for _ in current.count(kind)..target.count(kind) {
+            writes.push(Command::AddRow(kind));
+        }
+    }
+    for v in 0..target.count(ElementKind::Vertex) as u32 {
+        let position = target.position(VertexId::new(v));
+        if let Some(p) = position
+            && current.position(VertexId::new(v)) != position
+        {
+            writes.push(Command::SetPosition {
+                vertex: v,
+                position: p.to_array(),
+            });
+        }
+    }
+    for kind in ElementKind::ALL {
+        for id in 0..target.count(kind) as u32 {
+            let row = ElementRef::new(kind, id);
+            if target.deleted_rows().contains(row) {
+                continue;
+            }
+            for entry in Column::table(target.structure(), kind) {
+                if entry.storage != Storage::Stored || entry.column == Column::Position {
+                    continue;
+                }
+                let want = target.reference(row, entry.column).ok().flatten();
+                let now = current.reference(row, entry.column).ok().flatten();
+                if id as usize >= current.count(kind) || want != now {
+                    writes.push(Command::SetCell {
+                        element: row,
+                        column: entry.column.lookup_name().to_owned(),
+                        target: want.map(|t| t.id),
+                    });
+                }
+            }
+        }
+    }
+    for row in target.deleted_rows().iter() {
+        writes.push(Command::DeleteRow(row));
+    }
+    writes
+}
+
+/// The library's result of the open exercise's task.
+fn model_result(harness: &App) -> Mesh {
+    let state = exercise(harness);
+    let operation = Operation::parse(state.operation.expect("do-it")).expect("known");
+    let mut mesh = harness.state().mesh().expect("open").clone();
+    operations::apply(&mut mesh, operation, &state.ids).expect("the instance applies");
+    mesh
+}
+
+fn names(events: &[EmbedEvent]) -> Vec<&'static str> {
+    events.iter().map(EmbedEvent::name).collect()
+}
+
+/// Every shipped exercise in both structures, done write by write in the
+/// app and checked: a pass, scored, with the events a page hears.
+#[test]
+fn every_shipped_exercise_done_by_hand_in_the_app_passes() {
+    let mut harness = support::harness();
+    for shipped in edgewise_model::practice::catalog::SHIPPED {
+        let state = start(&mut harness, shipped.name, 7);
+        assert_eq!((state.attempt, state.step, state.passed), (1, 0, None));
+        let _ = harness.state_mut().take_embed_events();
+        let target = model_result(&harness);
+        let current = harness.state().mesh().expect("open").clone();
+        let writes = writes_to(&current, &target);
+        for write in &writes {
+            run(&mut harness, write.clone());
+        }
+        run(&mut harness, Command::SubmitExercise);
+        let state = exercise(&harness);
+        assert_eq!(
+            state.passed,
+            Some(true),
+            "{}: {:?}",
+            shipped.name,
+            state.feedback
+        );
+        assert_eq!((state.score, state.max_score), (1, 1));
+        assert_eq!(state.step, writes.len());
+        assert!(state.finished);
+        let events = harness.state_mut().take_embed_events();
+        let events: Vec<_> = events
+            .into_iter()
+            .filter(|e| matches!(e.name(), "exercisestep" | "score"))
+            .collect();
+        assert_eq!(
+            names(&events),
+            ["exercisestep", "score"],
+            "{}",
+            shipped.name
+        );
+        let EmbedEvent::Score(score) = &events[1] else {
+            unreachable!()
+        };
+        assert_eq!(score["passed"], true);
+        assert_eq!(score["seed"], 7);
+        assert_eq!(score["statement"]["verb"]["display"]["en-US"], "passed");
+        assert_eq!(score["statement"]["result"]["score"]["scaled"], 1.0);
+    }
+}
+
+/// A flip with one wrong cell fails naming the difference; fixed, it
+/// passes. The library's operations wait while the exercise is open.
+#[test]
+fn one_wrong_cell_is_named_and_fixing_it_passes() {
+    let mut harness = support::harness();
+    start(&mut harness, "flip-edge-half-edge", 3);
+    let refused = harness.state_mut().execute(Command::Edit {
+        operation: Operation::FlipEdge,
+        ids: vec![16],
+    });
+    assert!(
+        refused.is_err_and(|e| e.contains("do the edit by hand")),
+        "the native flip is refused during the exercise"
+    );
+    let target = model_result(&harness);
+    let current = harness.state().mesh().expect("open").clone();
+    let mut writes = writes_to(&current, &target);
+    let last = writes.pop().expect("a flip writes cells");
+    for write in writes {
+        run(&mut harness, write);
+    }
+    run(&mut harness, Command::SubmitExercise);
+    let state = exercise(&harness);
+    assert_eq!(state.passed, Some(false));
+    let feedback = state.feedback.expect("feedback");
+    assert!(
+        feedback.contains("flip-edge 16") || feedback.contains("do not hold"),
+        "{feedback}"
+    );
+    assert!(!state.finished, "no attempt limit: the student may go on");
+    run(&mut harness, last);
+    run(&mut harness, Command::SubmitExercise);
+    assert_eq!(exercise(&harness).passed, Some(true));
+}
+
+/// The model answer scores 0 and ends the attempt; a new instance is the
+/// second attempt, on another instance.
+#[test]
+fn the_model_answer_scores_zero_and_a_new_instance_follows() {
+    let mut harness = support::harness();
+    let first = start(&mut harness, "split-edge-winged-edge", 11);
+    let _ = harness.state_mut().take_embed_events();
+    run(&mut harness, Command::ShowModelAnswer);
+    let state = exercise(&harness);
+    assert!(state.model_answer_shown && state.finished);
+    assert_eq!((state.score, state.passed), (0, Some(false)));
+    assert_eq!(
+        harness.state().mesh(),
+        Some(&model_result_of(&first, &harness))
+    );
+    let events = harness.state_mut().take_embed_events();
+    assert!(names(&events).contains(&"score"), "{events:?}");
+    assert!(
+        harness
+            .state_mut()
+            .execute(Command::SubmitExercise)
+            .is_err()
+    );
+
+    run(&mut harness, Command::NewInstance);
+    let second = exercise(&harness);
+    assert_eq!(second.attempt, 2);
+    assert_ne!(second.seed, first.seed);
+    assert_eq!(
+        (second.passed, second.finished, second.step),
+        (None, false, 0)
+    );
+    run(&mut harness, Command::EndExercise);
+    assert!(harness.state().state().exercise.is_none());
+}
+
+fn model_result_of(state: &ExerciseState, harness: &App) -> Mesh {
+    let mut start = edgewise_model::practice::catalog::find(&state.name)
+        .expect("shipped")
+        .expect("reads")
+        .instance(state.seed)
+        .expect("draws")
+        .mesh;
+    let operation = Operation::parse(state.operation.expect("do-it")).expect("known");
+    operations::apply(&mut start, operation, &state.ids).expect("applies");
+    let _ = harness;
+    start
+}
+
+/// An exercise written in a page with live feedback grades every write.
+#[test]
+fn live_feedback_grades_every_write() {
+    let mut harness = support::harness();
+    let text = edgewise_model::practice::catalog::find("kef-half-edge")
+        .expect("shipped")
+        .expect("reads")
+        .text
+        .replace("feedback = \"on-check\"", "feedback = \"live\"");
+    run(
+        &mut harness,
+        Command::StartExercise {
+            exercise: text,
+            seed: Some(2),
+        },
+    );
+    let _ = harness.state_mut().take_embed_events();
+    let target = model_result(&harness);
+    let current = harness.state().mesh().expect("open").clone();
+    let writes = writes_to(&current, &target);
+    let count = writes.len();
+    for write in writes {
+        run(&mut harness, write);
+    }
+    let events = harness.state_mut().take_embed_events();
+    let steps = names(&events)
+        .iter()
+        .filter(|&&n| n == "exercisestep")
+        .count();
+    assert_eq!(steps, count, "one graded step per write");
+    assert_eq!(exercise(&harness).passed, Some(true));
+}
+
+/// `?exercise=NAME&seed=N` opens the instance; bad parameters are named.
+#[test]
+fn a_link_opens_an_exercise_at_its_seed() {
+    let (harness, messages) = support::open_link("exercise=mef-winged-edge&seed=4", "");
+    assert!(messages.is_empty(), "{messages:?}");
+    let state = exercise(&harness);
+    assert_eq!((state.name.as_str(), state.seed), ("mef-winged-edge", 4));
+    let link = harness
+        .state()
+        .share_url("https://example.edu/edgewise/")
+        .expect("a link");
+    assert!(
+        link.contains("exercise=mef-winged-edge") && link.contains("seed=4"),
+        "{link}"
+    );
+
+    let (harness, messages) = support::open_link("exercise=teapot&seed=x", "");
+    assert!(harness.state().state().exercise.is_none());
+    assert!(
+        messages
+            .iter()
+            .any(|m| m.starts_with("exercise=teapot: no exercise has that name")),
+        "{messages:?}"
+    );
+    assert!(
+        messages.iter().any(|m| m.starts_with("seed=")),
+        "{messages:?}"
+    );
+}

@@ -1,0 +1,267 @@
+//! One student's go at an exercise: the instance of each attempt, the
+//! writes used, the last grade, and the score, as the app shows them,
+//! `state().exercise` reports them and the embed protocol sends them.
+
+use edgewise_core::mesh::Mesh;
+use edgewise_core::mesh::operations;
+use serde::Serialize;
+use serde_json::{Value, json};
+
+use super::attempt::Outcome;
+use super::exercise::{Exercise, ExerciseError, Feedback};
+use super::instance::{Instance, Task};
+use super::seed::Seeded;
+
+/// An exercise being done.
+#[derive(Clone, Debug)]
+pub struct Session {
+    pub exercise: Exercise,
+    pub instance: Instance,
+    /// The seed the first attempt drew from; later attempts derive theirs.
+    base_seed: u64,
+    /// 1 for the first attempt.
+    pub attempt: u32,
+    /// Writes made by hand on this attempt's tables.
+    pub writes: usize,
+    /// The last grade, once the answer was checked (or graded live).
+    pub last: Option<Outcome>,
+    /// The model answer was shown: the attempt scores 0.
+    pub model_answer_shown: bool,
+    /// The attempt is over: passed, out of attempts, or the model answer
+    /// shown.
+    pub finished: bool,
+}
+
+/// `state().exercise`: the exercise as a script or a test reads it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ExerciseState {
+    pub name: String,
+    pub title: String,
+    pub kind: &'static str,
+    pub structure: &'static str,
+    pub seed: u64,
+    pub attempt: u32,
+    /// Attempts allowed; 0 is no limit.
+    pub attempts: u32,
+    /// Graded actions so far: a do-it exercise's writes.
+    pub step: usize,
+    /// Steps judged right, out of `total` (a do-it answer is one).
+    pub correct: usize,
+    pub total: usize,
+    pub score: u32,
+    pub max_score: u32,
+    /// Null until graded.
+    pub passed: Option<bool>,
+    pub feedback: Option<String>,
+    pub task: String,
+    /// A do-it task's operation and ids, as `edgewise edit` names them.
+    pub operation: Option<&'static str>,
+    pub ids: Vec<u32>,
+    pub fewest_writes: Option<usize>,
+    pub feedback_mode: &'static str,
+    pub model_answer_offered: bool,
+    pub model_answer_shown: bool,
+    pub finished: bool,
+}
+
+impl Session {
+    /// Starts `exercise` at the instance `seed` draws.
+    pub fn start(exercise: Exercise, seed: u64) -> Result<Self, ExerciseError> {
+        let instance = exercise.instance(seed)?;
+        Ok(Self {
+            exercise,
+            instance,
+            base_seed: seed,
+            attempt: 1,
+            writes: 0,
+            last: None,
+            model_answer_shown: false,
+            finished: false,
+        })
+    }
+
+    /// The mesh the student starts each attempt from.
+    pub fn start_mesh(&self) -> &Mesh {
+        &self.instance.mesh
+    }
+
+    /// Whether another attempt may start.
+    pub fn attempts_left(&self) -> bool {
+        self.exercise.attempts == 0 || self.attempt < self.exercise.attempts
+    }
+
+    /// Counts one write by hand.
+    pub fn wrote(&mut self) {
+        self.writes += 1;
+    }
+
+    /// Whether a write should be graded at once.
+    pub fn grades_live(&self) -> bool {
+        self.exercise.feedback == Feedback::Live && !self.finished
+    }
+
+    /// Grades `answer`; a pass, or the last attempt's check, ends the
+    /// attempt.
+    pub fn check(&mut self, answer: &Mesh) -> Result<&Outcome, ExerciseError> {
+        if self.model_answer_shown {
+            return Err(self.error("the model answer was shown: start a new instance to try again"));
+        }
+        let outcome = self.exercise.grade(&self.instance, answer)?;
+        if outcome.passed || (!self.attempts_left() && self.exercise.feedback != Feedback::Live) {
+            self.finished = true;
+        }
+        Ok(self.last.insert(outcome))
+    }
+
+    /// Grades a write as it is made (live feedback): the attempt ends only
+    /// on a pass.
+    pub fn grade_live(&mut self, answer: &Mesh) -> Result<&Outcome, ExerciseError> {
+        let outcome = self.exercise.grade(&self.instance, answer)?;
+        if outcome.passed {
+            self.finished = true;
+        }
+        Ok(self.last.insert(outcome))
+    }
+
+    /// The library's result of the task, which the app shows as the model
+    /// answer; the attempt then scores 0.
+    pub fn model_answer(&mut self) -> Result<Mesh, ExerciseError> {
+        if !self.exercise.model_answer {
+            return Err(self.error("this exercise does not offer its model answer"));
+        }
+        let Task::DoIt { operation, ids } = &self.instance.task;
+        let mut mesh = self.instance.mesh.clone();
+        operations::apply(&mut mesh, *operation, ids)
+            .map_err(|refusal| self.error(&format!("the instance is refused: {refusal}")))?;
+        self.model_answer_shown = true;
+        self.finished = true;
+        let fewest = self.last.as_ref().and_then(|o| o.fewest_writes);
+        self.last = Some(Outcome {
+            passed: false,
+            score: 0,
+            max_score: self.exercise.points,
+            feedback: "The model answer is shown: this attempt scores 0.".to_owned(),
+            element: None,
+            fewest_writes: fewest,
+        });
+        Ok(mesh)
+    }
+
+    /// The next attempt: a fresh instance where the exercise draws them.
+    pub fn next_attempt(&mut self) -> Result<(), ExerciseError> {
+        if !self.attempts_left() {
+            return Err(self.error(&format!("all {} attempts are used", self.exercise.attempts)));
+        }
+        let attempt = self.attempt + 1;
+        let seed = if self.exercise.fresh_instance {
+            attempt_seed(self.base_seed, attempt)
+        } else {
+            self.base_seed
+        };
+        self.instance = self.exercise.instance(seed)?;
+        self.attempt = attempt;
+        self.writes = 0;
+        self.last = None;
+        self.model_answer_shown = false;
+        self.finished = false;
+        Ok(())
+    }
+
+    fn error(&self, message: &str) -> ExerciseError {
+        ExerciseError {
+            source: self.exercise.name.clone(),
+            at: None,
+            message: message.to_owned(),
+        }
+    }
+
+    pub fn state(&self) -> ExerciseState {
+        let Task::DoIt { operation, ids } = &self.instance.task;
+        let last = self.last.as_ref();
+        ExerciseState {
+            name: self.exercise.name.clone(),
+            title: self.exercise.title.clone(),
+            kind: self.exercise.kind.name(),
+            structure: self.exercise.structure.prose(),
+            seed: self.instance.seed,
+            attempt: self.attempt,
+            attempts: self.exercise.attempts,
+            step: self.writes,
+            correct: usize::from(last.is_some_and(|o| o.passed)),
+            total: 1,
+            score: last.map_or(0, |o| o.score),
+            max_score: self.exercise.points,
+            passed: last.map(|o| o.passed),
+            feedback: last.map(|o| o.feedback.clone()),
+            task: self.instance.task.describe(self.exercise.structure),
+            operation: Some(operation.name()),
+            ids: ids.clone(),
+            fewest_writes: last.and_then(|o| o.fewest_writes),
+            feedback_mode: self.exercise.feedback.name(),
+            model_answer_offered: self.exercise.model_answer,
+            model_answer_shown: self.model_answer_shown,
+            finished: self.finished,
+        }
+    }
+
+    /// The `edgewise:score` event's detail, with an xAPI statement a
+    /// learning-record store or an H5P wrapper can forward as it is;
+    /// `activity` is the exercise's IRI (the page's address for it).
+    pub fn score(&self, activity: &str) -> Value {
+        let state = self.state();
+        let passed = state.passed == Some(true);
+        let scaled = if state.max_score == 0 {
+            0.0
+        } else {
+            f64::from(state.score) / f64::from(state.max_score)
+        };
+        let verb = if passed { "passed" } else { "failed" };
+        json!({
+            "exercise": state.name,
+            "seed": state.seed,
+            "attempt": state.attempt,
+            "score": state.score,
+            "maxScore": state.max_score,
+            "passed": passed,
+            "statement": {
+                "verb": {
+                    "id": format!("http://adlnet.gov/expapi/verbs/{verb}"),
+                    "display": { "en-US": verb },
+                },
+                "object": {
+                    "objectType": "Activity",
+                    "id": activity,
+                    "definition": {
+                        "name": { "en-US": state.title },
+                        "type": "http://adlnet.gov/expapi/activities/assessment",
+                    },
+                },
+                "result": {
+                    "score": {
+                        "scaled": scaled,
+                        "raw": state.score,
+                        "min": 0,
+                        "max": state.max_score,
+                    },
+                    "success": passed,
+                    "completion": state.finished,
+                    "response": state.feedback,
+                },
+                "context": {
+                    "extensions": {
+                        "https://edgewise.app/xapi/seed": state.seed,
+                        "https://edgewise.app/xapi/attempt": state.attempt,
+                    },
+                },
+            },
+        })
+    }
+}
+
+/// The seed of a later attempt: mixed, so that attempts of neighbouring
+/// seeds do not share instances.
+fn attempt_seed(base: u64, attempt: u32) -> u64 {
+    let mut mixed = Seeded::new(base ^ (u64::from(attempt) << 32));
+    mixed.next()
+}
