@@ -1,8 +1,8 @@
 //! Embed mode (`?embed=1`), for iframes in lecture notes: only the 3D view,
-//! optionally the tables, and the step controls, sized to the frame, with no
-//! menu bar.
+//! optionally the tables, and the step controls (or an exercise's card and
+//! tables), sized to the frame, with no menu bar.
 
-use super::EdgewiseApp;
+use super::{EdgewiseApp, side_panel_range};
 
 /// About how tall an embed's step controls are, in points: the algorithm's
 /// name, the step buttons, the step slider and the delay.
@@ -57,7 +57,19 @@ impl EdgewiseApp {
                 .rect
                 .height();
         }
-        if embed.tables {
+        // An exercise is done in the tables, from its card: both show
+        // whatever the link asked for.
+        let practising = self.tab().practice.is_some();
+        if practising {
+            egui::Panel::right("embed_practice")
+                .resizable(true)
+                .default_size(300.0)
+                .size_range(side_panel_range(ui.max_rect().width(), 220.0))
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| self.practice_ui(ui));
+                });
+        }
+        if embed.tables || practising {
             chrome += egui::Panel::bottom("tables")
                 .resizable(true)
                 .default_size(TABLES_HEIGHT)

@@ -53,6 +53,10 @@ impl EdgewiseApp {
         tab.practice = Some(session);
         tab.rediagnose();
         self.show_algorithm_panel = true;
+        // The first visit's hint is about the tetrahedron: it makes way for
+        // the task (and comes back on the next visit unless dismissed).
+        self.tour = None;
+        self.explaining = false;
     }
 
     fn practice(&mut self) -> Result<&mut Session, CommandError> {

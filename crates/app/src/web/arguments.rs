@@ -159,12 +159,14 @@ pub(super) fn check_options(call: &str, options: &JsValue, known: &[&str]) -> Re
     Ok(())
 }
 
-/// `options[key]` as a string, if present.
-pub(super) fn option_string(
+/// `options[key]` read by `read` (with the argument's name for messages),
+/// if the options and the key are present.
+fn option<T>(
     call: &str,
     options: &JsValue,
     key: &str,
-) -> Result<Option<String>, String> {
+    read: impl FnOnce(&str, &JsValue) -> Result<T, String>,
+) -> Result<Option<T>, String> {
     if options.is_undefined() || options.is_null() {
         return Ok(None);
     }
@@ -173,7 +175,18 @@ pub(super) fn option_string(
     if value.is_undefined() {
         return Ok(None);
     }
-    text_argument(call, &argument, &value, MAX_NAME_CHARS).map(Some)
+    read(&argument, &value).map(Some)
+}
+
+/// `options[key]` as a string, if present.
+pub(super) fn option_string(
+    call: &str,
+    options: &JsValue,
+    key: &str,
+) -> Result<Option<String>, String> {
+    option(call, options, key, |argument, value| {
+        text_argument(call, argument, value, MAX_NAME_CHARS)
+    })
 }
 
 /// `options[key]` as a Boolean, if present.
@@ -182,18 +195,11 @@ pub(super) fn option_bool(
     options: &JsValue,
     key: &str,
 ) -> Result<Option<bool>, String> {
-    if options.is_undefined() || options.is_null() {
-        return Ok(None);
-    }
-    let argument = format!("options.{key}");
-    let value = property(call, &argument, options, key)?;
-    if value.is_undefined() {
-        return Ok(None);
-    }
-    value
-        .as_bool()
-        .map(Some)
-        .ok_or_else(|| expected(call, &argument, "true or false", &value))
+    option(call, options, key, |argument, value| {
+        value
+            .as_bool()
+            .ok_or_else(|| expected(call, argument, "true or false", value))
+    })
 }
 
 /// `options[key]` as a whole number, if present.
@@ -202,15 +208,9 @@ pub(super) fn option_whole_number(
     options: &JsValue,
     key: &str,
 ) -> Result<Option<u64>, String> {
-    if options.is_undefined() || options.is_null() {
-        return Ok(None);
-    }
-    let argument = format!("options.{key}");
-    let value = property(call, &argument, options, key)?;
-    if value.is_undefined() {
-        return Ok(None);
-    }
-    whole_number(call, &argument, &value).map(Some)
+    option(call, options, key, |argument, value| {
+        whole_number(call, argument, value)
+    })
 }
 
 pub(super) fn structure_option(call: &str, options: &JsValue) -> Result<Option<Structure>, String> {

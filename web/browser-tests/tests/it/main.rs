@@ -20,6 +20,7 @@ mod hover;
 mod links;
 mod mesh;
 mod offline;
+mod practice;
 mod progress;
 mod screens;
 mod startup;
