@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Subcommand;
 use edgewise_core::formats::{self, Format};
-use edgewise_model::practice::{Exercise, Instance, Task, catalog};
+use edgewise_model::practice::{Exercise, Instance, Kind, Task, catalog};
 use serde_json::json;
 
 use crate::{Failure, Outcome, emit, load, read_text, shown};
@@ -33,12 +33,14 @@ pub enum PracticeCommand {
         #[arg(long, value_name = "OUT")]
         mesh: Option<PathBuf>,
     },
-    /// Grade an answer: the tables after the edit, as a .wtb or .htb file.
-    /// Exit 0 for a pass, 1 for a fail.
+    /// Grade an answer: for a do-it exercise the tables after the edit (a
+    /// .wtb or .htb file), for a walk the elements clicked, one a line
+    /// (`edge 3`). Exit 0 for a pass, 1 for a fail.
     Check {
         /// A shipped exercise's name, or an exercise file (.toml).
         exercise: String,
-        /// The answer: a .wtb or .htb file (`-` reads standard input).
+        /// The answer: a .wtb or .htb file, or a walk's elements (`-` reads
+        /// standard input).
         answer: PathBuf,
         /// The seed of the instance the answer is for.
         #[arg(long, default_value_t = 0)]
@@ -136,23 +138,35 @@ fn instance(exercise: &Exercise, seed: u64) -> Result<Instance, Failure> {
 fn show(name: &str, seed: u64, json: bool, mesh: Option<&Path>) -> Outcome {
     let exercise = exercise(name)?;
     let instance = instance(&exercise, seed)?;
-    let Task::DoIt { operation, ids } = &instance.task;
     let task = instance.task.describe(exercise.structure);
     if let Some(out) = mesh {
         write_tables(&instance, out)?;
     }
     if json {
-        let object = json!({
+        let mut object = json!({
             "name": exercise.name,
             "title": exercise.title,
             "kind": exercise.kind.name(),
             "structure": exercise.structure.prose(),
             "seed": seed,
             "task": task,
-            "operation": operation.name(),
-            "ids": ids,
             "points": exercise.points,
         });
+        let details = match &instance.task {
+            Task::DoIt { operation, ids } => json!({ "operation": operation.name(), "ids": ids }),
+            Task::Walk {
+                algorithm, args, ..
+            } => {
+                let args: serde_json::Map<String, serde_json::Value> = args
+                    .iter()
+                    .map(|(name, element)| (name.clone(), json!(element.id)))
+                    .collect();
+                json!({ "algorithm": algorithm, "args": args })
+            }
+        };
+        if let (Some(map), serde_json::Value::Object(more)) = (object.as_object_mut(), details) {
+            map.extend(more);
+        }
         emit(&format!("{object}\n"));
     } else {
         let mut text = format!(
@@ -207,6 +221,44 @@ fn table_format(instance: &Instance, out: &Path) -> Result<Format, Failure> {
 fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
     let exercise = exercise(name)?;
     let instance = instance(&exercise, seed)?;
+    let outcome = match instance.task {
+        Task::DoIt { .. } => grade_tables(&exercise, &instance, answer)?,
+        Task::Walk { .. } => {
+            let clicks = read_clicks(answer)?;
+            exercise.grade_clicks(&instance, &clicks).map_err(|err| {
+                eprintln!("{err}");
+                Failure::Input
+            })?
+        }
+    };
+    report(&exercise, &outcome, seed, json)
+}
+
+/// A walk's answer: an element a line (`edge 3`, `v 1`, `half-edge 9`);
+/// blank lines and `#` comments are skipped.
+fn read_clicks(answer: &Path) -> Result<Vec<edgewise_core::schema::ElementRef>, Failure> {
+    let text = read_text(answer)?;
+    let mut clicks = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or_default().trim();
+        if line.is_empty() {
+            continue;
+        }
+        let element = edgewise_model::selection::parse_element(line).map_err(|message| {
+            eprintln!("{}:{}: {message}", shown(answer), number + 1);
+            Failure::Input
+        })?;
+        clicks.push(element);
+    }
+    Ok(clicks)
+}
+
+/// A do-it answer: the tables of a .wtb or .htb file.
+fn grade_tables(
+    exercise: &Exercise,
+    instance: &Instance,
+    answer: &Path,
+) -> Result<edgewise_model::practice::Outcome, Failure> {
     let loaded = load(answer, |format| {
         format.native_structure().unwrap_or(exercise.structure)
     })?;
@@ -218,12 +270,21 @@ fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
         );
         return Err(Failure::Input);
     }
-    let outcome = exercise.grade(&instance, &loaded.mesh).map_err(|err| {
+    exercise.grade(instance, &loaded.mesh).map_err(|err| {
         eprintln!("{err}");
         Failure::Input
-    })?;
+    })
+}
+
+/// Prints a grade; a fail is exit 1.
+fn report(
+    exercise: &Exercise,
+    outcome: &edgewise_model::practice::Outcome,
+    seed: u64,
+    json: bool,
+) -> Outcome {
     if json {
-        let mut object = serde_json::to_value(&outcome).unwrap_or_default();
+        let mut object = serde_json::to_value(outcome).unwrap_or_default();
         if let Some(map) = object.as_object_mut() {
             map.insert("exercise".to_owned(), json!(exercise.name));
             map.insert("seed".to_owned(), json!(seed));
@@ -231,8 +292,12 @@ fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
         emit(&format!("{object}\n"));
     } else {
         let verdict = if outcome.passed { "pass" } else { "fail" };
+        let unit = match exercise.kind {
+            Kind::DoIt => "points",
+            Kind::Walk => "steps right",
+        };
         let mut text = format!(
-            "{}: {verdict} ({} of {} points)\n{}\n",
+            "{}: {verdict} ({} of {} {unit})\n{}\n",
             exercise.name, outcome.score, outcome.max_score, outcome.feedback
         );
         if let Some(fewest) = outcome.fewest_writes {

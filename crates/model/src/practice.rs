@@ -13,15 +13,18 @@
 
 pub mod attempt;
 pub mod catalog;
+mod error;
 pub mod exercise;
 pub mod instance;
 mod seed;
 pub mod session;
+pub mod walk;
 
 pub use attempt::Outcome;
-pub use exercise::{Exercise, ExerciseError, Feedback, Kind};
+pub use exercise::{Exercise, ExerciseError, Feedback, Kind, TaskSpec};
 pub use instance::{Instance, Task};
 pub use session::{ExerciseState, Session};
+pub use walk::{Click, Order};
 
 #[cfg(test)]
 mod tests;

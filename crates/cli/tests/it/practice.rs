@@ -27,7 +27,7 @@ fn list_names_every_shipped_exercise_with_its_kind_and_structure() {
     let rows = json.as_array().expect("an array");
     assert_eq!(rows.len(), text.lines().count());
     for row in rows {
-        assert_eq!(row["kind"], "do-it");
+        assert!(["do-it", "walk"].contains(&row["kind"].as_str().expect("str")));
         assert!(["half-edge", "winged-edge"].contains(&row["structure"].as_str().expect("str")));
     }
 }
@@ -149,4 +149,46 @@ fn bad_exercises_and_answers_are_refused_with_their_place() {
     );
     let wrong_format = run(&["practice", "show", "flip-edge-half-edge", "--mesh", "x.wtb"]);
     assert_eq!(code(&wrong_format), 2);
+}
+
+/// A walk's answer is the elements clicked, one a line.
+#[test]
+fn check_grades_a_walk_from_the_elements_clicked() {
+    let dir = scratch("practice-walk");
+    let shown = run(&[
+        "practice",
+        "show",
+        "walk-vertex-edges-winged-edge",
+        "--json",
+    ]);
+    let object: serde_json::Value = serde_json::from_str(&stdout(&shown)).expect("JSON");
+    assert_eq!(object["algorithm"], "vertexAdjacentEdge");
+    assert_eq!(object["args"]["v"], 1);
+    // Table 2: the edges around vertex 1 (B), from its incident edge.
+    let answer = dir.join("walk.txt");
+    std::fs::write(&answer, "# around vertex 1\nedge 1\nedge 3\nedge 2\n").expect("writes");
+    let path = answer.to_string_lossy();
+    let pass = run(&["practice", "check", "walk-vertex-edges-winged-edge", &path]);
+    assert_eq!(code(&pass), 0, "{}{}", stdout(&pass), stderr(&pass));
+    assert!(
+        stdout(&pass).contains("pass (3 of 3 steps right)"),
+        "{}",
+        stdout(&pass)
+    );
+    std::fs::write(&answer, "edge 1\nedge 2\nedge 3\n").expect("writes");
+    let fail = run(&["practice", "check", "walk-vertex-edges-winged-edge", &path]);
+    assert_eq!(code(&fail), 1);
+    assert!(
+        stdout(&fail).contains("click 2: Not edge 2: the walk marks edge 3 next"),
+        "{}",
+        stdout(&fail)
+    );
+    std::fs::write(&answer, "edge 1\ncorner 3\n").expect("writes");
+    let bad = run(&["practice", "check", "walk-vertex-edges-winged-edge", &path]);
+    assert_eq!(code(&bad), 1);
+    assert!(
+        stderr(&bad).contains("walk.txt:2: `corner 3`"),
+        "{}",
+        stderr(&bad)
+    );
 }

@@ -36,6 +36,12 @@ pub const SHIPPED: &[Shipped] = shipped![
     "split-edge-winged-edge",
     "split-face-half-edge",
     "split-face-winged-edge",
+    "walk-boundary-loop-half-edge",
+    "walk-face-loop-half-edge",
+    "walk-face-loop-winged-edge",
+    "walk-vertex-edges-half-edge",
+    "walk-vertex-edges-winged-edge",
+    "walk-vertex-neighbours-winged-edge",
 ];
 
 /// The shipped exercise called `name`, read.

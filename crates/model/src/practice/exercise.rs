@@ -3,7 +3,6 @@
 //! will need, so that a bad file is refused with the line and column of
 //! the key at fault before a student ever opens it.
 
-use std::fmt;
 use std::ops::Range;
 
 use edgewise_core::mesh::operations::Operation;
@@ -11,6 +10,9 @@ use edgewise_core::mesh::{Mesh, Polygons, Structure, generate};
 use serde::Deserialize;
 use toml::Spanned;
 
+pub use super::error::ExerciseError;
+use super::error::Located;
+use super::walk::{Walk, WalkFile};
 use crate::document::Document;
 use crate::samples;
 
@@ -24,12 +26,15 @@ const MAX_GENERATED_FACES: u64 = 20_000;
 pub enum Kind {
     /// Carries out a local operation on the tables, cell by cell.
     DoIt,
+    /// Clicks the elements an algorithm marks.
+    Walk,
 }
 
 impl Kind {
     pub fn name(self) -> &'static str {
         match self {
             Self::DoIt => "do-it",
+            Self::Walk => "walk",
         }
     }
 }
@@ -79,6 +84,8 @@ struct File {
     mesh: Spanned<MeshFile>,
     #[serde(default)]
     do_it: Option<Spanned<DoItFile>>,
+    #[serde(default)]
+    walk: Option<Spanned<WalkFile>>,
 }
 
 fn one() -> u32 {
@@ -152,6 +159,13 @@ pub struct DoIt {
     pub ids: Option<Vec<u32>>,
 }
 
+/// What an exercise asks, as its file gives it.
+#[derive(Clone, Debug)]
+pub enum TaskSpec {
+    DoIt(DoIt),
+    Walk(Walk),
+}
+
 /// An exercise, read and checked.
 #[derive(Clone, Debug)]
 pub struct Exercise {
@@ -170,67 +184,18 @@ pub struct Exercise {
     /// Whether each attempt draws a new instance.
     pub fresh_instance: bool,
     pub mesh: MeshSource,
-    pub do_it: DoIt,
+    pub task: TaskSpec,
     /// The file's text, for a link that carries the exercise.
     pub text: String,
     /// The start mesh, built once.
     start: Mesh,
 }
 
-/// Why an exercise file was refused: where, and what is wrong.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ExerciseError {
-    /// The file or exercise name.
-    pub source: String,
-    /// 1-based line and column, where the fault has a place.
-    pub at: Option<(usize, usize)>,
-    pub message: String,
-}
-
-impl fmt::Display for ExerciseError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.at {
-            Some((line, column)) => write!(f, "{}:{line}:{column}: {}", self.source, self.message),
-            None => write!(f, "{}: {}", self.source, self.message),
-        }
-    }
-}
-
-impl std::error::Error for ExerciseError {}
-
-/// Builds located errors for one file.
-struct Located<'a> {
-    source: &'a str,
-    text: &'a str,
-}
-
-impl Located<'_> {
-    fn error(&self, span: Option<Range<usize>>, message: impl Into<String>) -> ExerciseError {
-        ExerciseError {
-            source: self.source.to_owned(),
-            at: span.map(|span| line_column(self.text, span.start)),
-            message: message.into(),
-        }
-    }
-}
-
-/// The 1-based line and column (in characters) of a byte offset.
-fn line_column(text: &str, offset: usize) -> (usize, usize) {
-    let before = text.get(..offset.min(text.len())).unwrap_or(text);
-    let line = before.matches('\n').count() + 1;
-    let column = before
-        .rsplit('\n')
-        .next()
-        .map_or(0, |rest| rest.chars().count())
-        + 1;
-    (line, column)
-}
-
 impl Exercise {
     /// Reads an exercise from its text; `name` is how messages and scores
     /// name it.
     pub fn parse(name: &str, text: &str) -> Result<Self, ExerciseError> {
-        let at = Located { source: name, text };
+        let at = Located::new(name, text);
         let file: File = toml::from_str(text)
             .map_err(|err| at.error(err.span(), err.message().trim_end().to_owned()))?;
         let structure = match file.structure.get_ref().as_str() {
@@ -245,10 +210,28 @@ impl Exercise {
         };
         let mesh_span = file.mesh.span();
         let mesh = mesh_source(&at, file.mesh.into_inner(), mesh_span.clone())?;
-        let do_it = match (file.kind, file.do_it) {
-            (Kind::DoIt, Some(task)) => do_it(&at, task.into_inner())?,
-            (Kind::DoIt, None) => {
-                return Err(at.error(None, "a do-it exercise needs a [do-it] table"));
+        let task = match (file.kind, file.do_it, file.walk) {
+            (Kind::DoIt, Some(task), None) => TaskSpec::DoIt(do_it(&at, task.into_inner())?),
+            (Kind::Walk, None, Some(task)) => {
+                TaskSpec::Walk(Walk::parse(&at, task.into_inner(), structure)?)
+            }
+            (Kind::DoIt, _, Some(walk)) => {
+                return Err(at.error(
+                    Some(walk.span()),
+                    "a do-it exercise has a [do-it] table, not [walk]",
+                ));
+            }
+            (Kind::Walk, Some(task), _) => {
+                return Err(at.error(
+                    Some(task.span()),
+                    "a walk exercise has a [walk] table, not [do-it]",
+                ));
+            }
+            (kind, None, None) => {
+                return Err(at.error(
+                    None,
+                    format!("a {} exercise needs a [{}] table", kind.name(), kind.name()),
+                ));
             }
         };
         let start =
@@ -265,7 +248,7 @@ impl Exercise {
             model_answer: file.model_answer,
             fresh_instance: file.fresh_instance,
             mesh,
-            do_it,
+            task,
             text: text.to_owned(),
             start,
         })

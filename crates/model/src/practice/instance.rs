@@ -7,10 +7,11 @@
 
 use edgewise_core::mesh::operations::{self, Operation, Refusal, candidates};
 use edgewise_core::mesh::{Mesh, Structure, VertexId};
-use edgewise_core::schema::{Column, ElementKind, ElementRef, Records};
+use edgewise_core::schema::{ElementKind, ElementRef};
 
-use super::exercise::{Exercise, ExerciseError};
+use super::exercise::{Exercise, ExerciseError, TaskSpec};
 use super::seed::Seeded;
+use super::walk::Order;
 
 /// At most this many candidates are tried before a draw gives up: enough
 /// for every shipped mesh, and bounded on a hostile one.
@@ -21,12 +22,43 @@ const MAX_TRIES: usize = 2_000;
 pub enum Task {
     /// Carry out `operation` on `ids`, as `edgewise edit` names them.
     DoIt { operation: Operation, ids: Vec<u32> },
+    /// Click what `algorithm` marks from `args`: `expected`, in order or
+    /// as a set.
+    Walk {
+        algorithm: String,
+        args: Vec<(String, ElementRef)>,
+        expected: Vec<ElementRef>,
+        order: Order,
+    },
 }
 
 impl Task {
     /// The task in words, naming rows as `structure`'s tables do.
     pub fn describe(&self, structure: Structure) -> String {
-        let Self::DoIt { operation, ids } = self;
+        let (operation, ids) = match self {
+            Self::DoIt { operation, ids } => (operation, ids),
+            Self::Walk {
+                algorithm,
+                args,
+                order,
+                ..
+            } => {
+                let inputs: Vec<String> = args
+                    .iter()
+                    .map(|(name, element)| {
+                        format!(
+                            "{name} = {}",
+                            edgewise_core::mesh::Element::of(structure, *element)
+                        )
+                    })
+                    .collect();
+                let how = match order {
+                    Order::Sequence => "in order, each element it marks",
+                    Order::Set => "in any order, every element it marks",
+                };
+                return format!("Walk {algorithm} from {}: click, {how}.", inputs.join(", "));
+            }
+        };
         let edge = |id: u32| match structure {
             Structure::HalfEdge => format!("the edge of half-edge {id}"),
             Structure::WingedEdge => format!("edge {id}"),
@@ -99,12 +131,34 @@ impl Exercise {
     /// one for every seed.
     pub fn instance(&self, seed: u64) -> Result<Instance, ExerciseError> {
         let seed_used = if self.fresh_instance { seed } else { 0 };
-        let operation = self.do_it.operation;
-        let ids = match (&self.do_it.ids, seed_used) {
+        let do_it = match &self.task {
+            TaskSpec::DoIt(do_it) => do_it,
+            TaskSpec::Walk(walk) => {
+                let (args, expected) =
+                    walk.draw(self.start(), seed_used)
+                        .map_err(|message| ExerciseError {
+                            source: self.name.clone(),
+                            at: None,
+                            message: format!("[walk]: {message}"),
+                        })?;
+                return Ok(Instance {
+                    seed,
+                    mesh: self.start().clone(),
+                    task: Task::Walk {
+                        algorithm: walk.algorithm.name.clone(),
+                        args,
+                        expected,
+                        order: walk.order,
+                    },
+                });
+            }
+        };
+        let operation = do_it.operation;
+        let ids = match (&do_it.ids, seed_used) {
             (Some(ids), 0) => {
                 let mut tried = self.start().clone();
                 operations::apply(&mut tried, operation, ids)
-                    .map_err(|refusal| self.refused(ids, &refusal))?;
+                    .map_err(|refusal| self.refused(operation, ids, &refusal))?;
                 ids.clone()
             }
             _ => self.draw(operation, seed_used)?,
@@ -135,14 +189,14 @@ impl Exercise {
             })
     }
 
-    fn refused(&self, ids: &[u32], refusal: &Refusal) -> ExerciseError {
+    fn refused(&self, operation: Operation, ids: &[u32], refusal: &Refusal) -> ExerciseError {
         let ids: Vec<String> = ids.iter().map(ToString::to_string).collect();
         ExerciseError {
             source: self.name.clone(),
             at: None,
             message: format!(
                 "[do-it] ids: {} {} is refused on this mesh: {refusal}",
-                self.do_it.operation,
+                operation,
                 ids.join(" ")
             ),
         }
@@ -154,7 +208,7 @@ fn worth_doing(mesh: &Mesh, operation: Operation, ids: &[u32]) -> bool {
     let edge = ElementRef::new(ElementKind::Edge, ids.first().copied().unwrap_or_default());
     match operation {
         Operation::FlipEdge | Operation::SplitEdge | Operation::CollapseEdge | Operation::Kef => {
-            interior(mesh, edge)
+            candidates::interior(mesh, edge)
         }
         Operation::SplitFace | Operation::Mef => match ids {
             [f, u, w] => u != w && !neighbours(mesh, *f, *u, *w),
@@ -166,24 +220,6 @@ fn worth_doing(mesh: &Mesh, operation: Operation, ids: &[u32]) -> bool {
         },
         Operation::Kev | Operation::RemoveVertex | Operation::Kemr | Operation::Mekr => true,
     }
-}
-
-/// Whether the edge has a face on both sides.
-fn interior(mesh: &Mesh, edge: ElementRef) -> bool {
-    let columns: &[Column] = match mesh.structure() {
-        Structure::WingedEdge => &[Column::LeftFace, Column::RightFace],
-        Structure::HalfEdge => &[Column::Face],
-    };
-    let faced = |row: ElementRef| {
-        columns
-            .iter()
-            .all(|&c| mesh.reference(row, c).ok().flatten().is_some())
-    };
-    let pair = match mesh.structure() {
-        Structure::HalfEdge => mesh.reference(edge, Column::PairEdge).ok().flatten(),
-        Structure::WingedEdge => Some(edge),
-    };
-    faced(edge) && pair.is_some_and(faced)
 }
 
 /// Whether `u` and `w` are consecutive corners of face `f`.

@@ -7,10 +7,11 @@ use edgewise_core::mesh::operations;
 use serde::Serialize;
 use serde_json::{Value, json};
 
-use super::attempt::Outcome;
+use super::attempt::{Outcome, walk_outcome};
 use super::exercise::{Exercise, ExerciseError, Feedback};
 use super::instance::{Instance, Task};
 use super::seed::Seeded;
+use super::walk::{Click, Clicks};
 
 /// An exercise being done.
 #[derive(Clone, Debug)]
@@ -30,6 +31,8 @@ pub struct Session {
     /// The attempt is over: passed, out of attempts, or the model answer
     /// shown.
     pub finished: bool,
+    /// A walk's clicks so far.
+    pub clicks: Clicks,
 }
 
 /// `state().exercise`: the exercise as a script or a test reads it.
@@ -58,6 +61,8 @@ pub struct ExerciseState {
     /// A do-it task's operation and ids, as `edgewise edit` names them.
     pub operation: Option<&'static str>,
     pub ids: Vec<u32>,
+    /// A walk's elements found so far, in order.
+    pub found: Vec<edgewise_core::schema::ElementRef>,
     pub fewest_writes: Option<usize>,
     pub feedback_mode: &'static str,
     pub model_answer_offered: bool,
@@ -78,6 +83,7 @@ impl Session {
             last: None,
             model_answer_shown: false,
             finished: false,
+            clicks: Clicks::default(),
         })
     }
 
@@ -107,6 +113,12 @@ impl Session {
         if self.model_answer_shown {
             return Err(self.error("the model answer was shown: start a new instance to try again"));
         }
+        if let Task::Walk { expected, .. } = &self.instance.task {
+            // Check on a walk ends it where it stands.
+            self.finished = true;
+            let outcome = walk_outcome(&self.clicks, expected, None);
+            return Ok(self.last.insert(outcome));
+        }
         let outcome = self.exercise.grade(&self.instance, answer)?;
         if outcome.passed || (!self.attempts_left() && self.exercise.feedback != Feedback::Live) {
             self.finished = true;
@@ -124,14 +136,56 @@ impl Session {
         Ok(self.last.insert(outcome))
     }
 
+    /// Grades a click of a walk; the walk ends once every element is
+    /// found. `None` when the click is not a walk's (a do-it exercise, or
+    /// a finished walk).
+    pub fn click(&mut self, element: edgewise_core::schema::ElementRef) -> Option<Click> {
+        let Task::Walk {
+            expected, order, ..
+        } = &self.instance.task
+        else {
+            return None;
+        };
+        if self.finished {
+            return None;
+        }
+        let click = self
+            .clicks
+            .click(expected, *order, element, self.exercise.structure)?;
+        let done = self.clicks.done(expected);
+        let mut outcome = walk_outcome(&self.clicks, expected, None);
+        if !done {
+            outcome.feedback.clone_from(&click.feedback);
+        }
+        self.finished = done;
+        self.last = Some(outcome);
+        Some(click)
+    }
+
     /// The library's result of the task, which the app shows as the model
     /// answer; the attempt then scores 0.
     pub fn model_answer(&mut self) -> Result<Mesh, ExerciseError> {
         if !self.exercise.model_answer {
             return Err(self.error("this exercise does not offer its model answer"));
         }
-        let Task::DoIt { operation, ids } = &self.instance.task;
         let mut mesh = self.instance.mesh.clone();
+        let Task::DoIt { operation, ids } = &self.instance.task else {
+            // A walk's model answer: every element it marks, found.
+            if let Task::Walk { expected, .. } = &self.instance.task {
+                self.clicks.found.clone_from(expected);
+            }
+            self.model_answer_shown = true;
+            self.finished = true;
+            self.last = Some(Outcome {
+                passed: false,
+                score: 0,
+                max_score: self.max_score(),
+                feedback: "The model answer is shown: this attempt scores 0.".to_owned(),
+                element: None,
+                fewest_writes: None,
+            });
+            return Ok(mesh);
+        };
         operations::apply(&mut mesh, *operation, ids)
             .map_err(|refusal| self.error(&format!("the instance is refused: {refusal}")))?;
         self.model_answer_shown = true;
@@ -165,6 +219,7 @@ impl Session {
         self.last = None;
         self.model_answer_shown = false;
         self.finished = false;
+        self.clicks = Clicks::default();
         Ok(())
     }
 
@@ -176,8 +231,33 @@ impl Session {
         }
     }
 
+    /// The most an attempt scores: the points of a do-it exercise, a walk's
+    /// number of steps.
+    pub fn max_score(&self) -> u32 {
+        match &self.instance.task {
+            Task::DoIt { .. } => self.exercise.points,
+            Task::Walk { expected, .. } => expected.len() as u32,
+        }
+    }
+
     pub fn state(&self) -> ExerciseState {
-        let Task::DoIt { operation, ids } = &self.instance.task;
+        let (operation, ids) = match &self.instance.task {
+            Task::DoIt { operation, ids } => (Some(operation.name()), ids.clone()),
+            Task::Walk { .. } => (None, Vec::new()),
+        };
+        let (step, correct, total) = match &self.instance.task {
+            Task::DoIt { .. } => (
+                self.writes,
+                usize::from(self.last.as_ref().is_some_and(|o| o.passed)),
+                1,
+            ),
+            Task::Walk { expected, .. } => (
+                self.clicks.right + self.clicks.wrong,
+                self.clicks.right,
+                expected.len(),
+            ),
+        };
+        let found = self.clicks.found.clone();
         let last = self.last.as_ref();
         ExerciseState {
             name: self.exercise.name.clone(),
@@ -187,16 +267,17 @@ impl Session {
             seed: self.instance.seed,
             attempt: self.attempt,
             attempts: self.exercise.attempts,
-            step: self.writes,
-            correct: usize::from(last.is_some_and(|o| o.passed)),
-            total: 1,
+            step,
+            correct,
+            total,
             score: last.map_or(0, |o| o.score),
-            max_score: self.exercise.points,
+            max_score: self.max_score(),
             passed: last.map(|o| o.passed),
             feedback: last.map(|o| o.feedback.clone()),
             task: self.instance.task.describe(self.exercise.structure),
-            operation: Some(operation.name()),
-            ids: ids.clone(),
+            operation,
+            ids,
+            found,
             fewest_writes: last.and_then(|o| o.fewest_writes),
             feedback_mode: self.exercise.feedback.name(),
             model_answer_offered: self.exercise.model_answer,

@@ -42,29 +42,61 @@ fn every_shipped_exercise_draws_gradable_instances() {
             let instance = exercise
                 .instance(seed)
                 .unwrap_or_else(|err| panic!("{}: seed {seed}: {err}", shipped.name));
-            let Task::DoIt { operation, ids } = &instance.task;
-            let mut answer = instance.mesh.clone();
-            operations::apply(&mut answer, *operation, ids).expect("a drawn instance applies");
-            let outcome = exercise.grade(&instance, &answer).expect("grades");
-            assert!(
-                outcome.passed,
-                "{}: seed {seed}: {}",
-                shipped.name, outcome.feedback
-            );
-            assert_eq!(outcome.score, exercise.points);
-            let untouched = exercise.grade(&instance, &instance.mesh).expect("grades");
-            assert!(
-                !untouched.passed && untouched.score == 0,
-                "{}",
-                shipped.name
-            );
+            let chosen = match &instance.task {
+                Task::DoIt { operation, ids } => {
+                    let mut answer = instance.mesh.clone();
+                    operations::apply(&mut answer, *operation, ids)
+                        .expect("a drawn instance applies");
+                    let outcome = exercise.grade(&instance, &answer).expect("grades");
+                    assert!(
+                        outcome.passed,
+                        "{}: seed {seed}: {}",
+                        shipped.name, outcome.feedback
+                    );
+                    assert_eq!(outcome.score, exercise.points);
+                    let untouched = exercise.grade(&instance, &instance.mesh).expect("grades");
+                    assert!(
+                        !untouched.passed && untouched.score == 0,
+                        "{}",
+                        shipped.name
+                    );
+                    format!("{ids:?}")
+                }
+                Task::Walk { args, expected, .. } => {
+                    assert!(
+                        expected.len() >= 3 || seed == 0,
+                        "{}: {expected:?}",
+                        shipped.name
+                    );
+                    let outcome = exercise.grade_clicks(&instance, expected).expect("grades");
+                    assert!(
+                        outcome.passed,
+                        "{}: seed {seed}: {}",
+                        shipped.name, outcome.feedback
+                    );
+                    assert_eq!(outcome.score as usize, expected.len());
+                    let mut reversed = expected.clone();
+                    reversed.reverse();
+                    let backwards = exercise.grade_clicks(&instance, &reversed).expect("grades");
+                    let set = matches!(
+                        &exercise.task,
+                        super::exercise::TaskSpec::Walk(w) if w.order == super::walk::Order::Set
+                    );
+                    assert_eq!(
+                        backwards.passed, set,
+                        "{}: {}",
+                        shipped.name, backwards.feedback
+                    );
+                    format!("{args:?}")
+                }
+            };
             assert_eq!(
                 exercise.instance(seed).expect("draws").task,
                 instance.task,
                 "{}: one seed, one instance",
                 shipped.name
             );
-            seen.insert(ids.clone());
+            seen.insert(chosen);
         }
         assert!(
             seen.len() >= 3,
@@ -153,4 +185,41 @@ fn a_bad_exercise_file_is_refused_with_its_place() {
             "expected {expected:?}\n     got {message:?}"
         );
     }
+}
+
+/// A walk clicked one element at a time: right steps, a wrong click named
+/// and corrected, the score as right steps out of all.
+#[test]
+fn a_walk_is_graded_click_by_click() {
+    let exercise = catalog::find("walk-vertex-edges-winged-edge")
+        .expect("shipped")
+        .expect("reads");
+    let instance = exercise.instance(0).expect("the lecturer's instance");
+    let Task::Walk { expected, args, .. } = &instance.task else {
+        panic!("a walk");
+    };
+    assert_eq!(args[0].1.id, 1, "Table 2's walk from vertex 1");
+    let mut session = super::Session::start(exercise.clone(), 0).expect("starts");
+    let first = session.click(expected[0]).expect("graded");
+    assert!(first.right, "{}", first.feedback);
+    let wrong = expected[0];
+    let second = session.click(wrong).expect("graded");
+    assert!(!second.right);
+    assert!(
+        second.feedback.starts_with("Not edge"),
+        "{}",
+        second.feedback
+    );
+    for &element in &expected[2..] {
+        assert!(session.click(element).expect("graded").right);
+    }
+    assert!(session.click(expected[0]).is_none(), "the walk is over");
+    let state = session.state();
+    assert!(state.finished);
+    assert_eq!(
+        (state.correct, state.total),
+        (expected.len() - 1, expected.len())
+    );
+    assert_eq!(state.passed, Some(false));
+    assert_eq!(state.score as usize, expected.len() - 1);
 }

@@ -7,7 +7,7 @@ use super::Operation;
 use crate::mesh::navigation::Navigation;
 use crate::mesh::structure::Mesh;
 use crate::mesh::{EdgeId, FaceId, HalfEdgeId, VertexId};
-use crate::schema::{ElementKind, ElementRef, Records};
+use crate::schema::{Column, ElementKind, ElementRef, Records, Structure};
 
 /// The id lists `op` takes that fit together on `mesh`, in order; the
 /// operation may still refuse any of them.
@@ -90,4 +90,23 @@ pub fn boundary_vertices(mesh: &Mesh) -> Vec<u32> {
         .filter(|&v| mesh.contains(ElementRef::new(ElementKind::Vertex, v)))
         .filter(|&v| on_boundary(VertexId::new(v)))
         .collect()
+}
+
+/// Whether an edge row has a face on both sides (in a half-edge mesh: the
+/// half-edge and its pair each have one).
+pub fn interior(mesh: &Mesh, edge: ElementRef) -> bool {
+    let columns: &[Column] = match mesh.structure() {
+        Structure::WingedEdge => &[Column::LeftFace, Column::RightFace],
+        Structure::HalfEdge => &[Column::Face],
+    };
+    let faced = |row: ElementRef| {
+        columns
+            .iter()
+            .all(|&c| mesh.reference(row, c).ok().flatten().is_some())
+    };
+    let pair = match mesh.structure() {
+        Structure::HalfEdge => mesh.reference(edge, Column::PairEdge).ok().flatten(),
+        Structure::WingedEdge => Some(edge),
+    };
+    faced(edge) && pair.is_some_and(faced)
 }

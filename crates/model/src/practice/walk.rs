@@ -1,0 +1,317 @@
+//! Walk exercises: the student clicks, in order (or in any order, for a
+//! set), the elements a library algorithm marks, and each click is checked
+//! against the recorded trace. A wrong click in a sequence is corrected,
+//! the right element taken as done, so the walk goes on; the score counts
+//! the steps right the first time (TRAKLA2's measure).
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use edgewise_core::lang::{self, Algorithm, RunOptions, Type, Value};
+use edgewise_core::mesh::operations::candidates;
+use edgewise_core::mesh::{Mesh, Structure, VertexId};
+use edgewise_core::schema::{ElementKind, ElementRef, Records};
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::error::{ExerciseError, Located};
+use super::seed::Seeded;
+use crate::algorithm::library::AlgorithmLibrary;
+
+/// A walk's inputs by name, and what it marks from them, in order.
+pub(super) type Drawn = (Vec<(String, ElementRef)>, Vec<ElementRef>);
+
+/// At most this many inputs are tried before a draw gives up.
+const MAX_TRIES: usize = 500;
+
+/// The fewest elements a drawn walk marks: fewer teaches little.
+const LEAST_MARKS: usize = 3;
+
+/// Whether the marks must be clicked in the walk's order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Order {
+    Sequence,
+    Set,
+}
+
+/// `[walk]` as written.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct WalkFile {
+    algorithm: Spanned<String>,
+    #[serde(default)]
+    args: Option<Spanned<BTreeMap<String, u32>>>,
+    #[serde(default)]
+    order: Option<Spanned<String>>,
+}
+
+/// A walk task: the library algorithm, the lecturer's own inputs (seed 0)
+/// if given, and whether order counts.
+#[derive(Clone, Debug)]
+pub struct Walk {
+    pub algorithm: Arc<Algorithm>,
+    pub args: Option<Vec<(String, u32)>>,
+    pub order: Order,
+}
+
+impl Walk {
+    pub(super) fn parse(
+        at: &Located<'_>,
+        file: WalkFile,
+        structure: Structure,
+    ) -> Result<Self, ExerciseError> {
+        let algorithm = AlgorithmLibrary::shipped()
+            .find_or_explain(file.algorithm.get_ref(), structure)
+            .map_err(|message| at.error(Some(file.algorithm.span()), message))?;
+        if let Some(param) = algorithm.params().find(|p| element_kind(&p.ty).is_none()) {
+            return Err(at.error(
+                Some(file.algorithm.span()),
+                format!(
+                    "`{}` takes `{}`, which is not an element; a walk draws its inputs as \
+                     elements",
+                    algorithm.name, param.name
+                ),
+            ));
+        }
+        let args = match file.args {
+            None => None,
+            Some(args) => {
+                let names: Vec<&str> = algorithm.params().map(|p| p.name.as_str()).collect();
+                for name in args.get_ref().keys() {
+                    if !names.contains(&name.as_str()) {
+                        return Err(at.error(
+                            Some(args.span()),
+                            format!(
+                                "`{}` has no input `{name}`; its inputs are {}",
+                                algorithm.name,
+                                names.join(", ")
+                            ),
+                        ));
+                    }
+                }
+                if let Some(missing) = names.iter().find(|n| !args.get_ref().contains_key(**n)) {
+                    return Err(at.error(
+                        Some(args.span()),
+                        format!("`args` leaves out the input `{missing}`"),
+                    ));
+                }
+                Some(args.into_inner().into_iter().collect())
+            }
+        };
+        let order = match file.order.as_ref().map(|o| o.get_ref().as_str()) {
+            None | Some("sequence") => Order::Sequence,
+            Some("set") => Order::Set,
+            Some(other) => {
+                return Err(at.error(
+                    file.order.as_ref().map(Spanned::span),
+                    format!("order `{other}` is not one of sequence, set"),
+                ));
+            }
+        };
+        Ok(Self {
+            algorithm,
+            args,
+            order,
+        })
+    }
+
+    /// The inputs and what the walk marks, for `seed`: the lecturer's own
+    /// inputs for seed 0 where given, else drawn.
+    pub(super) fn draw(&self, mesh: &Mesh, seed: u64) -> Result<Drawn, String> {
+        let kinds: Vec<(String, ElementKind)> = self
+            .algorithm
+            .params()
+            .filter_map(|p| Some((p.name.clone(), element_kind(&p.ty)?)))
+            .collect();
+        if let (Some(args), 0) = (&self.args, seed) {
+            let inputs: Vec<(String, ElementRef)> = kinds
+                .iter()
+                .map(|(name, kind)| {
+                    let id = args
+                        .iter()
+                        .find(|(n, _)| n == name)
+                        .map_or(0, |(_, id)| *id);
+                    (name.clone(), ElementRef::new(*kind, id))
+                })
+                .collect();
+            let marks = self.marks(mesh, &inputs)?;
+            if marks.is_empty() {
+                return Err(format!(
+                    "{} marks nothing from these inputs",
+                    self.algorithm.name
+                ));
+            }
+            return Ok((inputs, marks));
+        }
+        let mut random = Seeded::new(seed);
+        let choices: Vec<Vec<u32>> = kinds
+            .iter()
+            .map(|(_, kind)| starts(mesh, *kind, &mut random))
+            .collect();
+        if choices.iter().any(Vec::is_empty) {
+            return Err(format!(
+                "{} has nowhere to start on this mesh",
+                self.algorithm.name
+            ));
+        }
+        for attempt in 0..MAX_TRIES {
+            let inputs: Vec<(String, ElementRef)> = kinds
+                .iter()
+                .zip(&choices)
+                .map(|((name, kind), list)| {
+                    (
+                        name.clone(),
+                        ElementRef::new(*kind, list[attempt % list.len()]),
+                    )
+                })
+                .collect();
+            if let Ok(marks) = self.marks(mesh, &inputs)
+                && marks.len() >= LEAST_MARKS
+            {
+                return Ok((inputs, marks));
+            }
+        }
+        Err(format!(
+            "{} marks fewer than {LEAST_MARKS} elements from every input tried; pick another mesh",
+            self.algorithm.name
+        ))
+    }
+
+    /// What the algorithm marks from `inputs`, in order.
+    fn marks(
+        &self,
+        mesh: &Mesh,
+        inputs: &[(String, ElementRef)],
+    ) -> Result<Vec<ElementRef>, String> {
+        let values: Vec<(&str, Value)> = inputs
+            .iter()
+            .map(|(name, element)| (name.as_str(), Value::from(*element)))
+            .collect();
+        let trace = lang::run(&self.algorithm, mesh, &values, RunOptions::default())
+            .map_err(|err| err.to_string())?;
+        if let Some(error) = trace.outcome().error() {
+            return Err(error.to_string());
+        }
+        Ok(trace.marked().collect())
+    }
+}
+
+/// The table an input of type `ty` names, if it is an element.
+fn element_kind(ty: &Type) -> Option<ElementKind> {
+    match ty {
+        Type::Vertex => Some(ElementKind::Vertex),
+        Type::Edge => Some(ElementKind::Edge),
+        Type::Face => Some(ElementKind::Face),
+        _ => None,
+    }
+}
+
+/// Where a walk may start, those worth starting from first (a vertex with
+/// three edges or more, an edge with a face on each side), each group
+/// shuffled: a walk along a boundary finds its boundary edges after the
+/// interior ones mark nothing.
+fn starts(mesh: &Mesh, kind: ElementKind, random: &mut Seeded) -> Vec<u32> {
+    let (mut good, mut rest): (Vec<u32>, Vec<u32>) = (0..mesh.count(kind) as u32)
+        .filter(|&id| mesh.contains(ElementRef::new(kind, id)))
+        .partition(|&id| match kind {
+            ElementKind::Vertex => candidates::edges_at(mesh, VertexId::new(id)).len() >= 3,
+            ElementKind::Edge => candidates::interior(mesh, ElementRef::new(kind, id)),
+            ElementKind::Face => true,
+        });
+    random.shuffle(&mut good);
+    random.shuffle(&mut rest);
+    good.extend(rest);
+    good
+}
+
+/// One click graded: whether it was right, and what to say.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Click {
+    pub right: bool,
+    pub feedback: String,
+}
+
+/// The clicks of a walk so far.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Clicks {
+    /// The elements taken as found, in order (a wrong click in a sequence
+    /// adds the right one).
+    pub found: Vec<ElementRef>,
+    /// Clicks right the first time.
+    pub right: usize,
+    /// Clicks that were wrong.
+    pub wrong: usize,
+}
+
+impl Clicks {
+    /// Grades one click against what the walk marks; `None` once every
+    /// element is found.
+    pub fn click(
+        &mut self,
+        expected: &[ElementRef],
+        order: Order,
+        element: ElementRef,
+        structure: Structure,
+    ) -> Option<Click> {
+        let name = |e: ElementRef| edgewise_core::mesh::Element::of(structure, e).to_string();
+        let total = expected.len();
+        match order {
+            Order::Sequence => {
+                let &wanted = expected.get(self.found.len())?;
+                self.found.push(wanted);
+                let place = format!("({} of {total})", self.found.len());
+                Some(if element == wanted {
+                    self.right += 1;
+                    Click {
+                        right: true,
+                        feedback: format!("Right: {} is marked next {place}.", name(element)),
+                    }
+                } else {
+                    self.wrong += 1;
+                    Click {
+                        right: false,
+                        feedback: format!(
+                            "Not {}: the walk marks {} next; it is marked for you {place}.",
+                            name(element),
+                            name(wanted)
+                        ),
+                    }
+                })
+            }
+            Order::Set => {
+                if self.found.len() == total {
+                    return None;
+                }
+                Some(if self.found.contains(&element) {
+                    self.wrong += 1;
+                    Click {
+                        right: false,
+                        feedback: format!("{} is found already.", name(element)),
+                    }
+                } else if expected.contains(&element) {
+                    self.found.push(element);
+                    self.right += 1;
+                    Click {
+                        right: true,
+                        feedback: format!(
+                            "Right: the walk marks {} ({} of {total} found).",
+                            name(element),
+                            self.found.len()
+                        ),
+                    }
+                } else {
+                    self.wrong += 1;
+                    Click {
+                        right: false,
+                        feedback: format!("{} is not among what the walk marks.", name(element)),
+                    }
+                })
+            }
+        }
+    }
+
+    /// Whether every element is found.
+    pub fn done(&self, expected: &[ElementRef]) -> bool {
+        self.found.len() >= expected.len()
+    }
+}
