@@ -43,6 +43,10 @@ impl EdgewiseApp {
                 | Command::DeleteRow(_)
                 | Command::SetPosition { .. }
         );
+        let clicked = match &command {
+            Command::Select(Some(element)) => Some(*element),
+            _ => None,
+        };
         let written = matches!(
             command,
             Command::SetCell { .. }
@@ -55,6 +59,9 @@ impl EdgewiseApp {
             .and_then(|()| self.dispatch(command));
         if written && result.is_ok() {
             self.exercise_written();
+        }
+        if let (Some(element), Ok(_)) = (clicked, &result) {
+            self.exercise_clicked(element);
         }
         // A run just traced asks its questions from its first step.
         let run = &mut self.tabs[self.active_tab].run;

@@ -92,6 +92,16 @@ impl EdgewiseApp {
         }
     }
 
+    /// A selection during a walk is a click of the walk: graded at once.
+    pub(crate) fn exercise_clicked(&mut self, element: edgewise_core::schema::ElementRef) {
+        let Some(session) = self.tab_mut().practice.as_mut() else {
+            return;
+        };
+        if session.click(element).is_some() {
+            self.report_exercise_step();
+        }
+    }
+
     /// Queues `edgewise:exercisestep`, and `edgewise:score` once the
     /// attempt is over.
     fn report_exercise_step(&mut self) {
@@ -113,8 +123,15 @@ impl EdgewiseApp {
 
     /// Shows the library's result, undoably; the attempt scores 0.
     pub(crate) fn show_model_answer(&mut self) -> Result<(), CommandError> {
-        let answer = self.practice()?.model_answer().map_err(|e| e.to_string())?;
+        let session = self.practice()?;
+        let walk = session.state().operation.is_none();
+        let answer = session.model_answer().map_err(|e| e.to_string())?;
         let tab = self.tab_mut();
+        if walk {
+            // A walk's model answer is its marks, listed on the card.
+            self.report_exercise_step();
+            return Ok(());
+        }
         if let Some(document) = &mut tab.document {
             let before = document.replace_mesh(answer);
             tab.history.record(
@@ -183,8 +200,13 @@ impl EdgewiseApp {
             ui.weak(about.trim());
         }
         ui.label(egui::RichText::new(&state.task).strong());
+        let action = if state.operation.is_some() {
+            "write"
+        } else {
+            "click"
+        };
         ui.weak(format!(
-            "Attempt {}{} · seed {} · {} write{} so far",
+            "Attempt {}{} · seed {} · {} {action}{} so far",
             state.attempt,
             if state.attempts > 0 {
                 format!(" of {}", state.attempts)
@@ -195,7 +217,20 @@ impl EdgewiseApp {
             state.step,
             if state.step == 1 { "" } else { "s" }
         ));
-        if !state.finished {
+        let walk = state.operation.is_none();
+        if walk {
+            if !state.finished {
+                ui.weak("Click each element, in the 3D view or in the tables.");
+            }
+            if !state.found.is_empty() {
+                let found: Vec<String> = state
+                    .found
+                    .iter()
+                    .map(|&e| edgewise_core::mesh::Element::of(structure, e).to_string())
+                    .collect();
+                ui.label(format!("Found: {}", found.join(", ")));
+            }
+        } else if !state.finished {
             ui.weak(
                 "Double-click a cell to type an id (- for none). Add or delete rows and move \
                  vertices here:",
@@ -203,7 +238,8 @@ impl EdgewiseApp {
             self.row_tools_ui(ui, structure, &mut command);
         }
         ui.horizontal_wrapped(|ui| {
-            if !state.finished && ui.button("Check").clicked() {
+            let check = if walk { "Finish" } else { "Check" };
+            if !state.finished && ui.button(check).clicked() {
                 command = Some(Command::SubmitExercise);
             }
             if state.model_answer_offered
@@ -229,6 +265,12 @@ impl EdgewiseApp {
                 ui.visuals().error_fg_color
             };
             ui.label(egui::RichText::new(feedback).color(colour));
+            if walk {
+                ui.weak(format!(
+                    "{} of {} steps right the first time",
+                    state.correct, state.total
+                ));
+            }
             if let Some(fewest) = state.fewest_writes {
                 ui.weak(format!(
                     "Score {} of {} · you used {} write{}; the library's operation makes {fewest}",

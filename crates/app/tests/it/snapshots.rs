@@ -316,3 +316,30 @@ fn a_flip_exercise_checked_with_one_wrong_cell() {
     assert_eq!(exercise.passed, Some(false));
     harness.snapshot_options("practice-flip-one-wrong-cell", &options());
 }
+
+/// A walk with one click right and one corrected: the card lists what is
+/// found and says what the walk marks next.
+#[test]
+fn a_walk_with_a_wrong_click_corrected() {
+    use edgewise_app::command::Command;
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    let app = harness.state_mut();
+    app.execute(Command::StartExercise {
+        exercise: "walk-vertex-edges-winged-edge".to_owned(),
+        seed: Some(0),
+    })
+    .unwrap();
+    for id in [1, 2] {
+        app.execute(Command::Select(Some(ElementRef::new(
+            ElementKind::Edge,
+            id,
+        ))))
+        .unwrap();
+    }
+    harness.run();
+    let exercise = harness.state().state().exercise.unwrap();
+    assert_eq!((exercise.correct, exercise.step), (1, 2));
+    harness.snapshot_options("practice-walk-one-corrected", &options());
+}

@@ -1,4 +1,5 @@
-//! Practice in a real Chromium: a flip exercise done cell by cell through
+//! Practice in a real Chromium: a walk clicked with the pointer and by
+//! `select`, a wrong click named; a flip exercise done cell by cell through
 //! `window.edgewise` passes; one cell short, Check names the difference;
 //! the model answer scores 0; the second attempt draws a fresh instance;
 //! and a course page on another origin, driving the view with
@@ -258,5 +259,64 @@ async fn a_course_page_on_another_origin_hears_the_score() -> anyhow::Result<()>
     browser
         .screenshot("practice-score-on-a-course-page")
         .await?;
+    browser.close().await
+}
+
+/// The journal's Table 2 walk from vertex 1 (the edges around B): the
+/// first edge clicked with the pointer in the 3D view, the next by
+/// `select`; then a second go with a wrong click, named and corrected.
+#[tokio::test]
+async fn a_walk_is_clicked_and_a_wrong_click_is_named() -> anyhow::Result<()> {
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(Duration::from_secs(120)).await?;
+    browser.open("").await?;
+    let start = "window.edgewise.startExercise('walk-vertex-edges-winged-edge', { seed: 0 })";
+    browser.eval_async(start).await?;
+    let state = exercise(&browser).await?;
+    assert_eq!(state["kind"], "walk");
+    assert_eq!(state["total"], 3);
+    browser.next_frame().await?;
+    browser.next_frame().await?;
+    let (x, y) = browser
+        .element_at("edge", 1)
+        .await?
+        .context("edge 1 is in view")?;
+    browser.click_at(x, y, "left").await?;
+    browser
+        .wait_for(
+            "window.edgewise.state().exercise.step === 1",
+            Duration::from_secs(30),
+        )
+        .await?;
+    let state = exercise(&browser).await?;
+    assert_eq!(state["correct"], 1, "{state}");
+    for id in [3, 2] {
+        browser
+            .eval_async(&format!("window.edgewise.select('edge', {id})"))
+            .await?;
+    }
+    let state = exercise(&browser).await?;
+    assert_eq!(state["passed"], true, "{state}");
+    assert_eq!(state["score"], 3);
+    assert_eq!(
+        state["found"],
+        json!([
+            { "kind": "edge", "id": 1 }, { "kind": "edge", "id": 3 }, { "kind": "edge", "id": 2 }
+        ])
+    );
+
+    browser.eval_async(start).await?;
+    browser
+        .eval_async("window.edgewise.select('edge', 2)")
+        .await?;
+    let state = exercise(&browser).await?;
+    assert_eq!(state["correct"], 0);
+    let feedback = state["feedback"].as_str().unwrap_or_default();
+    assert!(
+        feedback.contains("Not edge 2: the walk marks edge 1 next"),
+        "{feedback}"
+    );
+    browser.screenshot("practice-walk-wrong-click").await?;
+    browser.assert_no_console_errors().await?;
     browser.close().await
 }
