@@ -156,12 +156,15 @@ fn show(name: &str, seed: u64, json: bool, mesh: Option<&Path>) -> Outcome {
             Task::DoIt { operation, ids } => json!({ "operation": operation.name(), "ids": ids }),
             Task::Walk {
                 algorithm, args, ..
+            } => json!({ "algorithm": algorithm, "args": args_json(args) }),
+            Task::Predict {
+                algorithm,
+                args,
+                lookups,
             } => {
-                let args: serde_json::Map<String, serde_json::Value> = args
-                    .iter()
-                    .map(|(name, element)| (name.clone(), json!(element.id)))
-                    .collect();
-                json!({ "algorithm": algorithm, "args": args })
+                // Only how many: the questions after the first name the
+                // answers before them.
+                json!({ "algorithm": algorithm, "args": args_json(args), "lookups": lookups.len() })
             }
         };
         if let (Some(map), serde_json::Value::Object(more)) = (object.as_object_mut(), details) {
@@ -184,6 +187,14 @@ fn show(name: &str, seed: u64, json: bool, mesh: Option<&Path>) -> Outcome {
         emit(&text);
     }
     Ok(())
+}
+
+/// A walk's inputs as `{name: id}`.
+fn args_json(args: &[(String, edgewise_core::schema::ElementRef)]) -> serde_json::Value {
+    args.iter()
+        .map(|(name, element)| (name.clone(), json!(element.id)))
+        .collect::<serde_json::Map<_, _>>()
+        .into()
 }
 
 /// Writes the instance's mesh as its structure's table file.
@@ -223,7 +234,7 @@ fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
     let instance = instance(&exercise, seed)?;
     let outcome = match instance.task {
         Task::DoIt { .. } => grade_tables(&exercise, &instance, answer)?,
-        Task::Walk { .. } => {
+        Task::Walk { .. } | Task::Predict { .. } => {
             let clicks = read_clicks(answer)?;
             exercise.grade_clicks(&instance, &clicks).map_err(|err| {
                 eprintln!("{err}");
@@ -234,9 +245,9 @@ fn check(name: &str, answer: &Path, seed: u64, json: bool) -> Outcome {
     report(&exercise, &outcome, seed, json)
 }
 
-/// A walk's answer: an element a line (`edge 3`, `v 1`, `half-edge 9`);
-/// blank lines and `#` comments are skipped.
-fn read_clicks(answer: &Path) -> Result<Vec<edgewise_core::schema::ElementRef>, Failure> {
+/// A walk's or a prediction's answer: an element a line (`edge 3`, `v 1`,
+/// `half-edge 9`), or `null`; blank lines and `#` comments are skipped.
+fn read_clicks(answer: &Path) -> Result<Vec<Option<edgewise_core::schema::ElementRef>>, Failure> {
     let text = read_text(answer)?;
     let mut clicks = Vec::new();
     for (number, line) in text.lines().enumerate() {
@@ -244,11 +255,15 @@ fn read_clicks(answer: &Path) -> Result<Vec<edgewise_core::schema::ElementRef>, 
         if line.is_empty() {
             continue;
         }
+        if line.eq_ignore_ascii_case("null") {
+            clicks.push(None);
+            continue;
+        }
         let element = edgewise_model::selection::parse_element(line).map_err(|message| {
             eprintln!("{}:{}: {message}", shown(answer), number + 1);
             Failure::Input
         })?;
-        clicks.push(element);
+        clicks.push(Some(element));
     }
     Ok(clicks)
 }
@@ -294,7 +309,7 @@ fn report(
         let verdict = if outcome.passed { "pass" } else { "fail" };
         let unit = match exercise.kind {
             Kind::DoIt => "points",
-            Kind::Walk => "steps right",
+            Kind::Walk | Kind::Predict => "steps right",
         };
         let mut text = format!(
             "{}: {verdict} ({} of {} {unit})\n{}\n",

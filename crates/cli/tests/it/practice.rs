@@ -27,7 +27,7 @@ fn list_names_every_shipped_exercise_with_its_kind_and_structure() {
     let rows = json.as_array().expect("an array");
     assert_eq!(rows.len(), text.lines().count());
     for row in rows {
-        assert!(["do-it", "walk"].contains(&row["kind"].as_str().expect("str")));
+        assert!(["do-it", "walk", "predict"].contains(&row["kind"].as_str().expect("str")));
         assert!(["half-edge", "winged-edge"].contains(&row["structure"].as_str().expect("str")));
     }
 }
@@ -179,7 +179,7 @@ fn check_grades_a_walk_from_the_elements_clicked() {
     let fail = run(&["practice", "check", "walk-vertex-edges-winged-edge", &path]);
     assert_eq!(code(&fail), 1);
     assert!(
-        stdout(&fail).contains("click 2: Not edge 2: the walk marks edge 3 next"),
+        stdout(&fail).contains("answer 2: Not edge 2: the walk marks edge 3 next"),
         "{}",
         stdout(&fail)
     );
@@ -190,5 +190,41 @@ fn check_grades_a_walk_from_the_elements_clicked() {
         stderr(&bad).contains("walk.txt:2: `corner 3`"),
         "{}",
         stderr(&bad)
+    );
+}
+
+/// A prediction's answer is what each lookup gives, one a line, `null`
+/// where it gives none.
+#[test]
+fn check_grades_a_prediction_from_its_answers() {
+    let dir = scratch("practice-predict");
+    let shown = run(&[
+        "practice",
+        "show",
+        "predict-vertex-edges-winged-edge",
+        "--json",
+    ]);
+    let object: serde_json::Value = serde_json::from_str(&stdout(&shown)).expect("JSON");
+    assert_eq!(object["kind"], "predict");
+    assert_eq!(object["lookups"], 7);
+    assert!(
+        object.get("questions").is_none(),
+        "later questions would give answers away"
+    );
+    let answer = dir.join("predict.txt");
+    std::fs::write(&answer, "edge 1\nnull\n").expect("writes");
+    let path = answer.to_string_lossy();
+    let graded = run(&[
+        "practice",
+        "check",
+        "predict-vertex-edges-winged-edge",
+        &path,
+    ]);
+    assert_eq!(code(&graded), 1);
+    let text = stdout(&graded);
+    assert!(text.contains("fail (1 of 7 steps right)"), "{text}");
+    assert!(
+        text.contains("answer 2: Not null: edge 1.startVertex is vertex 0"),
+        "{text}"
     );
 }

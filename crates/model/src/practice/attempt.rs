@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::exercise::{Exercise, ExerciseError};
 use super::instance::{Instance, Task};
-use super::walk::Clicks;
+use super::walk::{Click, Clicks};
 
 /// The grade of an answer.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -69,69 +69,96 @@ impl Exercise {
 }
 
 impl Exercise {
-    /// Grades a whole walk at once (an answer file): `clicks` against what
-    /// the walk marks, right steps out of all.
+    /// Grades a whole walk or prediction at once (an answer file): each
+    /// answer (`None`: null) against the trace, right steps out of all.
     pub fn grade_clicks(
         &self,
         instance: &Instance,
-        clicks: &[ElementRef],
+        answers: &[Option<ElementRef>],
     ) -> Result<Outcome, ExerciseError> {
-        let Task::Walk {
-            expected, order, ..
-        } = &instance.task
-        else {
-            return Err(ExerciseError {
-                source: self.name.clone(),
-                at: None,
-                message: "a do-it exercise is answered by tables, not by elements clicked"
-                    .to_owned(),
-            });
+        let (total, what) = match &instance.task {
+            Task::Walk { expected, .. } => (expected.len(), "the walk marks"),
+            Task::Predict { lookups, .. } => (lookups.len(), "the run looks up"),
+            Task::DoIt { .. } => {
+                return Err(ExerciseError {
+                    source: self.name.clone(),
+                    at: None,
+                    message: "a do-it exercise is answered by tables, not by elements clicked"
+                        .to_owned(),
+                });
+            }
         };
-        let mut walk = Clicks::default();
+        let mut clicks = Clicks::default();
         let mut first_wrong = None;
-        for (step, &element) in clicks.iter().enumerate() {
-            match walk.click(expected, *order, element, self.structure) {
+        for (step, &given) in answers.iter().enumerate() {
+            let graded = match (&instance.task, given) {
+                (
+                    Task::Walk {
+                        expected, order, ..
+                    },
+                    Some(element),
+                ) => clicks.click(expected, *order, element, self.structure),
+                (Task::Walk { .. }, None) => {
+                    clicks.wrong += 1;
+                    Some(Click {
+                        right: false,
+                        feedback: "null is not an element the walk marks".to_owned(),
+                    })
+                }
+                (Task::Predict { lookups, .. }, given) => {
+                    clicks.predict(lookups, given, self.structure)
+                }
+                (Task::DoIt { .. }, _) => None,
+            };
+            match graded {
                 Some(click) if !click.right && first_wrong.is_none() => {
-                    first_wrong = Some(format!("click {}: {}", step + 1, click.feedback));
+                    first_wrong = Some(format!("answer {}: {}", step + 1, click.feedback));
                 }
                 Some(_) => {}
                 None => {
                     first_wrong.get_or_insert_with(|| {
                         format!(
-                            "click {}: the walk marks {} elements, and every one is clicked \
+                            "answer {}: {what} {total} elements, and every one is answered \
                              already",
-                            step + 1,
-                            expected.len()
+                            step + 1
                         )
                     });
                 }
             }
         }
-        Ok(walk_outcome(&walk, expected, first_wrong))
+        let progress = match &instance.task {
+            Task::Walk { .. } => clicks.found.len(),
+            _ => clicks.answered(),
+        };
+        Ok(steps_outcome(&clicks, total, progress, first_wrong))
     }
 }
 
-/// The grade of a walk's clicks: right steps out of all, a pass when
-/// every element was found right the first time.
-pub(super) fn walk_outcome(
-    walk: &Clicks,
-    expected: &[ElementRef],
+/// The grade of a walk's clicks or a prediction's answers: right steps out
+/// of all (`progress` of `total` answered), a pass when every step was
+/// right the first time.
+pub(super) fn steps_outcome(
+    clicks: &Clicks,
+    total: usize,
+    progress: usize,
     first_wrong: Option<String>,
 ) -> Outcome {
-    let total = expected.len();
-    let passed = walk.right == total && walk.wrong == 0;
+    let passed = clicks.right == total && clicks.wrong == 0;
     let feedback = match first_wrong {
         Some(wrong) => wrong,
-        None if walk.done(expected) => format!("Correct: every one of the {total} steps."),
+        None if passed => format!("Correct: every one of the {total} steps."),
+        None if progress >= total => format!(
+            "Done: {} of the {total} steps right the first time.",
+            clicks.right
+        ),
         None => format!(
-            "{} of the {total} elements are clicked; the walk marks {} more.",
-            walk.found.len(),
-            total - walk.found.len()
+            "{progress} of the {total} steps are answered; {} remain.",
+            total - progress
         ),
     };
     Outcome {
         passed,
-        score: walk.right as u32,
+        score: clicks.right as u32,
         max_score: total as u32,
         feedback,
         element: None,

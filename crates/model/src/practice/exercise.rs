@@ -28,6 +28,8 @@ pub enum Kind {
     DoIt,
     /// Clicks the elements an algorithm marks.
     Walk,
+    /// Says what each lookup of an algorithm gives, before it runs.
+    Predict,
 }
 
 impl Kind {
@@ -35,6 +37,7 @@ impl Kind {
         match self {
             Self::DoIt => "do-it",
             Self::Walk => "walk",
+            Self::Predict => "predict",
         }
     }
 }
@@ -86,6 +89,8 @@ struct File {
     do_it: Option<Spanned<DoItFile>>,
     #[serde(default)]
     walk: Option<Spanned<WalkFile>>,
+    #[serde(default)]
+    predict: Option<Spanned<WalkFile>>,
 }
 
 fn one() -> u32 {
@@ -210,29 +215,26 @@ impl Exercise {
         };
         let mesh_span = file.mesh.span();
         let mesh = mesh_source(&at, file.mesh.into_inner(), mesh_span.clone())?;
-        let task = match (file.kind, file.do_it, file.walk) {
-            (Kind::DoIt, Some(task), None) => TaskSpec::DoIt(do_it(&at, task.into_inner())?),
-            (Kind::Walk, None, Some(task)) => {
-                TaskSpec::Walk(Walk::parse(&at, task.into_inner(), structure)?)
-            }
-            (Kind::DoIt, _, Some(walk)) => {
-                return Err(at.error(
-                    Some(walk.span()),
-                    "a do-it exercise has a [do-it] table, not [walk]",
-                ));
-            }
-            (Kind::Walk, Some(task), _) => {
-                return Err(at.error(
-                    Some(task.span()),
-                    "a walk exercise has a [walk] table, not [do-it]",
-                ));
-            }
-            (kind, None, None) => {
-                return Err(at.error(
-                    None,
-                    format!("a {} exercise needs a [{}] table", kind.name(), kind.name()),
-                ));
-            }
+        let spans = [
+            ("do-it", file.do_it.as_ref().map(Spanned::span)),
+            ("walk", file.walk.as_ref().map(Spanned::span)),
+            ("predict", file.predict.as_ref().map(Spanned::span)),
+        ];
+        let kind = file.kind;
+        let task = match kind {
+            Kind::DoIt => TaskSpec::DoIt(do_it(&at, table(&at, kind, file.do_it, &spans)?)?),
+            Kind::Walk => TaskSpec::Walk(Walk::parse(
+                &at,
+                table(&at, kind, file.walk, &spans)?,
+                structure,
+                false,
+            )?),
+            Kind::Predict => TaskSpec::Walk(Walk::parse(
+                &at,
+                table(&at, kind, file.predict, &spans)?,
+                structure,
+                true,
+            )?),
         };
         let start =
             build(&mesh, structure).map_err(|message| at.error(Some(mesh_span), message))?;
@@ -258,6 +260,34 @@ impl Exercise {
     pub fn start(&self) -> &Mesh {
         &self.start
     }
+}
+
+/// The task table of `kind`'s exercise, refusing the other kinds' tables.
+fn table<T>(
+    at: &Located<'_>,
+    kind: Kind,
+    wanted: Option<Spanned<T>>,
+    spans: &[(&str, Option<Range<usize>>)],
+) -> Result<T, ExerciseError> {
+    if let Some((other, span)) = spans
+        .iter()
+        .find(|(name, span)| *name != kind.name() && span.is_some())
+    {
+        return Err(at.error(
+            span.clone(),
+            format!(
+                "a {} exercise has a [{}] table, not [{other}]",
+                kind.name(),
+                kind.name()
+            ),
+        ));
+    }
+    wanted.map(Spanned::into_inner).ok_or_else(|| {
+        at.error(
+            None,
+            format!("a {} exercise needs a [{}] table", kind.name(), kind.name()),
+        )
+    })
 }
 
 fn mesh_source(

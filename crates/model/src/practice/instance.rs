@@ -11,7 +11,7 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 
 use super::exercise::{Exercise, ExerciseError, TaskSpec};
 use super::seed::Seeded;
-use super::walk::Order;
+use super::walk::{Expected, Judged, Order, Prediction};
 
 /// At most this many candidates are tried before a draw gives up: enough
 /// for every shipped mesh, and bounded on a hostile one.
@@ -30,6 +30,12 @@ pub enum Task {
         expected: Vec<ElementRef>,
         order: Order,
     },
+    /// Say what each of `lookups` gives, in the run's order.
+    Predict {
+        algorithm: String,
+        args: Vec<(String, ElementRef)>,
+        lookups: Vec<Prediction>,
+    },
 }
 
 impl Task {
@@ -43,20 +49,23 @@ impl Task {
                 order,
                 ..
             } => {
-                let inputs: Vec<String> = args
-                    .iter()
-                    .map(|(name, element)| {
-                        format!(
-                            "{name} = {}",
-                            edgewise_core::mesh::Element::of(structure, *element)
-                        )
-                    })
-                    .collect();
                 let how = match order {
                     Order::Sequence => "in order, each element it marks",
                     Order::Set => "in any order, every element it marks",
                 };
-                return format!("Walk {algorithm} from {}: click, {how}.", inputs.join(", "));
+                return format!(
+                    "Walk {algorithm} from {}: click, {how}.",
+                    inputs(args, structure)
+                );
+            }
+            Self::Predict {
+                algorithm, args, ..
+            } => {
+                return format!(
+                    "Predict {algorithm} from {}: before each lookup runs, click the element it \
+                     gives, or answer null.",
+                    inputs(args, structure)
+                );
             }
         };
         let edge = |id: u32| match structure {
@@ -139,17 +148,29 @@ impl Exercise {
                         .map_err(|message| ExerciseError {
                             source: self.name.clone(),
                             at: None,
-                            message: format!("[walk]: {message}"),
+                            message: format!("[{}]: {message}", self.kind.name()),
                         })?;
+                let algorithm = walk.algorithm.name.clone();
+                let task = match (expected, &walk.judged) {
+                    (Expected::Lookups(lookups), _) => Task::Predict {
+                        algorithm,
+                        args,
+                        lookups,
+                    },
+                    (Expected::Marks(expected), judged) => Task::Walk {
+                        algorithm,
+                        args,
+                        expected,
+                        order: match judged {
+                            Judged::Marks(order) => *order,
+                            Judged::Lookups(_) => Order::Sequence,
+                        },
+                    },
+                };
                 return Ok(Instance {
                     seed,
                     mesh: self.start().clone(),
-                    task: Task::Walk {
-                        algorithm: walk.algorithm.name.clone(),
-                        args,
-                        expected,
-                        order: walk.order,
-                    },
+                    task,
                 });
             }
         };
@@ -234,4 +255,17 @@ fn neighbours(mesh: &Mesh, f: u32, u: u32, w: u32) -> bool {
 
 fn valence(mesh: &Mesh, v: u32) -> usize {
     candidates::edges_at(mesh, VertexId::new(v)).len()
+}
+
+/// A walk's inputs as a sentence names them: `v = vertex 3`.
+fn inputs(args: &[(String, ElementRef)], structure: Structure) -> String {
+    args.iter()
+        .map(|(name, element)| {
+            format!(
+                "{name} = {}",
+                edgewise_core::mesh::Element::of(structure, *element)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }

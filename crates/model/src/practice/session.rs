@@ -7,7 +7,7 @@ use edgewise_core::mesh::operations;
 use serde::Serialize;
 use serde_json::{Value, json};
 
-use super::attempt::{Outcome, walk_outcome};
+use super::attempt::{Outcome, steps_outcome};
 use super::exercise::{Exercise, ExerciseError, Feedback};
 use super::instance::{Instance, Task};
 use super::seed::Seeded;
@@ -63,6 +63,8 @@ pub struct ExerciseState {
     pub ids: Vec<u32>,
     /// A walk's elements found so far, in order.
     pub found: Vec<edgewise_core::schema::ElementRef>,
+    /// The lookup a prediction asks about now (`line 14: half-edge 3.pair`).
+    pub question: Option<String>,
     pub fewest_writes: Option<usize>,
     pub feedback_mode: &'static str,
     pub model_answer_offered: bool,
@@ -113,10 +115,10 @@ impl Session {
         if self.model_answer_shown {
             return Err(self.error("the model answer was shown: start a new instance to try again"));
         }
-        if let Task::Walk { expected, .. } = &self.instance.task {
-            // Check on a walk ends it where it stands.
+        if let Some((total, progress)) = self.steps() {
+            // Finish on a walk or a prediction ends it where it stands.
             self.finished = true;
-            let outcome = walk_outcome(&self.clicks, expected, None);
+            let outcome = steps_outcome(&self.clicks, total, progress, None);
             return Ok(self.last.insert(outcome));
         }
         let outcome = self.exercise.grade(&self.instance, answer)?;
@@ -136,30 +138,61 @@ impl Session {
         Ok(self.last.insert(outcome))
     }
 
-    /// Grades a click of a walk; the walk ends once every element is
-    /// found. `None` when the click is not a walk's (a do-it exercise, or
-    /// a finished walk).
-    pub fn click(&mut self, element: edgewise_core::schema::ElementRef) -> Option<Click> {
-        let Task::Walk {
-            expected, order, ..
-        } = &self.instance.task
-        else {
-            return None;
-        };
+    /// A walk's or a prediction's steps and how many are answered; `None`
+    /// for a do-it exercise.
+    fn steps(&self) -> Option<(usize, usize)> {
+        match &self.instance.task {
+            Task::DoIt { .. } => None,
+            Task::Walk { expected, .. } => Some((expected.len(), self.clicks.found.len())),
+            Task::Predict { lookups, .. } => Some((lookups.len(), self.clicks.answered())),
+        }
+    }
+
+    /// Grades a click of a walk, or an answer of a prediction (`None`:
+    /// null); it ends once every step is answered. `None` when there is
+    /// nothing to answer (a do-it exercise, a finished attempt, a null in
+    /// a walk).
+    pub fn answer(&mut self, given: Option<edgewise_core::schema::ElementRef>) -> Option<Click> {
         if self.finished {
             return None;
         }
-        let click = self
-            .clicks
-            .click(expected, *order, element, self.exercise.structure)?;
-        let done = self.clicks.done(expected);
-        let mut outcome = walk_outcome(&self.clicks, expected, None);
+        let structure = self.exercise.structure;
+        let click = match (&self.instance.task, given) {
+            (
+                Task::Walk {
+                    expected, order, ..
+                },
+                Some(element),
+            ) => self.clicks.click(expected, *order, element, structure)?,
+            (Task::Predict { lookups, .. }, given) => {
+                self.clicks.predict(lookups, given, structure)?
+            }
+            _ => return None,
+        };
+        let (total, progress) = self.steps()?;
+        let done = progress >= total;
+        let mut outcome = steps_outcome(&self.clicks, total, progress, None);
         if !done {
             outcome.feedback.clone_from(&click.feedback);
         }
         self.finished = done;
         self.last = Some(outcome);
         Some(click)
+    }
+
+    /// [`Self::answer`] with an element: a click.
+    pub fn click(&mut self, element: edgewise_core::schema::ElementRef) -> Option<Click> {
+        self.answer(Some(element))
+    }
+
+    /// The question a prediction asks now, if one waits.
+    pub fn question(&self) -> Option<String> {
+        match &self.instance.task {
+            Task::Predict { lookups, .. } if !self.finished => lookups
+                .get(self.clicks.answered())
+                .map(|l| format!("line {}: {}", l.line, l.question)),
+            _ => None,
+        }
     }
 
     /// The library's result of the task, which the app shows as the model
@@ -170,9 +203,26 @@ impl Session {
         }
         let mut mesh = self.instance.mesh.clone();
         let Task::DoIt { operation, ids } = &self.instance.task else {
-            // A walk's model answer: every element it marks, found.
-            if let Task::Walk { expected, .. } = &self.instance.task {
-                self.clicks.found.clone_from(expected);
+            // A walk's model answer: every element it marks, found; a
+            // prediction's: what each lookup gives.
+            let mut feedback = "The model answer is shown: this attempt scores 0.".to_owned();
+            match &self.instance.task {
+                Task::Walk { expected, .. } => self.clicks.found.clone_from(expected),
+                Task::Predict { lookups, .. } => {
+                    let structure = self.exercise.structure;
+                    let given: Vec<String> = lookups
+                        .iter()
+                        .map(|l| {
+                            let answer = l.answer.map_or_else(
+                                || "null".to_owned(),
+                                |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
+                            );
+                            format!("{} = {answer}", l.question)
+                        })
+                        .collect();
+                    feedback.push_str(&format!(" The lookups give: {}.", given.join("; ")));
+                }
+                Task::DoIt { .. } => {}
             }
             self.model_answer_shown = true;
             self.finished = true;
@@ -180,7 +230,7 @@ impl Session {
                 passed: false,
                 score: 0,
                 max_score: self.max_score(),
-                feedback: "The model answer is shown: this attempt scores 0.".to_owned(),
+                feedback,
                 element: None,
                 fewest_writes: None,
             });
@@ -237,13 +287,14 @@ impl Session {
         match &self.instance.task {
             Task::DoIt { .. } => self.exercise.points,
             Task::Walk { expected, .. } => expected.len() as u32,
+            Task::Predict { lookups, .. } => lookups.len() as u32,
         }
     }
 
     pub fn state(&self) -> ExerciseState {
         let (operation, ids) = match &self.instance.task {
             Task::DoIt { operation, ids } => (Some(operation.name()), ids.clone()),
-            Task::Walk { .. } => (None, Vec::new()),
+            Task::Walk { .. } | Task::Predict { .. } => (None, Vec::new()),
         };
         let (step, correct, total) = match &self.instance.task {
             Task::DoIt { .. } => (
@@ -251,11 +302,12 @@ impl Session {
                 usize::from(self.last.as_ref().is_some_and(|o| o.passed)),
                 1,
             ),
-            Task::Walk { expected, .. } => (
-                self.clicks.right + self.clicks.wrong,
-                self.clicks.right,
-                expected.len(),
-            ),
+            Task::Walk { expected, .. } => {
+                (self.clicks.answered(), self.clicks.right, expected.len())
+            }
+            Task::Predict { lookups, .. } => {
+                (self.clicks.answered(), self.clicks.right, lookups.len())
+            }
         };
         let found = self.clicks.found.clone();
         let last = self.last.as_ref();
@@ -278,6 +330,7 @@ impl Session {
             operation,
             ids,
             found,
+            question: self.question(),
             fewest_writes: last.and_then(|o| o.fewest_writes),
             feedback_mode: self.exercise.feedback.name(),
             model_answer_offered: self.exercise.model_answer,

@@ -68,25 +68,38 @@ fn every_shipped_exercise_draws_gradable_instances() {
                         "{}: {expected:?}",
                         shipped.name
                     );
-                    let outcome = exercise.grade_clicks(&instance, expected).expect("grades");
+                    let clicks: Vec<_> = expected.iter().copied().map(Some).collect();
+                    let outcome = exercise.grade_clicks(&instance, &clicks).expect("grades");
                     assert!(
                         outcome.passed,
                         "{}: seed {seed}: {}",
                         shipped.name, outcome.feedback
                     );
                     assert_eq!(outcome.score as usize, expected.len());
-                    let mut reversed = expected.clone();
+                    let mut reversed = clicks.clone();
                     reversed.reverse();
                     let backwards = exercise.grade_clicks(&instance, &reversed).expect("grades");
                     let set = matches!(
                         &exercise.task,
-                        super::exercise::TaskSpec::Walk(w) if w.order == super::walk::Order::Set
+                        super::exercise::TaskSpec::Walk(w)
+                            if w.judged == super::walk::Judged::Marks(super::walk::Order::Set)
                     );
                     assert_eq!(
                         backwards.passed, set,
                         "{}: {}",
                         shipped.name, backwards.feedback
                     );
+                    format!("{args:?}")
+                }
+                Task::Predict { args, lookups, .. } => {
+                    assert!(lookups.len() >= 3, "{}: {lookups:?}", shipped.name);
+                    let answers: Vec<_> = lookups.iter().map(|l| l.answer).collect();
+                    let outcome = exercise.grade_clicks(&instance, &answers).expect("grades");
+                    assert!(outcome.passed, "{}: {}", shipped.name, outcome.feedback);
+                    let mut wrong = answers.clone();
+                    wrong[1] = if wrong[1].is_some() { None } else { wrong[0] };
+                    let failed = exercise.grade_clicks(&instance, &wrong).expect("grades");
+                    assert!(!failed.passed && failed.feedback.starts_with("answer 2: Not "));
                     format!("{args:?}")
                 }
             };

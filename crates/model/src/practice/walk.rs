@@ -1,13 +1,18 @@
-//! Walk exercises: the student clicks, in order (or in any order, for a
-//! set), the elements a library algorithm marks, and each click is checked
-//! against the recorded trace. A wrong click in a sequence is corrected,
-//! the right element taken as done, so the walk goes on; the score counts
-//! the steps right the first time (TRAKLA2's measure).
+//! Exercises made from a library algorithm's recorded trace.
+//!
+//! - **Walk**: the student clicks, in order (or in any order, for a set),
+//!   the elements the algorithm marks. A wrong click in a sequence is
+//!   corrected, the right element taken as done, so the walk goes on.
+//! - **Predict**: before each lookup runs, the student says what it gives
+//!   (an element, or null).
+//!
+//! Either way each answer is checked against the trace at once, and the
+//! score counts the steps right the first time (TRAKLA2's measure).
 
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
-use edgewise_core::lang::{self, Algorithm, RunOptions, Type, Value};
+use edgewise_core::lang::{self, Algorithm, RunOptions, StepKind, Type, Value};
 use edgewise_core::mesh::operations::candidates;
 use edgewise_core::mesh::{Mesh, Structure, VertexId};
 use edgewise_core::schema::{ElementKind, ElementRef, Records};
@@ -18,8 +23,8 @@ use super::error::{ExerciseError, Located};
 use super::seed::Seeded;
 use crate::algorithm::library::AlgorithmLibrary;
 
-/// A walk's inputs by name, and what it marks from them, in order.
-pub(super) type Drawn = (Vec<(String, ElementRef)>, Vec<ElementRef>);
+/// A walk's inputs by name, and what its trace holds to judge.
+pub(super) type Drawn = (Vec<(String, ElementRef)>, Expected);
 
 /// At most this many inputs are tried before a draw gives up.
 const MAX_TRIES: usize = 500;
@@ -43,22 +48,64 @@ pub(super) struct WalkFile {
     args: Option<Spanned<BTreeMap<String, u32>>>,
     #[serde(default)]
     order: Option<Spanned<String>>,
+    #[serde(default)]
+    lines: Option<Spanned<Vec<u32>>>,
 }
 
-/// A walk task: the library algorithm, the lecturer's own inputs (seed 0)
-/// if given, and whether order counts.
+/// What is judged of the trace.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Judged {
+    /// Its marks, in this order.
+    Marks(Order),
+    /// Its lookups (on these lines, or all).
+    Lookups(Option<Vec<u32>>),
+}
+
+/// One lookup to predict: where it runs, what it asks, what it gives.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Prediction {
+    pub line: u32,
+    /// `e.successorEdge, where e is half-edge 3`.
+    pub question: String,
+    pub answer: Option<ElementRef>,
+}
+
+/// What the trace holds to judge against.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Expected {
+    Marks(Vec<ElementRef>),
+    Lookups(Vec<Prediction>),
+}
+
+impl Expected {
+    fn len(&self) -> usize {
+        match self {
+            Self::Marks(marks) => marks.len(),
+            Self::Lookups(lookups) => lookups.len(),
+        }
+    }
+}
+
+/// The most lookups one instance asks: a long walk is predicted in part.
+const MOST_LOOKUPS: usize = 12;
+
+/// A traced task: the library algorithm, the lecturer's own inputs (seed
+/// 0) if given, and what of the trace is judged.
 #[derive(Clone, Debug)]
 pub struct Walk {
     pub algorithm: Arc<Algorithm>,
     pub args: Option<Vec<(String, u32)>>,
-    pub order: Order,
+    pub judged: Judged,
 }
 
 impl Walk {
+    /// `predict` reads `[predict]` (lookups, on `lines`) instead of
+    /// `[walk]` (marks, in `order`).
     pub(super) fn parse(
         at: &Located<'_>,
         file: WalkFile,
         structure: Structure,
+        predict: bool,
     ) -> Result<Self, ExerciseError> {
         let algorithm = AlgorithmLibrary::shipped()
             .find_or_explain(file.algorithm.get_ref(), structure)
@@ -108,10 +155,29 @@ impl Walk {
                 ));
             }
         };
+        let judged = match (predict, file.lines) {
+            (false, None) => Judged::Marks(order),
+            (true, lines) => {
+                if let Some(order) = &file.order {
+                    return Err(at.error(
+                        Some(order.span()),
+                        "a predict exercise asks its lookups in the run's order; `order` is for \
+                         walks",
+                    ));
+                }
+                Judged::Lookups(lines.map(Spanned::into_inner))
+            }
+            (false, Some(lines)) => {
+                return Err(at.error(
+                    Some(lines.span()),
+                    "`lines` chooses a predict exercise's lookups; a walk judges marks",
+                ));
+            }
+        };
         Ok(Self {
             algorithm,
             args,
-            order,
+            judged,
         })
     }
 
@@ -134,14 +200,15 @@ impl Walk {
                     (name.clone(), ElementRef::new(*kind, id))
                 })
                 .collect();
-            let marks = self.marks(mesh, &inputs)?;
-            if marks.is_empty() {
+            let expected = self.expected(mesh, &inputs)?;
+            if expected.len() == 0 {
                 return Err(format!(
-                    "{} marks nothing from these inputs",
-                    self.algorithm.name
+                    "{} {} nothing from these inputs",
+                    self.algorithm.name,
+                    self.verb()
                 ));
             }
-            return Ok((inputs, marks));
+            return Ok((inputs, expected));
         }
         let mut random = Seeded::new(seed);
         let choices: Vec<Vec<u32>> = kinds
@@ -165,24 +232,30 @@ impl Walk {
                     )
                 })
                 .collect();
-            if let Ok(marks) = self.marks(mesh, &inputs)
-                && marks.len() >= LEAST_MARKS
+            if let Ok(expected) = self.expected(mesh, &inputs)
+                && expected.len() >= LEAST_MARKS
             {
-                return Ok((inputs, marks));
+                return Ok((inputs, expected));
             }
         }
         Err(format!(
-            "{} marks fewer than {LEAST_MARKS} elements from every input tried; pick another mesh",
-            self.algorithm.name
+            "{} {} fewer than {LEAST_MARKS} elements from every input tried; pick another mesh",
+            self.algorithm.name,
+            self.verb()
         ))
     }
 
-    /// What the algorithm marks from `inputs`, in order.
-    fn marks(
-        &self,
-        mesh: &Mesh,
-        inputs: &[(String, ElementRef)],
-    ) -> Result<Vec<ElementRef>, String> {
+    fn verb(&self) -> &'static str {
+        match self.judged {
+            Judged::Marks(_) => "marks",
+            Judged::Lookups(_) => "looks up",
+        }
+    }
+
+    /// What the trace from `inputs` holds to judge: the marks in order, or
+    /// the lookups that give an element or null (at most
+    /// [`MOST_LOOKUPS`]).
+    fn expected(&self, mesh: &Mesh, inputs: &[(String, ElementRef)]) -> Result<Expected, String> {
         let values: Vec<(&str, Value)> = inputs
             .iter()
             .map(|(name, element)| (name.as_str(), Value::from(*element)))
@@ -192,7 +265,40 @@ impl Walk {
         if let Some(error) = trace.outcome().error() {
             return Err(error.to_string());
         }
-        Ok(trace.marked().collect())
+        let lines = match &self.judged {
+            Judged::Marks(_) => return Ok(Expected::Marks(trace.marked().collect())),
+            Judged::Lookups(lines) => lines,
+        };
+        let structure = mesh.structure();
+        let lookups = (0..trace.len())
+            .filter_map(|index| trace.step(index))
+            .filter(|step| {
+                lines
+                    .as_ref()
+                    .is_none_or(|lines| lines.contains(&step.line))
+            })
+            .filter_map(|step| match step.kind {
+                StepKind::Lookup {
+                    base,
+                    field,
+                    result,
+                } if result == Value::Null || result.element().is_some() => {
+                    let base = base.element()?;
+                    Some(Prediction {
+                        line: step.line,
+                        question: format!(
+                            "{}.{}",
+                            edgewise_core::mesh::Element::of(structure, base),
+                            field.lookup_name()
+                        ),
+                        answer: result.element(),
+                    })
+                }
+                _ => None,
+            })
+            .take(MOST_LOOKUPS)
+            .collect();
+        Ok(Expected::Lookups(lookups))
     }
 }
 
@@ -313,5 +419,47 @@ impl Clicks {
     /// Whether every element is found.
     pub fn done(&self, expected: &[ElementRef]) -> bool {
         self.found.len() >= expected.len()
+    }
+
+    /// Grades a prediction of the next lookup (`None`: null); `None` once
+    /// every lookup is answered. The run goes on with what the lookup
+    /// really gives.
+    pub fn predict(
+        &mut self,
+        lookups: &[Prediction],
+        given: Option<ElementRef>,
+        structure: Structure,
+    ) -> Option<Click> {
+        let lookup = lookups.get(self.answered())?;
+        let name = |e: Option<ElementRef>| {
+            e.map_or_else(
+                || "null".to_owned(),
+                |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
+            )
+        };
+        let place = format!("({} of {})", self.answered() + 1, lookups.len());
+        Some(if given == lookup.answer {
+            self.right += 1;
+            Click {
+                right: true,
+                feedback: format!("Right: {} is {} {place}.", lookup.question, name(given)),
+            }
+        } else {
+            self.wrong += 1;
+            Click {
+                right: false,
+                feedback: format!(
+                    "Not {}: {} is {} {place}.",
+                    name(given),
+                    lookup.question,
+                    name(lookup.answer)
+                ),
+            }
+        })
+    }
+
+    /// How many answers (or clicks) were graded.
+    pub fn answered(&self) -> usize {
+        self.right + self.wrong
     }
 }
