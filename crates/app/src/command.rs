@@ -137,7 +137,11 @@ pub enum Command {
         exercise: String,
         seed: Option<u64>,
     },
-    /// Grades the exercise's answer as the tables now hold it (Check).
+    /// Answers a walk's next click or a prediction's lookup: an element, or
+    /// null (a prediction only). A selection during either does the same.
+    AnswerExercise(Option<ElementRef>),
+    /// Grades the exercise's answer as the tables now hold it (Check), or
+    /// ends a walk or a prediction where it stands (Finish).
     SubmitExercise,
     /// Shows the library's result as the model answer; the attempt scores 0.
     ShowModelAnswer,

@@ -208,6 +208,7 @@ impl EdgewiseApp {
                 done(self.tab_mut().set_position(vertex, position))
             }
             Command::StartExercise { exercise, seed } => done(self.start_exercise(&exercise, seed)),
+            Command::AnswerExercise(given) => done(self.answer_exercise(given)),
             Command::SubmitExercise => done(self.submit_exercise()),
             Command::ShowModelAnswer => done(self.show_model_answer()),
             Command::NewInstance => done(self.new_instance()),

@@ -92,7 +92,8 @@ impl EdgewiseApp {
         }
     }
 
-    /// A selection during a walk is a click of the walk: graded at once.
+    /// A selection during a walk or a prediction is its next answer:
+    /// graded at once.
     pub(crate) fn exercise_clicked(&mut self, element: edgewise_core::schema::ElementRef) {
         let Some(session) = self.tab_mut().practice.as_mut() else {
             return;
@@ -100,6 +101,23 @@ impl EdgewiseApp {
         if session.click(element).is_some() {
             self.report_exercise_step();
         }
+    }
+
+    /// [`Command::AnswerExercise`]: an element or null for the next step.
+    pub(crate) fn answer_exercise(
+        &mut self,
+        given: Option<edgewise_core::schema::ElementRef>,
+    ) -> Result<(), CommandError> {
+        let session = self.practice()?;
+        if session.answer(given).is_none() {
+            return Err(match (session.finished, given) {
+                (true, _) => "this attempt is over: start a new instance to try again".into(),
+                (false, None) => "a walk is answered by clicking an element, not null".into(),
+                (false, Some(_)) => "a do-it exercise is answered in the tables, then Check".into(),
+            });
+        }
+        self.report_exercise_step();
+        Ok(())
     }
 
     /// Queues `edgewise:exercisestep`, and `edgewise:score` once the
@@ -218,7 +236,19 @@ impl EdgewiseApp {
             if state.step == 1 { "" } else { "s" }
         ));
         let walk = state.operation.is_none();
-        if walk {
+        if let Some(question) = &state.question {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(egui::RichText::new(format!("Now: {question}")).monospace());
+                if ui
+                    .button("null")
+                    .on_hover_text("The lookup gives no element")
+                    .clicked()
+                {
+                    command = Some(Command::AnswerExercise(None));
+                }
+            });
+            ui.weak("Click the element it gives, in the 3D view or in the tables.");
+        } else if walk {
             if !state.finished {
                 ui.weak("Click each element, in the 3D view or in the tables.");
             }

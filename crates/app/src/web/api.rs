@@ -233,6 +233,16 @@ const COMMANDS: &[CommandEntry] = &[
         },
     },
     CommandEntry {
+        name: "answerExercise",
+        call: "answerExercise(kind, id)",
+        read: |call, kind, id| {
+            if kind.is_null() {
+                return Ok(Command::AnswerExercise(None));
+            }
+            Ok(Command::AnswerExercise(Some(read_element(call, kind, id)?)))
+        },
+    },
+    CommandEntry {
         name: "submitExercise",
         call: "submitExercise()",
         read: |_, _, _| Ok(Command::SubmitExercise),

@@ -343,3 +343,29 @@ fn a_walk_with_a_wrong_click_corrected() {
     assert_eq!((exercise.correct, exercise.step), (1, 2));
     harness.snapshot_options("practice-walk-one-corrected", &options());
 }
+
+/// A prediction after one right answer and one wrong: the question the run
+/// asks now, with its null button.
+#[test]
+fn a_prediction_asking_its_third_lookup() {
+    use edgewise_app::command::Command;
+    let Some(mut harness) = harness(egui::vec2(1280.0, 800.0), 1.0) else {
+        return;
+    };
+    let app = harness.state_mut();
+    app.execute(Command::StartExercise {
+        exercise: "predict-vertex-edges-winged-edge".to_owned(),
+        seed: Some(0),
+    })
+    .unwrap();
+    app.execute(Command::AnswerExercise(Some(ElementRef::new(
+        ElementKind::Edge,
+        1,
+    ))))
+    .unwrap();
+    app.execute(Command::AnswerExercise(None)).unwrap();
+    harness.run();
+    let exercise = harness.state().state().exercise.unwrap();
+    assert_eq!((exercise.correct, exercise.step), (1, 2));
+    harness.snapshot_options("practice-predict-third-lookup", &options());
+}
