@@ -278,8 +278,8 @@ impl EdgewiseApp {
                 }
                 let tab = &mut self.tabs[self.active_tab];
                 // An exercise is done by hand: the algorithms wait until it
-                // is left.
-                if tab.practice.is_some() {
+                // is left, but for the run a model answer plays.
+                if tab.practice.is_some() && !tab.run.is_active() {
                     return;
                 }
                 let mesh = tab

@@ -282,7 +282,23 @@ impl EdgewiseApp {
             return;
         }
         let base = crate::platform::page_base();
-        let url = self.share_url(&base);
+        // An open exercise is shared as the exercise: at its instance's
+        // seed, or, ticked, with none, so that each student draws a fresh one.
+        let fresh_id = egui::Id::unique("edgewise share fresh instance");
+        let mut fresh = ctx.data(|d| d.get_temp::<bool>(fresh_id).unwrap_or(false));
+        let exercise = self
+            .tab()
+            .practice
+            .as_ref()
+            .map(|session| (session.exercise.name.clone(), session.instance.seed));
+        let url = match exercise {
+            Some(_) if fresh => {
+                let mut link = self.course_link();
+                link.seed = None;
+                link.to_url_checked(&base)
+            }
+            _ => self.share_url(&base),
+        };
         let mut open = true;
         egui::Window::new("Share this view")
             .open(&mut open)
@@ -297,16 +313,34 @@ impl EdgewiseApp {
                         return;
                     }
                 };
-                ui.label(
-                    "This link opens Edgewise on the same mesh, algorithm step, selection and camera.",
-                );
+                match &exercise {
+                    Some((name, seed)) => {
+                        ui.label(format!(
+                            "Share as an exercise: this link opens {name} at {}.",
+                            if fresh {
+                                "a fresh instance for each student".to_owned()
+                            } else {
+                                format!("seed {seed}, the same instance for everyone")
+                            }
+                        ));
+                        ui.checkbox(&mut fresh, "a fresh instance for each student");
+                    }
+                    None => {
+                        ui.label(
+                            "This link opens Edgewise on the same mesh, algorithm step, \
+                             selection and camera.",
+                        );
+                    }
+                }
                 let mut shown = url.clone();
+                let name = ui.weak("The link:");
                 ui.add(
                     egui::TextEdit::multiline(&mut shown)
                         .desired_rows(3)
                         .desired_width(f32::INFINITY)
                         .font(egui::TextStyle::Monospace),
-                );
+                )
+                .labelled_by(name.id);
                 ui.horizontal(|ui| {
                     if ui.button("Copy link").clicked() {
                         ui.ctx().copy_text(url.clone());
@@ -316,12 +350,10 @@ impl EdgewiseApp {
                         let mut embed = self.course_link();
                         embed.embed = true;
                         embed.tables = Some(self.share_embed_tables);
-                        let snippet = embed
-                            .to_url_checked(&base)
-                            .map(|url| {
-                                let size = self.embed_size(self.share_embed_tables);
-                                course_link::embed_snippet(&url, size, &self.embed_title())
-                            });
+                        let snippet = embed.to_url_checked(&base).map(|url| {
+                            let size = self.embed_size(self.share_embed_tables);
+                            course_link::embed_snippet(&url, size, &self.embed_title())
+                        });
                         match snippet {
                             Ok(snippet) => {
                                 ui.ctx().copy_text(snippet);
@@ -337,6 +369,7 @@ impl EdgewiseApp {
                     ui.weak(status.as_str());
                 }
             });
+        ctx.data_mut(|d| d.insert_temp(fresh_id, fresh));
         if !open {
             self.share_status = None;
         }

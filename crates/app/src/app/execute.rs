@@ -96,6 +96,8 @@ impl EdgewiseApp {
         };
         let what = match command {
             Command::Edit { .. } => "the library's operations",
+            // Once the model answer is shown, its run may be stepped.
+            Command::RunAlgorithm { .. } if session.model_answer_shown => return Ok(()),
             Command::RunAlgorithm { .. } => "algorithms",
             Command::SetStructure(structure) if *structure != session.exercise.structure => {
                 "another structure"

@@ -5,8 +5,9 @@
 //! feedback; the embed protocol reports each graded step and the score.
 
 use edgewise_core::schema::ElementKind;
+use edgewise_model::algorithm::session::Argument;
 use edgewise_model::document::Document;
-use edgewise_model::practice::{Exercise, Session, catalog};
+use edgewise_model::practice::{Exercise, Session, Task, catalog};
 
 use super::EdgewiseApp;
 use crate::command::{Command, CommandError};
@@ -146,8 +147,29 @@ impl EdgewiseApp {
         let answer = session.model_answer().map_err(|e| e.to_string())?;
         let tab = self.tab_mut();
         if walk {
-            // A walk's model answer is its marks, listed on the card.
+            // A walk's or a prediction's model answer is the run itself,
+            // traced from the instance's inputs, below the card.
             self.report_exercise_step();
+            let traced =
+                self.tab()
+                    .practice
+                    .as_ref()
+                    .and_then(|session| match &session.instance.task {
+                        Task::Walk {
+                            algorithm, args, ..
+                        }
+                        | Task::Predict {
+                            algorithm, args, ..
+                        } => Some((algorithm.clone(), args.clone())),
+                        Task::DoIt { .. } => None,
+                    });
+            if let Some((algorithm, args)) = traced {
+                let args: Vec<(String, Argument)> = args
+                    .into_iter()
+                    .map(|(name, element)| (name, Argument::Number(f64::from(element.id))))
+                    .collect();
+                self.start_algorithm(&algorithm, &args)?;
+            }
             return Ok(());
         }
         if let Some(document) = &mut tab.document {

@@ -344,6 +344,16 @@ fn a_walk_is_clicked_through_selections() {
         feedback.contains("Not edge 2: the walk marks edge 1 next"),
         "{feedback}"
     );
+
+    // The model answer is the run itself, traced from the same vertex, to
+    // step through.
+    run(&mut harness, Command::ShowModelAnswer);
+    assert!(exercise(&harness).model_answer_shown);
+    let trace = harness.state().state().trace.expect("the walk's run");
+    assert_eq!(trace.algorithm, "vertexAdjacentEdge");
+    run(&mut harness, Command::Goto(usize::MAX));
+    let marked = harness.state().state().trace.expect("still running").marked;
+    assert_eq!(marked.len(), 3, "{marked:?}");
 }
 
 /// A prediction answered through the card's commands and selections: the
@@ -394,5 +404,36 @@ fn a_prediction_is_answered_lookup_by_lookup() {
             .state_mut()
             .execute(Command::AnswerExercise(None))
             .is_err()
+    );
+}
+
+/// Share while an exercise is open offers it as an exercise: at its seed,
+/// or, ticked, with none, so that each student draws a fresh instance.
+#[test]
+fn share_offers_the_exercise_with_or_without_its_seed() {
+    use egui_kittest::kittest::Queryable as _;
+    let mut harness = support::harness();
+    start(&mut harness, "kef-half-edge", 12);
+    harness.get_by_label("Share…").click();
+    harness.run();
+    let shown = |harness: &App| {
+        harness
+            .get_by_role(egui::accesskit::Role::MultilineTextInput)
+            .value()
+            .unwrap_or_default()
+    };
+    let link = shown(&harness);
+    assert!(
+        link.contains("exercise=kef-half-edge") && link.contains("seed=12"),
+        "{link}"
+    );
+    harness
+        .get_by_label("a fresh instance for each student")
+        .click();
+    harness.run();
+    let link = shown(&harness);
+    assert!(
+        link.contains("exercise=kef-half-edge") && !link.contains("seed="),
+        "{link}"
     );
 }

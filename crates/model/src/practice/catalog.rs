@@ -43,6 +43,7 @@ pub const SHIPPED: &[Shipped] = shipped![
     "walk-boundary-loop-half-edge",
     "walk-face-loop-half-edge",
     "walk-face-loop-winged-edge",
+    "walk-face-vertices-by-variable-half-edge",
     "walk-vertex-edges-half-edge",
     "walk-vertex-edges-winged-edge",
     "walk-vertex-neighbours-winged-edge",

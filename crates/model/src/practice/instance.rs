@@ -11,7 +11,7 @@ use edgewise_core::schema::{ElementKind, ElementRef};
 
 use super::exercise::{Exercise, ExerciseError, TaskSpec};
 use super::seed::Seeded;
-use super::walk::{Expected, Judged, Order, Prediction};
+use super::walk::{Expected, Judged, Order, Prediction, Visit};
 
 /// At most this many candidates are tried before a draw gives up: enough
 /// for every shipped mesh, and bounded on a hostile one.
@@ -29,6 +29,8 @@ pub enum Task {
         args: Vec<(String, ElementRef)>,
         expected: Vec<ElementRef>,
         order: Order,
+        /// The variable whose values are walked; `None`: the marks.
+        variable: Option<String>,
     },
     /// Say what each of `lookups` gives, in the run's order.
     Predict {
@@ -47,11 +49,16 @@ impl Task {
                 algorithm,
                 args,
                 order,
+                variable,
                 ..
             } => {
+                let what = variable.as_ref().map_or_else(
+                    || "element it marks".to_owned(),
+                    |name| format!("element its variable {name} holds"),
+                );
                 let how = match order {
-                    Order::Sequence => "in order, each element it marks",
-                    Order::Set => "in any order, every element it marks",
+                    Order::Sequence => format!("in order, each {what}"),
+                    Order::Set => format!("in any order, every {what}"),
                 };
                 return format!(
                     "Walk {algorithm} from {}: click, {how}.",
@@ -161,6 +168,10 @@ impl Exercise {
                         algorithm,
                         args,
                         expected,
+                        variable: match &walk.visit {
+                            Visit::Marks => None,
+                            Visit::Variable(_, name) => Some(name.clone()),
+                        },
                         order: match judged {
                             Judged::Marks(order) => *order,
                             Judged::Lookups(_) => Order::Sequence,

@@ -122,7 +122,9 @@ impl Session {
             return Ok(self.last.insert(outcome));
         }
         let outcome = self.exercise.grade(&self.instance, answer)?;
-        if outcome.passed || (!self.attempts_left() && self.exercise.feedback != Feedback::Live) {
+        // With feedback at the end, the one Check is the end.
+        let last_check = !self.attempts_left() && self.exercise.feedback != Feedback::Live;
+        if outcome.passed || last_check || self.exercise.feedback == Feedback::AtEnd {
             self.finished = true;
         }
         Ok(self.last.insert(outcome))
@@ -310,7 +312,11 @@ impl Session {
             }
         };
         let found = self.clicks.found.clone();
-        let last = self.last.as_ref();
+        // Feedback at the end shows nothing of a grade before the end.
+        let last = self
+            .last
+            .as_ref()
+            .filter(|_| self.finished || self.exercise.feedback != Feedback::AtEnd);
         ExerciseState {
             name: self.exercise.name.clone(),
             title: self.exercise.title.clone(),

@@ -180,6 +180,14 @@ fn a_bad_exercise_file_is_refused_with_its_place() {
             "bad.toml:2:14: invalid basic string",
         ),
         (
+            GOOD.replace("kind = \"do-it\"", "kind = \"walk\"").replace(
+                "[do-it]\noperation = \"flip-edge\"",
+                "[walk]\nalgorithm = \"faceAdjacentVertex\"\nvisit = \"variable q\"",
+            ),
+            "bad.toml:10:9: visit `variable q` is not `marks` or `variable NAME` naming one of \
+             `faceAdjacentVertex`'s element variables",
+        ),
+        (
             GOOD.replace("[do-it]\noperation = \"flip-edge\"\n", ""),
             "bad.toml: a do-it exercise needs a [do-it] table",
         ),
@@ -235,4 +243,42 @@ fn a_walk_is_graded_click_by_click() {
     );
     assert_eq!(state.passed, Some(false));
     assert_eq!(state.score as usize, expected.len() - 1);
+}
+
+/// Feedback at the end: a walk's clicks say nothing until the last, and
+/// a do-it exercise's one Check ends it.
+#[test]
+fn feedback_at_the_end_waits_for_the_end() {
+    let walk = catalog::find("walk-vertex-edges-winged-edge")
+        .expect("shipped")
+        .expect("reads");
+    let text = walk
+        .text
+        .replace("feedback = \"live\"", "feedback = \"at-end\"");
+    let exercise = Exercise::parse("at-end.toml", &text).expect("reads");
+    let mut session = super::Session::start(exercise, 0).expect("starts");
+    let Task::Walk { expected, .. } = session.instance.task.clone() else {
+        panic!("a walk");
+    };
+    session.click(expected[0]);
+    let state = session.state();
+    assert_eq!((state.passed, state.feedback.as_deref()), (None, None));
+    for &element in &expected[1..] {
+        session.click(element);
+    }
+    assert_eq!(session.state().passed, Some(true));
+
+    let flip = catalog::find("flip-edge-half-edge")
+        .expect("shipped")
+        .expect("reads");
+    let text = flip
+        .text
+        .replace("feedback = \"on-check\"", "feedback = \"at-end\"");
+    let exercise = Exercise::parse("at-end.toml", &text).expect("reads");
+    let mut session = super::Session::start(exercise, 0).expect("starts");
+    let start = session.start_mesh().clone();
+    session.check(&start).expect("grades");
+    let state = session.state();
+    assert!(state.finished, "one Check ends it");
+    assert_eq!(state.passed, Some(false));
 }

@@ -50,6 +50,17 @@ pub(super) struct WalkFile {
     order: Option<Spanned<String>>,
     #[serde(default)]
     lines: Option<Spanned<Vec<u32>>>,
+    #[serde(default)]
+    visit: Option<Spanned<String>>,
+}
+
+/// What a walk follows: the algorithm's marks, or the elements one of its
+/// variables holds in turn.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Visit {
+    Marks,
+    /// The variable's number in the algorithm (parameters first) and name.
+    Variable(usize, String),
 }
 
 /// What is judged of the trace.
@@ -96,6 +107,7 @@ pub struct Walk {
     pub algorithm: Arc<Algorithm>,
     pub args: Option<Vec<(String, u32)>>,
     pub judged: Judged,
+    pub visit: Visit,
 }
 
 impl Walk {
@@ -174,10 +186,47 @@ impl Walk {
                 ));
             }
         };
+        let visit = match file
+            .visit
+            .as_ref()
+            .map(|v| (v.get_ref().as_str(), v.span()))
+        {
+            None | Some(("marks", _)) => Visit::Marks,
+            Some((_, span)) if predict => {
+                return Err(at.error(
+                    Some(span),
+                    "`visit` is for walks; a prediction asks lookups",
+                ));
+            }
+            Some((text, span)) => {
+                let name = text
+                    .strip_prefix("variable ")
+                    .map(str::trim)
+                    .unwrap_or_default();
+                let found = algorithm
+                    .variables
+                    .iter()
+                    .position(|v| v.name == name && element_kind(&v.ty).is_some());
+                match found {
+                    Some(index) => Visit::Variable(index, name.to_owned()),
+                    None => {
+                        return Err(at.error(
+                            Some(span),
+                            format!(
+                                "visit `{text}` is not `marks` or `variable NAME` naming one of \
+                                 `{}`'s element variables",
+                                algorithm.name
+                            ),
+                        ));
+                    }
+                }
+            }
+        };
         Ok(Self {
             algorithm,
             args,
             judged,
+            visit,
         })
     }
 
@@ -265,9 +314,14 @@ impl Walk {
         if let Some(error) = trace.outcome().error() {
             return Err(error.to_string());
         }
-        let lines = match &self.judged {
-            Judged::Marks(_) => return Ok(Expected::Marks(trace.marked().collect())),
-            Judged::Lookups(lines) => lines,
+        let lines = match (&self.judged, &self.visit) {
+            (Judged::Marks(_), Visit::Marks) => {
+                return Ok(Expected::Marks(trace.marked().collect()));
+            }
+            (Judged::Marks(_), Visit::Variable(variable, _)) => {
+                return Ok(Expected::Marks(held(&trace, *variable)));
+            }
+            (Judged::Lookups(lines), _) => lines,
         };
         let structure = mesh.structure();
         let lookups = (0..trace.len())
@@ -300,6 +354,28 @@ impl Walk {
             .collect();
         Ok(Expected::Lookups(lookups))
     }
+}
+
+/// The elements variable number `variable` of the started algorithm holds
+/// in turn (a value assigned again in a row counts once).
+fn held(trace: &lang::Trace, variable: usize) -> Vec<ElementRef> {
+    let mut held: Vec<ElementRef> = Vec::new();
+    for index in 0..trace.len() {
+        if trace.depth(index) != Some(0) {
+            continue;
+        }
+        let Some(step) = trace.step(index) else {
+            continue;
+        };
+        if let StepKind::Assign { variable: v, value } = step.kind
+            && v == variable
+            && let Some(element) = value.element()
+            && held.last() != Some(&element)
+        {
+            held.push(element);
+        }
+    }
+    held
 }
 
 /// The table an input of type `ty` names, if it is an element.
