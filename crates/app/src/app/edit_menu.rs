@@ -309,23 +309,34 @@ impl EdgewiseApp {
     /// The library's traced version of an entry, with its ids as the
     /// algorithm's arguments in order (MEV's one edge given twice).
     fn traced(&self, entry: &MenuEntry, structure: Structure) -> Result<Command, String> {
-        let name = entry.operation.algorithm();
+        let (name, args) = self.traced_operation(entry.operation, &entry.ids, structure)?;
+        Ok(Command::RunAlgorithm { name, args })
+    }
+
+    /// The library algorithm that traces `operation` and its inputs for
+    /// `ids`: what the edit menu's trace button and a do-it exercise's
+    /// model answer run.
+    pub(super) fn traced_operation(
+        &self,
+        operation: Operation,
+        ids: &[u32],
+        structure: Structure,
+    ) -> Result<(String, Vec<(String, Argument)>), String> {
+        let name = operation.algorithm();
         let algorithm = self
             .algorithms
             .find(name, structure)
             .map_err(|error| error.to_string())?;
-        let mut ids = entry.ids.clone();
-        if entry.operation == Operation::Mev && ids.len() == 2 {
+        let mut ids = ids.to_vec();
+        if operation == Operation::Mev && ids.len() == 2 {
             ids.push(ids[1]);
         }
-        Ok(Command::RunAlgorithm {
-            name: name.to_owned(),
-            args: algorithm
-                .params()
-                .zip(ids)
-                .map(|(param, id)| (param.name.clone(), Argument::Number(f64::from(id))))
-                .collect(),
-        })
+        let args = algorithm
+            .params()
+            .zip(ids)
+            .map(|(param, id)| (param.name.clone(), Argument::Number(f64::from(id))))
+            .collect();
+        Ok((name.to_owned(), args))
     }
 }
 

@@ -140,50 +140,57 @@ impl EdgewiseApp {
         self.embed_events.extend(score);
     }
 
-    /// Shows the library's result, undoably; the attempt scores 0.
+    /// The model answer, which scores the attempt 0: the library's traced
+    /// run, below the card, to step through. A do-it exercise's traced
+    /// operation starts from the instance's tables (the student's writes
+    /// undoably put aside); a walk or a prediction runs its algorithm from
+    /// the instance's inputs.
     pub(crate) fn show_model_answer(&mut self) -> Result<(), CommandError> {
         let session = self.practice()?;
-        let walk = session.state().operation.is_none();
-        let answer = session.model_answer().map_err(|e| e.to_string())?;
-        let tab = self.tab_mut();
-        if walk {
-            // A walk's or a prediction's model answer is the run itself,
-            // traced from the instance's inputs, below the card.
-            self.report_exercise_step();
-            let traced =
-                self.tab()
-                    .practice
-                    .as_ref()
-                    .and_then(|session| match &session.instance.task {
-                        Task::Walk {
-                            algorithm, args, ..
-                        }
-                        | Task::Predict {
-                            algorithm, args, ..
-                        } => Some((algorithm.clone(), args.clone())),
-                        Task::DoIt { .. } => None,
-                    });
-            if let Some((algorithm, args)) = traced {
-                let args: Vec<(String, Argument)> = args
+        session.model_answer().map_err(|e| e.to_string())?;
+        let structure = session.exercise.structure;
+        let start = session.start_mesh().clone();
+        let task = session.instance.task.clone();
+        let (name, args) = match task {
+            Task::DoIt { operation, ids } => {
+                self.restore_instance(start);
+                self.traced_operation(operation, &ids, structure)?
+            }
+            Task::Walk {
+                algorithm, args, ..
+            }
+            | Task::Predict {
+                algorithm, args, ..
+            } => {
+                let args = args
                     .into_iter()
                     .map(|(name, element)| (name, Argument::Number(f64::from(element.id))))
                     .collect();
-                self.start_algorithm(&algorithm, &args)?;
+                (algorithm, args)
             }
-            return Ok(());
-        }
-        if let Some(document) = &mut tab.document {
-            let before = document.replace_mesh(answer);
-            tab.history.record(
-                "model answer".to_owned(),
-                crate::history::Kind::Edit,
-                Some(before),
-                false,
-            );
-        }
-        tab.rediagnose();
+        };
         self.report_exercise_step();
-        Ok(())
+        self.start_algorithm(&name, &args)
+    }
+
+    /// Puts the instance's tables back, undoably, if the student changed
+    /// them.
+    fn restore_instance(&mut self, start: edgewise_core::mesh::Mesh) {
+        let tab = self.tab_mut();
+        let Some(document) = &mut tab.document else {
+            return;
+        };
+        if *document.mesh() == start {
+            return;
+        }
+        let before = document.replace_mesh(start);
+        tab.history.record(
+            "the instance again, for the model answer".to_owned(),
+            crate::history::Kind::Edit,
+            Some(before),
+            false,
+        );
+        tab.rediagnose();
     }
 
     /// The next attempt, on a fresh instance where the exercise draws them.

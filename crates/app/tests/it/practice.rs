@@ -196,10 +196,16 @@ fn the_model_answer_scores_zero_and_a_new_instance_follows() {
     let mut harness = support::harness();
     let first = start(&mut harness, "split-edge-winged-edge", 11);
     let _ = harness.state_mut().take_embed_events();
+    // A write of the student's, which the model answer puts aside.
+    run(&mut harness, Command::AddRow(ElementKind::Vertex));
     run(&mut harness, Command::ShowModelAnswer);
     let state = exercise(&harness);
     assert!(state.model_answer_shown && state.finished);
     assert_eq!((state.score, state.passed), (0, Some(false)));
+    // The library's traced split, from the instance, stepped to its end.
+    let trace = harness.state().state().trace.expect("the traced operation");
+    assert_eq!(trace.algorithm, "splitEdge");
+    run(&mut harness, Command::Goto(usize::MAX));
     assert_eq!(
         harness.state().mesh(),
         Some(&model_result_of(&first, &harness))

@@ -86,9 +86,12 @@ async fn start_and_target(browser: &Browser) -> anyhow::Result<(Mesh, Mesh)> {
     let start = format!("window.edgewise.startExercise('{EXERCISE}', {{ seed: {SEED} }})");
     browser.eval_async(&start).await?;
     let before = tables(browser).await?;
+    // The model answer is the library's traced operation: its last
+    // step's tables are the result.
     browser
         .eval_async("window.edgewise.showModelAnswer()")
         .await?;
+    browser.eval_async("window.edgewise.goto(100000)").await?;
     let target = tables(browser).await?;
     browser.eval_async(&start).await?;
     Ok((before, target))
