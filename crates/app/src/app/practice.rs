@@ -69,12 +69,20 @@ impl EdgewiseApp {
 
     /// Grades the tables as they stand (Check).
     pub(crate) fn submit_exercise(&mut self) -> Result<(), CommandError> {
-        let mesh = self.mesh().cloned().ok_or("no mesh is open")?;
-        let session = self.practice()?;
+        let tab = self.tab_mut();
+        let session = tab
+            .practice
+            .as_mut()
+            .ok_or("no exercise is open: start one from the Practice menu")?;
         if session.finished {
             return Err("this attempt is over: start a new instance to try again".into());
         }
-        session.check(&mesh).map_err(|err| err.to_string())?;
+        let mesh = tab
+            .document
+            .as_ref()
+            .map(Document::mesh)
+            .ok_or("no mesh is open")?;
+        session.check(mesh).map_err(|err| err.to_string())?;
         self.report_exercise_step();
         Ok(())
     }
@@ -82,13 +90,11 @@ impl EdgewiseApp {
     /// After a write by hand: grades it at once where the exercise asks for
     /// live feedback.
     pub(crate) fn exercise_written(&mut self) {
-        let Some(mesh) = self.mesh().cloned() else {
+        let tab = self.tab_mut();
+        let (Some(session), Some(document)) = (tab.practice.as_mut(), tab.document.as_ref()) else {
             return;
         };
-        let Some(session) = self.tab_mut().practice.as_mut() else {
-            return;
-        };
-        if session.grades_live() && session.grade_live(&mesh).is_ok() {
+        if session.grades_live() && session.grade_live(document.mesh()).is_ok() {
             self.report_exercise_step();
         }
     }

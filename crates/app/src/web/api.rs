@@ -199,13 +199,7 @@ const COMMANDS: &[CommandEntry] = &[
     CommandEntry {
         name: "addRow",
         call: "addRow(kind)",
-        read: |call, kind, _| {
-            let kind = kind
-                .as_string()
-                .and_then(|k| ElementKind::parse(&k))
-                .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
-            Ok(Command::AddRow(kind))
-        },
+        read: |call, kind, _| Ok(Command::AddRow(read_kind(call, kind)?)),
     },
     CommandEntry {
         name: "deleteRow",
@@ -444,14 +438,18 @@ fn read_set_position(
 
 /// An element named by its kind (`'vertex'`, `'edge'`, `'face'`) and id.
 fn read_element(call: &str, kind: &JsValue, id: &JsValue) -> Result<ElementRef, String> {
-    let kind = kind
-        .as_string()
-        .and_then(|k| ElementKind::parse(&k))
-        .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))?;
+    let kind = read_kind(call, kind)?;
     let id = whole_number(call, "id", id)?;
     let id =
         u32::try_from(id).map_err(|_| format!("{call}: id {id} is larger than any element id"))?;
     Ok(ElementRef::new(kind, id))
+}
+
+/// An element kind: `'vertex'`, `'edge'` or `'face'`.
+fn read_kind(call: &str, kind: &JsValue) -> Result<ElementKind, String> {
+    kind.as_string()
+        .and_then(|k| ElementKind::parse(&k))
+        .ok_or_else(|| expected(call, "kind", "'vertex', 'edge' or 'face'", kind))
 }
 
 /// `answer(kind, id)` for an element, `answer(null)`, `answer(true)` or

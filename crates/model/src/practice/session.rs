@@ -3,7 +3,6 @@
 //! `state().exercise` reports them and the embed protocol sends them.
 
 use edgewise_core::mesh::Mesh;
-use edgewise_core::mesh::operations;
 use serde::Serialize;
 use serde_json::{Value, json};
 
@@ -197,61 +196,44 @@ impl Session {
         }
     }
 
-    /// The library's result of the task, which the app shows as the model
-    /// answer; the attempt then scores 0.
-    pub fn model_answer(&mut self) -> Result<Mesh, ExerciseError> {
+    /// Marks the model answer shown, which ends the attempt with a score of
+    /// 0. The app shows it: a do-it's traced operation, a walk's marks, a
+    /// prediction's lookups (named in the feedback).
+    pub fn model_answer(&mut self) -> Result<(), ExerciseError> {
         if !self.exercise.model_answer {
             return Err(self.error("this exercise does not offer its model answer"));
         }
-        let mut mesh = self.instance.mesh.clone();
-        let Task::DoIt { operation, ids } = &self.instance.task else {
-            // A walk's model answer: every element it marks, found; a
-            // prediction's: what each lookup gives.
-            let mut feedback = "The model answer is shown: this attempt scores 0.".to_owned();
-            match &self.instance.task {
-                Task::Walk { expected, .. } => self.clicks.found.clone_from(expected),
-                Task::Predict { lookups, .. } => {
-                    let structure = self.exercise.structure;
-                    let given: Vec<String> = lookups
-                        .iter()
-                        .map(|l| {
-                            let answer = l.answer.map_or_else(
-                                || "null".to_owned(),
-                                |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
-                            );
-                            format!("{} = {answer}", l.question)
-                        })
-                        .collect();
-                    feedback.push_str(&format!(" The lookups give: {}.", given.join("; ")));
-                }
-                Task::DoIt { .. } => {}
+        let mut feedback = "The model answer is shown: this attempt scores 0.".to_owned();
+        match &self.instance.task {
+            Task::Walk { expected, .. } => self.clicks.found.clone_from(expected),
+            Task::Predict { lookups, .. } => {
+                let structure = self.exercise.structure;
+                let given: Vec<String> = lookups
+                    .iter()
+                    .map(|l| {
+                        let answer = l.answer.map_or_else(
+                            || "null".to_owned(),
+                            |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
+                        );
+                        format!("{} = {answer}", l.question)
+                    })
+                    .collect();
+                feedback.push_str(&format!(" The lookups give: {}.", given.join("; ")));
             }
-            self.model_answer_shown = true;
-            self.finished = true;
-            self.last = Some(Outcome {
-                passed: false,
-                score: 0,
-                max_score: self.max_score(),
-                feedback,
-                element: None,
-                fewest_writes: None,
-            });
-            return Ok(mesh);
-        };
-        operations::apply(&mut mesh, *operation, ids)
-            .map_err(|refusal| self.error(&format!("the instance is refused: {refusal}")))?;
+            Task::DoIt { .. } => {}
+        }
         self.model_answer_shown = true;
         self.finished = true;
         let fewest = self.last.as_ref().and_then(|o| o.fewest_writes);
         self.last = Some(Outcome {
             passed: false,
             score: 0,
-            max_score: self.exercise.points,
-            feedback: "The model answer is shown: this attempt scores 0.".to_owned(),
+            max_score: self.max_score(),
+            feedback,
             element: None,
             fewest_writes: fewest,
         });
-        Ok(mesh)
+        Ok(())
     }
 
     /// The next attempt: a fresh instance where the exercise draws them.
