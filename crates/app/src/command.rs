@@ -136,6 +136,9 @@ pub enum Command {
     StartExercise {
         exercise: String,
         seed: Option<u64>,
+        /// A saved attempt (`exerciseProgress()`) to resume instead: its
+        /// instance, writes and answers.
+        progress: Option<String>,
     },
     /// Answers a walk's next click or a prediction's lookup: an element, or
     /// null (a prediction only). A selection during either does the same.

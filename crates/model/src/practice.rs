@@ -8,6 +8,7 @@
 //!   to and worth doing;
 //! - [`attempt`] grades an answer: a do-it answer by the core's grader
 //!   ([`edgewise_core::mesh::grade`]);
+//! - [`progress`] saves an attempt as short text and brings it back;
 //! - [`session`] is one student's go: attempts, writes, grades and the
 //!   score the embed protocol reports.
 
@@ -16,6 +17,7 @@ pub mod catalog;
 mod error;
 pub mod exercise;
 pub mod instance;
+pub mod progress;
 mod seed;
 pub mod session;
 pub mod walk;
@@ -23,7 +25,8 @@ pub mod walk;
 pub use attempt::Outcome;
 pub use exercise::{Exercise, ExerciseError, Feedback, Kind, TaskSpec};
 pub use instance::{Instance, Task};
-pub use session::{ExerciseState, Session};
+pub use progress::Progress;
+pub use session::{Action, ExerciseState, Session};
 pub use walk::{Click, Order};
 
 #[cfg(test)]

@@ -77,7 +77,7 @@ impl EdgewiseApp {
         link.follow(self, &mut messages);
         match &link.exercise {
             Some(exercise) => {
-                if let Err(message) = self.start_exercise(exercise.as_str(), link.seed) {
+                if let Err(message) = self.start_exercise(exercise.as_str(), link.seed, None) {
                     messages.push(format!("exercise=: {message}"));
                 }
             }

@@ -209,7 +209,11 @@ impl EdgewiseApp {
             Command::SetPosition { vertex, position } => {
                 done(self.tab_mut().set_position(vertex, position))
             }
-            Command::StartExercise { exercise, seed } => done(self.start_exercise(&exercise, seed)),
+            Command::StartExercise {
+                exercise,
+                seed,
+                progress,
+            } => done(self.start_exercise(&exercise, seed, progress.as_deref())),
             Command::AnswerExercise(given) => done(self.answer_exercise(given)),
             Command::SubmitExercise => done(self.submit_exercise()),
             Command::ShowModelAnswer => done(self.show_model_answer()),

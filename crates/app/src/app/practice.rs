@@ -7,7 +7,7 @@
 use edgewise_core::schema::ElementKind;
 use edgewise_model::algorithm::session::Argument;
 use edgewise_model::document::Document;
-use edgewise_model::practice::{Exercise, Session, Task, catalog};
+use edgewise_model::practice::{Exercise, Progress, Session, Task, catalog};
 
 use super::EdgewiseApp;
 use crate::command::{Command, CommandError};
@@ -23,22 +23,50 @@ impl EdgewiseApp {
         &mut self,
         exercise: &str,
         seed: Option<u64>,
+        progress: Option<&str>,
     ) -> Result<(), CommandError> {
         let exercise = read_exercise(exercise)?;
+        if let Some(progress) = progress {
+            let do_it = matches!(exercise.task, edgewise_model::practice::TaskSpec::DoIt(_));
+            let progress = Progress::parse(progress, do_it)
+                .map_err(|err| format!("startExercise options.progress: {err}"))?;
+            let (session, tables) =
+                Session::resume(exercise, &progress).map_err(|err| err.to_string())?;
+            self.open_attempt_at(session, tables);
+            return Ok(());
+        }
         let seed = seed.unwrap_or_else(fresh_seed);
         let session = Session::start(exercise, seed).map_err(|err| err.to_string())?;
         self.open_attempt(session);
         Ok(())
     }
 
+    /// `exerciseProgress()`: the attempt on screen, saved, or `None` when
+    /// no exercise is open.
+    pub fn exercise_progress(&self) -> Option<String> {
+        let tab = self.tab();
+        let session = tab.practice.as_ref()?;
+        let tables = tab
+            .document
+            .as_ref()
+            .map_or(session.start_mesh(), Document::mesh);
+        Some(session.progress(tables).to_string())
+    }
+
     /// Shows the session's instance as the tab's mesh and makes it the
     /// tab's exercise.
     fn open_attempt(&mut self, session: Session) {
+        let tables = session.start_mesh().clone();
+        self.open_attempt_at(session, tables);
+    }
+
+    /// [`Self::open_attempt`] with the tables as the student left them.
+    fn open_attempt_at(&mut self, session: Session, tables: edgewise_core::mesh::Mesh) {
         let name = format!(
             "exercise {} (seed {})",
             session.exercise.name, session.instance.seed
         );
-        let document = Document::from_mesh(&name, session.start_mesh().clone());
+        let document = Document::from_mesh(&name, tables);
         let label = format!("Opening {name}");
         self.show_document(
             document,
@@ -234,6 +262,7 @@ impl EdgewiseApp {
             self.issue(Command::StartExercise {
                 exercise: name.to_owned(),
                 seed: None,
+                progress: None,
             });
         }
     }

@@ -19,7 +19,8 @@ use edgewise_core::{
 
 use super::arguments::{
     MAX_NAME_CHARS, arguments, check_options, expected, is_array, items, option_bool,
-    option_string, option_whole_number, shown, structure_option, text_argument, whole_number,
+    option_string, option_text, option_whole_number, shown, structure_option, text_argument,
+    whole_number,
 };
 use super::{after_a_paint, after_ms, exported_object, with_app};
 use crate::{
@@ -221,9 +222,19 @@ const COMMANDS: &[CommandEntry] = &[
                 exercise,
                 crate::app::practice::MAX_EXERCISE_BYTES,
             )?;
-            check_options(call, options, &["seed"])?;
+            check_options(call, options, &["seed", "progress"])?;
             let seed = option_whole_number(call, options, "seed")?;
-            Ok(Command::StartExercise { exercise, seed })
+            let progress = option_text(call, options, "progress", MAX_PROGRESS_CHARS)?;
+            if seed.is_some() && progress.is_some() {
+                return Err(format!(
+                    "{call}: give options.seed or options.progress, not both (a saved attempt has its seed)"
+                ));
+            }
+            Ok(Command::StartExercise {
+                exercise,
+                seed,
+                progress,
+            })
         },
     },
     CommandEntry {
@@ -294,6 +305,13 @@ const QUERIES: &[QueryEntry] = &[
     QueryEntry {
         name: "state",
         answer: |runner, _, _| json(runner, |app| serde_json::to_string(&app.state())),
+    },
+    QueryEntry {
+        name: "exerciseProgress",
+        answer: |runner, _, _| {
+            with_app(runner, |app| app.exercise_progress())
+                .map(|progress| progress.map_or(JsValue::NULL, |p| JsValue::from_str(&p)))
+        },
     },
     QueryEntry {
         name: "algorithms",
@@ -476,6 +494,10 @@ fn read_answer(call: &'static str, value: &JsValue, id: &JsValue) -> Result<Comm
     };
     Ok(Command::Answer(given))
 }
+
+/// The longest saved attempt `startExercise` takes: SCORM 2004's
+/// `suspend_data` holds 64,000 characters.
+const MAX_PROGRESS_CHARS: usize = 64_000;
 
 /// The most ids an operation takes (MEKR: a face and two vertices).
 const MAX_EDIT_IDS: usize = 3;

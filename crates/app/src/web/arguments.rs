@@ -184,8 +184,18 @@ pub(super) fn option_string(
     options: &JsValue,
     key: &str,
 ) -> Result<Option<String>, String> {
+    option_text(call, options, key, MAX_NAME_CHARS)
+}
+
+/// `options[key]` as a string of at most `max_chars`, if present.
+pub(super) fn option_text(
+    call: &str,
+    options: &JsValue,
+    key: &str,
+    max_chars: usize,
+) -> Result<Option<String>, String> {
     option(call, options, key, |argument, value| {
-        text_argument(call, argument, value, MAX_NAME_CHARS)
+        text_argument(call, argument, value, max_chars)
     })
 }
 

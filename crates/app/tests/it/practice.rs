@@ -7,9 +7,10 @@ use crate::support;
 
 use edgewise_app::{EmbedEvent, command::Command};
 use edgewise_core::mesh::operations::{self, Operation};
-use edgewise_core::mesh::{Edit as _, Mesh, VertexId};
-use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, Storage};
+use edgewise_core::mesh::Mesh;
+use edgewise_core::schema::{ElementKind, ElementRef};
 use edgewise_model::practice::ExerciseState;
+use edgewise_model::practice::progress::{Write, writes_between};
 
 type App = support::AppHarness;
 
@@ -36,58 +37,32 @@ fn start(harness: &mut App, name: &str, seed: u64) -> ExerciseState {
         Command::StartExercise {
             exercise: name.to_owned(),
             seed: Some(seed),
+            progress: None,
         },
     );
     exercise(harness)
 }
 
 /// The writes that turn the app's tables into `target`, as a student
-/// makes them: new rows, positions, every reference that differs, then
-/// deletions.
+/// makes them: the fewest a saved attempt replays.
 fn writes_to(current: &Mesh, target: &Mesh) -> Vec<Command> {
-    let mut writes = Vec::new();
-    for kind in ElementKind::ALL {
-        for _ in current.count(kind)..target.count(kind) {
-            writes.push(Command::AddRow(kind));
-        }
-    }
-    for v in 0..target.count(ElementKind::Vertex) as u32 {
-        let position = target.position(VertexId::new(v));
-        if let Some(p) = position
-            && current.position(VertexId::new(v)) != position
-        {
-            writes.push(Command::SetPosition {
-                vertex: v,
-                position: p.to_array(),
-            });
-        }
-    }
-    for kind in ElementKind::ALL {
-        for id in 0..target.count(kind) as u32 {
-            let row = ElementRef::new(kind, id);
-            if target.deleted_rows().contains(row) {
-                continue;
-            }
-            for entry in Column::table(target.structure(), kind) {
-                if entry.storage != Storage::Stored || entry.column == Column::Position {
-                    continue;
-                }
-                let want = target.reference(row, entry.column).ok().flatten();
-                let now = current.reference(row, entry.column).ok().flatten();
-                if id as usize >= current.count(kind) || want != now {
-                    writes.push(Command::SetCell {
-                        element: row,
-                        column: entry.column.lookup_name().to_owned(),
-                        target: want.map(|t| t.id),
-                    });
-                }
-            }
-        }
-    }
-    for row in target.deleted_rows().iter() {
-        writes.push(Command::DeleteRow(row));
-    }
-    writes
+    writes_between(current, target)
+        .into_iter()
+        .map(|write| match write {
+            Write::AddRow(kind) => Command::AddRow(kind),
+            Write::Reference {
+                element,
+                column,
+                target,
+            } => Command::SetCell {
+                element,
+                column: column.lookup_name().to_owned(),
+                target,
+            },
+            Write::Position { vertex, position } => Command::SetPosition { vertex, position },
+            Write::DeleteRow(row) => Command::DeleteRow(row),
+        })
+        .collect()
 }
 
 /// The library's result of the open exercise's task.
@@ -258,6 +233,7 @@ fn live_feedback_grades_every_write() {
         Command::StartExercise {
             exercise: text,
             seed: Some(2),
+            progress: None,
         },
     );
     let _ = harness.state_mut().take_embed_events();
@@ -442,4 +418,59 @@ fn share_offers_the_exercise_with_or_without_its_seed() {
         link.contains("exercise=kef-half-edge") && !link.contains("seed="),
         "{link}"
     );
+}
+
+/// A saved attempt (`exerciseProgress()`) brings the same instance and the
+/// student's writes back, graded as before; a damaged one is refused with
+/// the reason, and the exercise on screen stays.
+#[test]
+fn a_saved_attempt_resumes_where_it_stopped() {
+    let mut harness = support::harness();
+    let first = start(&mut harness, "split-face-half-edge", 5);
+    let target = model_result(&harness);
+    let current = harness.state().mesh().expect("open").clone();
+    let writes = writes_to(&current, &target);
+    let half = writes.len() / 2;
+    for write in &writes[..half] {
+        run(&mut harness, write.clone());
+    }
+    let tables = harness.state().mesh().expect("open").clone();
+    let saved = harness
+        .state()
+        .exercise_progress()
+        .expect("an exercise is open");
+
+    // Another exercise in between, as a package's other items are.
+    start(&mut harness, "flip-edge-winged-edge", 1);
+    run(
+        &mut harness,
+        Command::StartExercise {
+            exercise: "split-face-half-edge".to_owned(),
+            seed: None,
+            progress: Some(saved.clone()),
+        },
+    );
+    let resumed = exercise(&harness);
+    assert_eq!((resumed.seed, resumed.step), (first.seed, half));
+    assert_eq!(harness.state().mesh(), Some(&tables));
+    for write in &writes[half..] {
+        run(&mut harness, write.clone());
+    }
+    run(&mut harness, Command::SubmitExercise);
+    assert_eq!(exercise(&harness).passed, Some(true));
+
+    let damaged = saved.replacen("1:", "1:x", 1);
+    let err = harness
+        .state_mut()
+        .execute(Command::StartExercise {
+            exercise: "split-face-half-edge".to_owned(),
+            seed: None,
+            progress: Some(damaged),
+        })
+        .expect_err("damaged");
+    assert!(
+        err.contains("options.progress") && err.contains("seed"),
+        "{err}"
+    );
+    assert_eq!(exercise(&harness).passed, Some(true));
 }

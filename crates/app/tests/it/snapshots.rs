@@ -301,6 +301,7 @@ fn a_flip_exercise_checked_with_one_wrong_cell() {
     app.execute(Command::StartExercise {
         exercise: "flip-edge-half-edge".to_owned(),
         seed: Some(3),
+        progress: None,
     })
     .unwrap();
     // Half-edge 16's end moved to the flip's new end; the rest not yet done.
@@ -329,6 +330,7 @@ fn a_walk_with_a_wrong_click_corrected() {
     app.execute(Command::StartExercise {
         exercise: "walk-vertex-edges-winged-edge".to_owned(),
         seed: Some(0),
+        progress: None,
     })
     .unwrap();
     for id in [1, 2] {
@@ -356,6 +358,7 @@ fn a_prediction_asking_its_third_lookup() {
     app.execute(Command::StartExercise {
         exercise: "predict-vertex-edges-winged-edge".to_owned(),
         seed: Some(0),
+        progress: None,
     })
     .unwrap();
     app.execute(Command::AnswerExercise(Some(ElementRef::new(

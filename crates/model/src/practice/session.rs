@@ -32,6 +32,19 @@ pub struct Session {
     pub finished: bool,
     /// A walk's clicks so far.
     pub clicks: Clicks,
+    /// A walk's or a prediction's answers this attempt, in order (`None`:
+    /// null), which a saved attempt replays.
+    pub answers: Vec<Option<edgewise_core::schema::ElementRef>>,
+    /// The last graded action, as a gradebook records it.
+    pub last_action: Option<Action>,
+}
+
+/// One graded action (a Check, a live grade, a click, an answer): what the
+/// student gave and whether it was right, for an LMS's interaction record.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Action {
+    pub response: String,
+    pub correct: bool,
 }
 
 /// `state().exercise`: the exercise as a script or a test reads it.
@@ -69,6 +82,10 @@ pub struct ExerciseState {
     pub model_answer_offered: bool,
     pub model_answer_shown: bool,
     pub finished: bool,
+    /// The last graded action's response and result; the result is null
+    /// while feedback waits for the end.
+    pub response: Option<String>,
+    pub response_correct: Option<bool>,
 }
 
 impl Session {
@@ -85,6 +102,8 @@ impl Session {
             model_answer_shown: false,
             finished: false,
             clicks: Clicks::default(),
+            answers: Vec::new(),
+            last_action: None,
         })
     }
 
@@ -121,6 +140,7 @@ impl Session {
             return Ok(self.last.insert(outcome));
         }
         let outcome = self.exercise.grade(&self.instance, answer)?;
+        self.graded_tables(outcome.passed);
         // With feedback at the end, the one Check is the end.
         let last_check = !self.attempts_left() && self.exercise.feedback != Feedback::Live;
         if outcome.passed || last_check || self.exercise.feedback == Feedback::AtEnd {
@@ -133,6 +153,7 @@ impl Session {
     /// on a pass.
     pub fn grade_live(&mut self, answer: &Mesh) -> Result<&Outcome, ExerciseError> {
         let outcome = self.exercise.grade(&self.instance, answer)?;
+        self.graded_tables(outcome.passed);
         if outcome.passed {
             self.finished = true;
         }
@@ -170,6 +191,14 @@ impl Session {
             }
             _ => return None,
         };
+        self.answers.push(given);
+        self.last_action = Some(Action {
+            response: given.map_or_else(
+                || "null".to_owned(),
+                |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
+            ),
+            correct: click.right,
+        });
         let (total, progress) = self.steps()?;
         let done = progress >= total;
         let mut outcome = steps_outcome(&self.clicks, total, progress, None);
@@ -179,6 +208,15 @@ impl Session {
         self.finished = done;
         self.last = Some(outcome);
         Some(click)
+    }
+
+    /// Records a grade of the tables as the last action.
+    pub(super) fn graded_tables(&mut self, passed: bool) {
+        let s = if self.writes == 1 { "" } else { "s" };
+        self.last_action = Some(Action {
+            response: format!("the tables after {} write{s}", self.writes),
+            correct: passed,
+        });
     }
 
     /// [`Self::answer`] with an element: a click.
@@ -241,23 +279,36 @@ impl Session {
         if !self.attempts_left() {
             return Err(self.error(&format!("all {} attempts are used", self.exercise.attempts)));
         }
-        let attempt = self.attempt + 1;
-        let seed = if self.exercise.fresh_instance {
-            attempt_seed(self.base_seed, attempt)
-        } else {
-            self.base_seed
-        };
-        self.instance = self.exercise.instance(seed)?;
+        self.go_to_attempt(self.attempt + 1)
+    }
+
+    /// Starts attempt `attempt` afresh, on its instance.
+    pub(super) fn go_to_attempt(&mut self, attempt: u32) -> Result<(), ExerciseError> {
+        if attempt != self.attempt {
+            let seed = if self.exercise.fresh_instance {
+                attempt_seed(self.base_seed, attempt)
+            } else {
+                self.base_seed
+            };
+            self.instance = self.exercise.instance(seed)?;
+        }
         self.attempt = attempt;
         self.writes = 0;
         self.last = None;
         self.model_answer_shown = false;
         self.finished = false;
         self.clicks = Clicks::default();
+        self.answers.clear();
+        self.last_action = None;
         Ok(())
     }
 
-    fn error(&self, message: &str) -> ExerciseError {
+    /// The seed the first attempt drew from.
+    pub fn base_seed(&self) -> u64 {
+        self.base_seed
+    }
+
+    pub(super) fn error(&self, message: &str) -> ExerciseError {
         ExerciseError {
             source: self.exercise.name.clone(),
             at: None,
@@ -324,6 +375,12 @@ impl Session {
             model_answer_offered: self.exercise.model_answer,
             model_answer_shown: self.model_answer_shown,
             finished: self.finished,
+            response: self.last_action.as_ref().map(|a| a.response.clone()),
+            response_correct: self
+                .last_action
+                .as_ref()
+                .filter(|_| self.finished || self.exercise.feedback != Feedback::AtEnd)
+                .map(|a| a.correct),
         }
     }
 
