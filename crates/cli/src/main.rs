@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
 
+mod package;
 mod practice;
 mod render;
 
@@ -213,6 +214,37 @@ enum Command {
         #[command(subcommand)]
         command: practice::PracticeCommand,
     },
+    /// Make a SCORM package for an LMS: exercises it scores and views it
+    /// shows, with the release app inside (docs/lms.md).
+    #[command(after_help = PACKAGE_EXAMPLES)]
+    Package {
+        /// The package to write (.zip).
+        output: PathBuf,
+        /// The SCORM version: 1.2, or 2004 (4th edition).
+        #[arg(long, value_name = "1.2|2004")]
+        scorm: String,
+        /// A shipped exercise's name or an exercise file (.toml); repeat for
+        /// more.
+        #[arg(long = "exercise", value_name = "NAME|FILE")]
+        exercises: Vec<String>,
+        /// A course link to show as a view with no score; repeat for more.
+        #[arg(long = "link", value_name = "URL")]
+        links: Vec<String>,
+        /// The title the LMS lists.
+        #[arg(long, default_value = "Edgewise practice")]
+        title: String,
+        /// The share of the total, in percent, that passes.
+        #[arg(
+            long,
+            value_name = "N",
+            default_value = "80",
+            allow_hyphen_values = true
+        )]
+        pass_mark: String,
+        /// The release app to put inside (what `cargo xtask build-web` makes).
+        #[arg(long, value_name = "DIR", default_value = "dist")]
+        app: PathBuf,
+    },
     /// Check an algorithm file: print every error and exit 1 if there is any.
     CheckAlg {
         /// The algorithm file.
@@ -231,6 +263,10 @@ const RENDER_EXAMPLES: &str = "Examples:
   edgewise render tetra.svg meshes/tetrahedron.wtb --select e0
   edgewise render handout.pdf meshes/tetrahedron.wtb --run vertexAdjacentEdge --arg v=1
   edgewise render step4.svg --link 'https://example.edu/edgewise/?sample=cube&algorithm=vertexAdjacentEdge&args=v:0&step=4'";
+
+const PACKAGE_EXAMPLES: &str = "Examples:
+  edgewise package week3.zip --scorm 2004 --exercise split-edge-half-edge --exercise walk-face-loop-half-edge --pass-mark 70
+  edgewise package tour.zip --scorm 1.2 --exercise my-exercise.toml --link 'https://example.edu/edgewise/?sample=cube' --title 'Week 3'";
 
 /// How a command ended, mapped to the exit code.
 enum Failure {
@@ -309,6 +345,23 @@ fn main() -> ExitCode {
             dark,
         }),
         Command::Practice { command } => practice::run(command),
+        Command::Package {
+            output,
+            scorm,
+            exercises,
+            links,
+            title,
+            pass_mark,
+            app,
+        } => package::package(&package::Request {
+            output: &output,
+            scorm: &scorm,
+            exercises: &exercises,
+            links: &links,
+            title: &title,
+            pass_mark: &pass_mark,
+            app: &app,
+        }),
         Command::CheckAlg { algfile } => check_alg(&algfile),
         Command::Disasm { algfile, name } => disasm(&algfile, name.as_deref()),
     };

@@ -107,7 +107,8 @@ fn list(json: bool) {
 }
 
 /// A shipped exercise by name, or an exercise file by path.
-fn exercise(name: &str) -> Result<Exercise, Failure> {
+/// A shipped exercise by name, or an exercise file, read.
+pub fn exercise(name: &str) -> Result<Exercise, Failure> {
     let read = match catalog::find(name) {
         Some(read) => read,
         None if name.ends_with(".toml") || Path::new(name).exists() => {

@@ -2,7 +2,7 @@
 //! selection ([`document`]), an algorithm's run and what each of its steps
 //! shows ([`algorithm`]), the colours a moment is painted in ([`paint`],
 //! [`theme`], [`settings`]), course links ([`course_link`]) and the built-in
-//! samples. The app draws these with egui and the renderer; `edgewise
+//! samples, and the SCORM packages an LMS imports ([`package`]). The app draws these with egui and the renderer; `edgewise
 //! render` writes their pictures with no window ([`still`]).
 
 pub mod algorithm;
@@ -10,6 +10,7 @@ pub mod course_link;
 pub mod document;
 pub mod message;
 pub mod moment;
+pub mod package;
 pub mod paint;
 pub mod practice;
 pub mod samples;

@@ -6,8 +6,8 @@
 use crate::support;
 
 use edgewise_app::{EmbedEvent, command::Command};
-use edgewise_core::mesh::operations::{self, Operation};
 use edgewise_core::mesh::Mesh;
+use edgewise_core::mesh::operations::{self, Operation};
 use edgewise_core::schema::{ElementKind, ElementRef};
 use edgewise_model::practice::ExerciseState;
 use edgewise_model::practice::progress::{Write, writes_between};

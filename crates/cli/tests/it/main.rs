@@ -7,5 +7,6 @@ mod common;
 
 mod cli;
 mod hostile;
+mod package;
 mod practice;
 mod render;
