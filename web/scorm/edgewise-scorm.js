@@ -189,7 +189,7 @@
       set(CMI.score + 'min', 0);
       set(CMI.score + 'max', 100);
       set(CMI.score + 'raw', score);
-      if (!v12) set('cmi.score.scaled', score / 100);
+      if (!v12) set('cmi.score.scaled', Math.round(score * 100) / 10000);
     }
     if (v12) {
       let status = 'incomplete';
@@ -216,7 +216,7 @@
     interactions += 1;
     const at = `cmi.interactions.${n}.`;
     const now = new Date();
-    const id = `${item.name.replace(/[^A-Za-z0-9_-]/g, '-')}-${detail.attempt}-${detail.step}`;
+    const id = `${item.name}-${detail.attempt}-${detail.step}`;
     const result = detail.responseCorrect === null || detail.responseCorrect === undefined
       ? 'neutral' : detail.responseCorrect ? 'correct' : (v12 ? 'wrong' : 'incorrect');
     const response = String(detail.response).slice(0, RESPONSE_CHARS);
@@ -299,12 +299,14 @@
       const text = await exerciseText(item);
       if (mine !== generation) return;
       try {
-        await callApp('startExercise', text, item.progress ? { progress: item.progress } : {});
+        const options = { name: item.name };
+        if (item.progress) options.progress = item.progress;
+        await callApp('startExercise', text, options);
       } catch (err) {
         // A saved attempt the app cannot bring back: a fresh instance.
         console.warn(`Edgewise: "${item.title}" starts afresh: ${err.message}`);
         item.progress = '';
-        await callApp('startExercise', text, {});
+        await callApp('startExercise', text, { name: item.name });
       }
       await keepProgress();
       save(true);

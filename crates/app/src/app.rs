@@ -41,6 +41,7 @@ pub mod files;
 pub mod first_visit;
 mod focus_ring;
 mod open_dialog;
+mod package;
 mod pane;
 mod pending;
 mod pictures;
@@ -118,6 +119,9 @@ pub struct EdgewiseApp {
     embed: Option<embed::Embed>,
     show_share: bool,
     share_status: Option<String>,
+    /// What the last SCORM package download came to, once it has (it is
+    /// built asynchronously in the browser).
+    package_status: std::rc::Rc<std::cell::RefCell<Option<String>>>,
     /// Whether "Copy embed code" includes the tables.
     share_embed_tables: bool,
     show_obj_editor: bool,
@@ -203,6 +207,7 @@ impl EdgewiseApp {
             embed: None,
             show_share: false,
             share_status: None,
+            package_status: std::rc::Rc::default(),
             share_embed_tables: false,
             show_obj_editor: false,
             ctx: None,

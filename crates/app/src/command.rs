@@ -139,6 +139,9 @@ pub enum Command {
         /// A saved attempt (`exerciseProgress()`) to resume instead: its
         /// instance, writes and answers.
         progress: Option<String>,
+        /// What scores and messages call an exercise given as text (a
+        /// package's file stem); `exercise` without it.
+        name: Option<String>,
     },
     /// Answers a walk's next click or a prediction's lookup: an element, or
     /// null (a prediction only). A selection during either does the same.

@@ -6,7 +6,7 @@
 //!
 //! - `browser.rs`: a file picker and dropped files read asynchronously into
 //!   an inbox the app empties each frame, downloads through a Blob URL, local
-//!   storage, the Fullscreen API.
+//!   storage, the Fullscreen API, SCORM packages of the page's own files.
 //! - `desktop.rs`: a typed path (there is no native file dialog, which keeps
 //!   the desktop build free of GTK and D-Bus), files written to the current
 //!   directory, settings kept for the session only.
@@ -18,15 +18,16 @@ mod desktop;
 
 #[cfg(target_arch = "wasm32")]
 pub use browser::{
-    CANVAS_ID, FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
-    js_error_text, left_fullscreen, load_settings, page_base, set_fullscreen,
-    show_algorithms_to_readers, show_run_to_readers, show_to_readers, store_settings,
+    CANVAS_ID, FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events,
+    download_package, fetch_bytes, fit_canvas, js_error_text, left_fullscreen, load_settings,
+    package_zip, page_base, set_fullscreen, show_algorithms_to_readers, show_run_to_readers,
+    show_to_readers, store_settings,
 };
 #[cfg(not(target_arch = "wasm32"))]
 pub use desktop::{
-    FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, fit_canvas,
-    left_fullscreen, load_settings, page_base, set_fullscreen, show_algorithms_to_readers,
-    show_run_to_readers, show_to_readers, store_settings,
+    FileIo, READER_COPY, change_for_readers, coarse_pointer, deliver_events, download_package,
+    fit_canvas, left_fullscreen, load_settings, page_base, set_fullscreen,
+    show_algorithms_to_readers, show_run_to_readers, show_to_readers, store_settings,
 };
 
 /// A file read from disk, waiting to be opened.

@@ -11,8 +11,6 @@ mod recording;
 
 use eframe::wasm_bindgen::{JsCast as _, JsValue};
 
-use edgewise_core::formats::MAX_FILE_BYTES;
-
 use crate::{
     EdgewiseApp,
     files::{ANNOUNCE_BYTES, opening_label},
@@ -137,7 +135,7 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
     let fetched = match &link.mesh {
         Some(MeshSource::Path(path)) => Some(FetchedMesh {
             name: path.rsplit('/').next().unwrap_or(path).to_owned(),
-            bytes: fetch_bytes(path).await,
+            bytes: crate::platform::fetch_bytes(path).await,
         }),
         _ => None,
     };
@@ -159,82 +157,6 @@ async fn follow_page_link(runner: &eframe::WebRunner) {
     });
     if let Err(err) = applied {
         log::error!("the link could not be applied: {}", js_error_text(&err));
-    }
-}
-
-/// Reads a same-site file, refusing one larger than the loaders accept
-/// before its body is read: by its `Content-Length`, or, when the server
-/// sends none, as soon as the bytes read pass the limit.
-async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
-    let window = web_sys::window().ok_or("no window")?;
-    // The link checked the path; the browser's own URL parser has the last
-    // word on where it leads.
-    let page = window
-        .location()
-        .href()
-        .map_err(|err| js_error_text(&err))?;
-    let resolved = web_sys::Url::new_with_base(path, &page)
-        .map_err(|_| "it is not a path this page can open".to_owned())?;
-    let origin = window
-        .location()
-        .origin()
-        .map_err(|err| js_error_text(&err))?;
-    if resolved.origin() != origin {
-        return Err(format!(
-            "it leads to {}, another site; links open only this site's files",
-            resolved.origin()
-        ));
-    }
-    let response = wasm_bindgen_futures::JsFuture::from(window.fetch_with_str(path))
-        .await
-        .map_err(|err| format!("cannot fetch it: {}", js_error_text(&err)))?
-        .dyn_into::<web_sys::Response>()
-        .map_err(|_| "the fetch gave no response".to_owned())?;
-    if !response.ok() {
-        return Err(format!(
-            "the server answered {} {}",
-            response.status(),
-            response.status_text()
-        ));
-    }
-    let too_large = |size: String| {
-        format!("the file is {size} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes")
-    };
-    let announced = response
-        .headers()
-        .get("content-length")
-        .ok()
-        .flatten()
-        .and_then(|length| length.trim().parse::<u64>().ok());
-    if let Some(length) = announced
-        && length > MAX_FILE_BYTES as u64
-    {
-        return Err(too_large(length.to_string()));
-    }
-    let Some(body) = response.body() else {
-        return Ok(Vec::new());
-    };
-    let reader = body
-        .get_reader()
-        .dyn_into::<web_sys::ReadableStreamDefaultReader>()
-        .map_err(|_| "the response cannot be read".to_owned())?;
-    let mut bytes = Vec::new();
-    loop {
-        let chunk = wasm_bindgen_futures::JsFuture::from(reader.read())
-            .await
-            .map_err(|err| format!("cannot read it: {}", js_error_text(&err)))?;
-        let done = js_sys::Reflect::get(&chunk, &"done".into()).map_or(true, |d| d.is_truthy());
-        if done {
-            return Ok(bytes);
-        }
-        let value = js_sys::Reflect::get(&chunk, &"value".into()).unwrap_or(JsValue::UNDEFINED);
-        let part = js_sys::Uint8Array::new(&value);
-        if bytes.len() + part.length() as usize > MAX_FILE_BYTES {
-            // Stops the download; its outcome no longer matters.
-            let _cancelled = reader.cancel();
-            return Err(too_large(format!("more than {MAX_FILE_BYTES}")));
-        }
-        bytes.extend(part.to_vec());
     }
 }
 

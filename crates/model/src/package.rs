@@ -302,7 +302,7 @@ impl Package {
             .map(|item| match item {
                 Item::Exercise(exercise) => json!({
                     "kind": "exercise",
-                    "name": exercise.name,
+                    "name": file_stem(&exercise.name),
                     "title": exercise.title,
                     "file": exercise_file(exercise),
                     "doIt": matches!(exercise.task, crate::practice::TaskSpec::DoIt(_)),

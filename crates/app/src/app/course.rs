@@ -77,7 +77,8 @@ impl EdgewiseApp {
         link.follow(self, &mut messages);
         match &link.exercise {
             Some(exercise) => {
-                if let Err(message) = self.start_exercise(exercise.as_str(), link.seed, None) {
+                if let Err(message) = self.start_exercise(exercise.as_str(), link.seed, None, None)
+                {
                     messages.push(format!("exercise=: {message}"));
                 }
             }
@@ -365,6 +366,8 @@ impl EdgewiseApp {
                     }
                     ui.checkbox(&mut self.share_embed_tables, "with the tables");
                 });
+                ui.separator();
+                self.scorm_download_ui(ui);
                 if let Some(status) = &self.share_status {
                     ui.weak(status.as_str());
                 }

@@ -24,8 +24,12 @@ impl EdgewiseApp {
         exercise: &str,
         seed: Option<u64>,
         progress: Option<&str>,
+        name: Option<&str>,
     ) -> Result<(), CommandError> {
-        let exercise = read_exercise(exercise)?;
+        let mut exercise = read_exercise(exercise)?;
+        if let Some(name) = name {
+            name.clone_into(&mut exercise.name);
+        }
         if let Some(progress) = progress {
             let do_it = matches!(exercise.task, edgewise_model::practice::TaskSpec::DoIt(_));
             let progress = Progress::parse(progress, do_it)
@@ -263,6 +267,7 @@ impl EdgewiseApp {
                 exercise: name.to_owned(),
                 seed: None,
                 progress: None,
+                name: None,
             });
         }
     }

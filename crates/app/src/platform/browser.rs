@@ -393,3 +393,132 @@ fn set_text_of(document: &web_sys::Document, id: &str, text: Option<&str>) {
         element.set_text_content(text);
     }
 }
+
+/// The SCORM package's zip, built from the release files this page was
+/// loaded from (its `index.html`, JS, wasm and icon), so a lecturer needs
+/// nothing but the browser.
+pub async fn package_zip(package: &edgewise_model::package::Package) -> Result<Vec<u8>, String> {
+    use edgewise_model::package::AppFiles;
+    let index = fetch_bytes("index.html")
+        .await
+        .map_err(|err| format!("index.html: {err}"))?;
+    let build = AppFiles::build_of(&String::from_utf8_lossy(&index))
+        .ok_or("this page is not a release build (`cargo xtask build-web` makes one)")?
+        .to_owned();
+    let mut fetched = vec![("index.html".to_owned(), index)];
+    for name in AppFiles::names(&build).into_iter().skip(1) {
+        let bytes = fetch_bytes(&name)
+            .await
+            .map_err(|err| format!("{name}: {err}"))?;
+        fetched.push((name, bytes));
+    }
+    let app = AppFiles::read(|name| {
+        fetched
+            .iter()
+            .position(|(n, _)| n == name)
+            .map(|at| fetched.swap_remove(at).1)
+            .ok_or_else(|| "not fetched".to_owned())
+    })
+    .map_err(|err| err.to_string())?;
+    package.zip(&app).map_err(|err| err.to_string())
+}
+
+/// Builds `package` (see [`package_zip`]) and downloads it as `name`;
+/// `status` then holds what to tell the user.
+pub fn download_package(
+    package: edgewise_model::package::Package,
+    name: String,
+    status: Rc<RefCell<Option<String>>>,
+    ctx: egui::Context,
+) {
+    wasm_bindgen_futures::spawn_local(async move {
+        let said = match package_zip(&package).await {
+            Ok(bytes) => download(&name, &bytes).map(|()| {
+                format!(
+                    "Downloaded {name} ({:.1} MB): upload it to your LMS as a SCORM package.",
+                    bytes.len() as f64 / 1e6
+                )
+            }),
+            Err(err) => Err(err),
+        };
+        *status.borrow_mut() =
+            Some(said.unwrap_or_else(|err| format!("The package could not be made: {err}")));
+        ctx.request_repaint();
+    });
+}
+
+/// Reads a same-site file, refusing one larger than the loaders accept
+/// before its body is read: by its `Content-Length`, or, when the server
+/// sends none, as soon as the bytes read pass the limit.
+pub async fn fetch_bytes(path: &str) -> Result<Vec<u8>, String> {
+    let window = web_sys::window().ok_or("no window")?;
+    // The link checked the path; the browser's own URL parser has the last
+    // word on where it leads.
+    let page = window
+        .location()
+        .href()
+        .map_err(|err| js_error_text(&err))?;
+    let resolved = web_sys::Url::new_with_base(path, &page)
+        .map_err(|_| "it is not a path this page can open".to_owned())?;
+    let origin = window
+        .location()
+        .origin()
+        .map_err(|err| js_error_text(&err))?;
+    if resolved.origin() != origin {
+        return Err(format!(
+            "it leads to {}, another site; links open only this site's files",
+            resolved.origin()
+        ));
+    }
+    let response = JsFuture::from(window.fetch_with_str(path))
+        .await
+        .map_err(|err| format!("cannot fetch it: {}", js_error_text(&err)))?
+        .dyn_into::<web_sys::Response>()
+        .map_err(|_| "the fetch gave no response".to_owned())?;
+    if !response.ok() {
+        return Err(format!(
+            "the server answered {} {}",
+            response.status(),
+            response.status_text()
+        ));
+    }
+    let too_large = |size: String| {
+        format!("the file is {size} bytes; Edgewise reads files of at most {MAX_FILE_BYTES} bytes")
+    };
+    let announced = response
+        .headers()
+        .get("content-length")
+        .ok()
+        .flatten()
+        .and_then(|length| length.trim().parse::<u64>().ok());
+    if let Some(length) = announced
+        && length > MAX_FILE_BYTES as u64
+    {
+        return Err(too_large(length.to_string()));
+    }
+    let Some(body) = response.body() else {
+        return Ok(Vec::new());
+    };
+    let reader = body
+        .get_reader()
+        .dyn_into::<web_sys::ReadableStreamDefaultReader>()
+        .map_err(|_| "the response cannot be read".to_owned())?;
+    let mut bytes = Vec::new();
+    loop {
+        let chunk = JsFuture::from(reader.read())
+            .await
+            .map_err(|err| format!("cannot read it: {}", js_error_text(&err)))?;
+        let done = js_sys::Reflect::get(&chunk, &"done".into()).map_or(true, |d| d.is_truthy());
+        if done {
+            return Ok(bytes);
+        }
+        let value = js_sys::Reflect::get(&chunk, &"value".into()).unwrap_or(JsValue::UNDEFINED);
+        let part = js_sys::Uint8Array::new(&value);
+        if bytes.len() + part.length() as usize > MAX_FILE_BYTES {
+            // Stops the download; its outcome no longer matters.
+            let _cancelled = reader.cancel();
+            return Err(too_large(format!("more than {MAX_FILE_BYTES}")));
+        }
+        bytes.extend(part.to_vec());
+    }
+}

@@ -144,3 +144,30 @@ pub fn change_for_readers(_cells: &[(String, String)], _message: Option<&str>) {
 pub fn show_run_to_readers(_run: Option<&RunText<'_>>) {}
 
 pub fn show_algorithms_to_readers(_html: &str) {}
+
+/// Builds `package` from the release in `dist/` and writes it as `name` in
+/// the current directory; `status` then holds what to tell the user.
+#[expect(
+    clippy::needless_pass_by_value,
+    reason = "the same signature as the browser's, which moves these into its task"
+)]
+pub fn download_package(
+    package: edgewise_model::package::Package,
+    name: String,
+    status: std::rc::Rc<std::cell::RefCell<Option<String>>>,
+    _ctx: egui::Context,
+) {
+    let said = edgewise_model::package::AppFiles::read(|file| {
+        let path = std::path::Path::new("dist").join(file);
+        std::fs::read(&path).map_err(|err| format!("{}: {err}", path.display()))
+    })
+    .and_then(|app| package.zip(&app))
+    .map_err(|err| err.to_string())
+    .and_then(|bytes| {
+        std::fs::write(&name, &bytes)
+            .map(|()| format!("Saved {name} ({:.1} MB)", bytes.len() as f64 / 1e6))
+            .map_err(|err| format!("cannot write {name}: {err}"))
+    });
+    *status.borrow_mut() =
+        Some(said.unwrap_or_else(|err| format!("The package could not be made: {err}")));
+}

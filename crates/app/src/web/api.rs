@@ -222,7 +222,7 @@ const COMMANDS: &[CommandEntry] = &[
                 exercise,
                 crate::app::practice::MAX_EXERCISE_BYTES,
             )?;
-            check_options(call, options, &["seed", "progress"])?;
+            check_options(call, options, &["seed", "progress", "name"])?;
             let seed = option_whole_number(call, options, "seed")?;
             let progress = option_text(call, options, "progress", MAX_PROGRESS_CHARS)?;
             if seed.is_some() && progress.is_some() {
@@ -230,10 +230,21 @@ const COMMANDS: &[CommandEntry] = &[
                     "{call}: give options.seed or options.progress, not both (a saved attempt has its seed)"
                 ));
             }
+            let name = option_string(call, options, "name")?;
+            if let Some(name) = &name
+                && !name
+                    .chars()
+                    .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+            {
+                return Err(format!(
+                    "{call}: options.name {name:?} may hold only letters, digits, '-' and '_'"
+                ));
+            }
             Ok(Command::StartExercise {
                 exercise,
                 seed,
                 progress,
+                name,
             })
         },
     },
@@ -329,6 +340,10 @@ const QUERIES: &[QueryEntry] = &[
     QueryEntry {
         name: "exportMesh",
         answer: |runner, format, _| Ok(export(runner, format).into()),
+    },
+    QueryEntry {
+        name: "exportPackage",
+        answer: |runner, version, _| Ok(export_package(runner, version).into()),
     },
     QueryEntry {
         name: "exportHandout",
@@ -676,6 +691,29 @@ fn export(runner: &eframe::WebRunner, format: &JsValue) -> js_sys::Promise {
         exported_object(&saved, format.is_binary()).map_err(|err| js_error_text(&err))
     })();
     settle_with(result)
+}
+
+/// `exportPackage(version)`: the SCORM package (`'1.2'` or `'2004'`) of
+/// the exercise or the view on screen, as the Share window downloads it:
+/// a Promise of `{name, base64}`.
+fn export_package(runner: &eframe::WebRunner, version: &JsValue) -> js_sys::Promise {
+    const CALL: &str = "exportPackage(version)";
+    let prepared = version
+        .as_string()
+        .and_then(|v| edgewise_model::package::Scorm::parse(&v))
+        .ok_or_else(|| expected(CALL, "version", "'1.2' or '2004'", version))
+        .and_then(|scorm| {
+            with_app(runner, |app| app.scorm_package(scorm)).map_err(|err| js_error_text(&err))?
+        });
+    match prepared {
+        Err(message) => settle_with(Err(message)),
+        Ok((name, package)) => wasm_bindgen_futures::future_to_promise(async move {
+            let bytes = crate::platform::package_zip(&package)
+                .await
+                .map_err(|message| JsValue::from(js_sys::Error::new(&message)))?;
+            exported_object(&SavedFile { name, bytes }, true)
+        }),
+    }
 }
 
 /// `exportImage(format)`: `'svg'` resolves to the SVG text of the view

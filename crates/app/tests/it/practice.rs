@@ -38,6 +38,7 @@ fn start(harness: &mut App, name: &str, seed: u64) -> ExerciseState {
             exercise: name.to_owned(),
             seed: Some(seed),
             progress: None,
+            name: None,
         },
     );
     exercise(harness)
@@ -234,6 +235,7 @@ fn live_feedback_grades_every_write() {
             exercise: text,
             seed: Some(2),
             progress: None,
+            name: None,
         },
     );
     let _ = harness.state_mut().take_embed_events();
@@ -448,6 +450,7 @@ fn a_saved_attempt_resumes_where_it_stopped() {
             exercise: "split-face-half-edge".to_owned(),
             seed: None,
             progress: Some(saved.clone()),
+            name: None,
         },
     );
     let resumed = exercise(&harness);
@@ -466,6 +469,7 @@ fn a_saved_attempt_resumes_where_it_stopped() {
             exercise: "split-face-half-edge".to_owned(),
             seed: None,
             progress: Some(damaged),
+            name: None,
         })
         .expect_err("damaged");
     assert!(
@@ -473,4 +477,32 @@ fn a_saved_attempt_resumes_where_it_stopped() {
         "{err}"
     );
     assert_eq!(exercise(&harness).passed, Some(true));
+}
+
+/// Share's *Download as a SCORM package*: the exercise on screen, or else
+/// the view, as a one-item package named for it.
+#[test]
+fn share_packages_the_exercise_or_else_the_view() {
+    use edgewise_model::package::{Item, Scorm};
+    let mut harness = support::harness();
+    start(&mut harness, "kev-half-edge", 2);
+    let (name, package) = harness
+        .state()
+        .scorm_package(Scorm::V2004)
+        .expect("a package");
+    assert_eq!(name, "kev-half-edge-scorm-2004.zip");
+    assert_eq!(package.pass_mark, 80);
+    assert!(
+        matches!(&package.items[..], [Item::Exercise(e)] if e.name == "kev-half-edge"),
+        "{:?}",
+        package.items
+    );
+    run(&mut harness, Command::EndExercise);
+    let (name, package) = harness.state().scorm_package(Scorm::V1_2).expect("a view");
+    assert_eq!(name, "edgewise-view-scorm-1.2.zip");
+    assert!(
+        matches!(&package.items[..], [Item::View { href, .. }] if href.starts_with("index.html?") && href.contains("embed=1")),
+        "{:?}",
+        package.items
+    );
 }

@@ -302,6 +302,7 @@ fn a_flip_exercise_checked_with_one_wrong_cell() {
         exercise: "flip-edge-half-edge".to_owned(),
         seed: Some(3),
         progress: None,
+        name: None,
     })
     .unwrap();
     // Half-edge 16's end moved to the flip's new end; the rest not yet done.
@@ -331,6 +332,7 @@ fn a_walk_with_a_wrong_click_corrected() {
         exercise: "walk-vertex-edges-winged-edge".to_owned(),
         seed: Some(0),
         progress: None,
+        name: None,
     })
     .unwrap();
     for id in [1, 2] {
@@ -359,6 +361,7 @@ fn a_prediction_asking_its_third_lookup() {
         exercise: "predict-vertex-edges-winged-edge".to_owned(),
         seed: Some(0),
         progress: None,
+        name: None,
     })
     .unwrap();
     app.execute(Command::AnswerExercise(Some(ElementRef::new(

@@ -13,7 +13,7 @@ const DOS_DATE: u16 = (1 << 5) | 1;
 
 /// The most entries and bytes a zip without zip64 holds.
 const MAX_ENTRIES: usize = u16::MAX as usize;
-const MAX_BYTES: usize = u32::MAX as usize;
+const MAX_BYTES: u64 = u32::MAX as u64;
 
 /// How hard DEFLATE tries (miniz's 0–10): 9 packs the wasm within 1% of
 /// gzip -9, which the 3 MB goal for a package needs.
@@ -31,7 +31,7 @@ impl ZipWriter {
     /// Adds a file; `name` uses `/` between folders. Data that does not
     /// shrink is stored as it is.
     pub fn add(&mut self, name: &str, data: &[u8]) -> Result<(), String> {
-        if self.entries == MAX_ENTRIES || data.len() > MAX_BYTES {
+        if self.entries == MAX_ENTRIES || data.len() as u64 > MAX_BYTES {
             return Err(format!(
                 "{name}: a package holds at most 4 GB in 65,535 files"
             ));
@@ -43,7 +43,7 @@ impl ZipWriter {
             (0, data)
         };
         let offset = self.out.len();
-        if offset + body.len() + name.len() + 30 > MAX_BYTES {
+        if (offset + body.len() + name.len()) as u64 + 30 > MAX_BYTES {
             return Err(format!("{name}: the package would pass 4 GB"));
         }
         let crc = crc32fast::hash(data);
