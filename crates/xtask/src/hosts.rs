@@ -3,6 +3,11 @@
 //! `PyPI`), as pinned in `web/hosts/`. The browser test `hosts.rs` opens
 //! them with the app served from another origin, as a course site does.
 //!
+//! Beside them, an LMS for the SCORM packages (docs/lms.md): scorm-again
+//! (from npm) as the API, and two packages of dist/ made by `edgewise
+//! package` and unzipped by Python's zipfile, served from the same origin
+//! as an LMS serves its content. The browser test `scorm.rs` opens it.
+//!
 //! The tools are installed once, into `web/hosts/node_modules` and
 //! `target/hosts-venv`, and again only when their pins change. The pages
 //! are built into `target/hosts` for one address of the app on each call.
@@ -26,7 +31,7 @@ const PLACEHOLDER: &str = "https://example.edu/edgewise/";
 pub fn build(root: &Path, app_url: &str) -> anyhow::Result<PathBuf> {
     let source = root.join("web/hosts");
     let target = root.join("target");
-    install_reveal(&source)?;
+    install_npm_tools(&source)?;
     let venv = install_mkdocs(&source, &target.join("hosts-venv"))?;
 
     let out = target.join("hosts");
@@ -66,7 +71,71 @@ pub fn build(root: &Path, app_url: &str) -> anyhow::Result<PathBuf> {
             .arg("--site-dir")
             .arg(out.join("mkdocs")),
     )?;
+    scorm_lms(root, &source, &out.join("scorm"))?;
     Ok(out)
+}
+
+/// The exercises of the SCORM test packages: a walk the test passes, a
+/// prediction it fails, and a do-it it leaves half done and resumes.
+const SCORM_EXERCISES: [&str; 3] = [
+    "walk-face-loop-half-edge",
+    "predict-vertex-edges-half-edge",
+    "split-edge-half-edge",
+];
+
+/// scorm-again's page as the LMS, and a package of dist/ for each SCORM
+/// version unzipped beside it (`package-1.2/`, `package-2004/`).
+fn scorm_lms(root: &Path, source: &Path, out: &Path) -> anyhow::Result<()> {
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    std::fs::copy(
+        source.join("node_modules/scorm-again/dist/scorm-again.min.js"),
+        out.join("scorm-again.js"),
+    )
+    .context("cannot copy scorm-again (is it installed?)")?;
+    std::fs::copy(source.join("scorm/index.html"), out.join("index.html"))
+        .context("cannot copy web/hosts/scorm/index.html")?;
+    let dist = root.join("dist");
+    if !dist.join("index.html").is_file() {
+        bail!("dist/ is not built: the SCORM packages hold it (run `cargo xtask build-web`)");
+    }
+    for version in ["1.2", "2004"] {
+        let zip = out.join(format!("edgewise-{version}.zip"));
+        let mut package = process::cargo();
+        package
+            .current_dir(root)
+            .args([
+                "run",
+                "--quiet",
+                "--locked",
+                "--package",
+                "edgewise-cli",
+                "--",
+                "package",
+            ])
+            .arg(&zip)
+            .args([
+                "--scorm",
+                version,
+                "--title",
+                "Week 3: half-edges",
+                "--pass-mark",
+                "60",
+            ])
+            .arg("--app")
+            .arg(&dist);
+        for exercise in SCORM_EXERCISES {
+            package.args(["--exercise", exercise]);
+        }
+        process::run("edgewise package", &mut package)?;
+        process::run(
+            "unzip (Python's zipfile)",
+            Command::new("python3")
+                .args(["-m", "zipfile", "-e"])
+                .arg(&zip)
+                .arg(out.join(format!("package-{version}"))),
+        )?;
+    }
+    Ok(())
 }
 
 /// `cargo xtask hosts`: builds the hosts for the app at `app` (or for
@@ -88,6 +157,7 @@ pub fn serve(root: &Path, app: Option<&str>) -> anyhow::Result<()> {
     println!("The app:          {app_url}");
     println!("reveal.js deck:   http://{addr}/reveal/");
     println!("MkDocs notes:     http://{addr}/mkdocs/");
+    println!("An LMS (SCORM):   http://{addr}/scorm/?version=1.2 (or 2004)");
     println!("For the tests:    EDGEWISE_URL={app_url} EDGEWISE_HOSTS_URL=http://{addr}/");
     println!("(Ctrl+C stops)");
     loop {
@@ -95,9 +165,9 @@ pub fn serve(root: &Path, app: Option<&str>) -> anyhow::Result<()> {
     }
 }
 
-/// `npm ci` in `web/hosts`, unless `node_modules` already holds what
-/// package-lock.json pins.
-fn install_reveal(source: &Path) -> anyhow::Result<()> {
+/// `npm ci` in `web/hosts` (reveal.js and scorm-again), unless
+/// `node_modules` already holds what package-lock.json pins.
+fn install_npm_tools(source: &Path) -> anyhow::Result<()> {
     let lock = read(&source.join("package-lock.json"))?;
     let stamp = source.join("node_modules/.edgewise-installed");
     if std::fs::read_to_string(&stamp).is_ok_and(|installed| installed == lock) {
@@ -107,7 +177,7 @@ fn install_reveal(source: &Path) -> anyhow::Result<()> {
         // Debian's nodejs and npm, where nothing else gives them.
         process::ensure_debian_packages("the reveal.js deck", &[("/usr/bin/npm", "npm")])?;
     }
-    eprintln!("==> installing reveal.js from npm (web/hosts/package-lock.json)");
+    eprintln!("==> installing reveal.js and scorm-again from npm (web/hosts/package-lock.json)");
     process::run(
         "npm ci (web/hosts)",
         Command::new("npm")

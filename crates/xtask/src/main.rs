@@ -7,6 +7,8 @@
 //! - `browser-test` builds dist/ and runs only the browser tests.
 //! - `hosts [--app URL]` installs reveal.js and `MkDocs`, builds a deck and
 //!   notes that embed the app, and serves them.
+//! - `package ARGS` builds dist/ and runs `edgewise package ARGS` with it:
+//!   a SCORM package of the release build (docs/lms.md).
 //! - `tidy` checks the invariants ARCHITECTURE.md states (module cycles,
 //!   column names, layers, the crate map).
 //! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
@@ -70,6 +72,14 @@ enum Command {
         #[arg(long)]
         app: Option<String>,
     },
+    /// Build dist/ (release), then make a SCORM package of it: `cargo xtask
+    /// package -- week3.zip --scorm 2004 --exercise kev-half-edge` runs
+    /// `edgewise package` with these arguments and `--app dist`.
+    Package {
+        /// The arguments of `edgewise package`.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
     /// Build dist/, then measure it in headless Chromium beside a bare WebGL2
     /// page drawing the same torus, and print the table (see README).
     BenchWeb,
@@ -121,6 +131,28 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::BrowserTest => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::browser_tests(&root, &dist)
+        }
+        Command::Package { ref args } => {
+            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            let mut package = process::cargo();
+            package
+                .args([
+                    "run",
+                    "--quiet",
+                    "--locked",
+                    "--package",
+                    "edgewise-cli",
+                    "--",
+                    "package",
+                ])
+                .args(args);
+            if !args
+                .iter()
+                .any(|arg| arg == "--app" || arg.starts_with("--app="))
+            {
+                package.arg("--app").arg(&dist);
+            }
+            process::run("edgewise package", &mut package)
         }
         Command::Tidy => tidy::run(&root),
         Command::Hosts { ref app } => hosts::serve(&root, app.as_deref()),

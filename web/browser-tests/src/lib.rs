@@ -936,3 +936,33 @@ impl Drop for TempDir {
         std::fs::remove_dir_all(&self.0).ok();
     }
 }
+
+/// The `window.edgewise` calls, as `(method, args)`, that turn `current`
+/// into `target`: a student's fewest writes, as a saved attempt stores them.
+pub fn student_writes(
+    current: &edgewise_core::mesh::Mesh,
+    target: &edgewise_core::mesh::Mesh,
+) -> Vec<(&'static str, Value)> {
+    use edgewise_model::practice::progress::{Write, writes_between};
+    writes_between(current, target)
+        .into_iter()
+        .map(|write| match write {
+            Write::AddRow(kind) => ("addRow", json!([kind.prose()])),
+            Write::Reference {
+                element,
+                column,
+                target,
+            } => (
+                "setCell",
+                json!([
+                    element.kind.prose(),
+                    element.id,
+                    column.lookup_name(),
+                    target
+                ]),
+            ),
+            Write::Position { vertex, position } => ("setPosition", json!([vertex, position])),
+            Write::DeleteRow(row) => ("deleteRow", json!([row.kind.prose(), row.id])),
+        })
+        .collect()
+}

@@ -22,6 +22,7 @@ mod mesh;
 mod offline;
 mod practice;
 mod progress;
+mod scorm;
 mod screens;
 mod startup;
 mod trace;

@@ -8,10 +8,9 @@
 use std::time::Duration;
 
 use anyhow::Context as _;
-use edgewise_browser_tests::Browser;
+use edgewise_browser_tests::{Browser, student_writes};
 use edgewise_core::formats;
-use edgewise_core::mesh::{Mesh, Structure, VertexId};
-use edgewise_core::schema::{Column, ElementKind, ElementRef, Records as _, Storage};
+use edgewise_core::mesh::{Mesh, Structure};
 use serde_json::{Value, json};
 
 const EXERCISE: &str = "flip-edge-half-edge";
@@ -29,46 +28,6 @@ async fn tables(browser: &Browser) -> anyhow::Result<Mesh> {
             .map_err(|err| anyhow::anyhow!(err.render("answer.htb")))?
             .mesh,
     )
-}
-
-/// The API calls, as `[method, args]`, that turn `current` into `target`:
-/// a student's writes. (A flip makes and deletes no rows.)
-fn writes(current: &Mesh, target: &Mesh) -> Vec<(String, Value)> {
-    let mut calls = Vec::new();
-    for v in 0..target.count(ElementKind::Vertex) as u32 {
-        let (Some(want), now) = (
-            target.position(VertexId::new(v)),
-            current.position(VertexId::new(v)),
-        ) else {
-            continue;
-        };
-        if now != Some(want) {
-            calls.push(("setPosition".to_owned(), json!([v, want.to_array()])));
-        }
-    }
-    for kind in ElementKind::ALL {
-        for id in 0..target.count(kind) as u32 {
-            let row = ElementRef::new(kind, id);
-            for entry in Column::table(Structure::HalfEdge, kind) {
-                if entry.storage != Storage::Stored || entry.column == Column::Position {
-                    continue;
-                }
-                let want = target.reference(row, entry.column).ok().flatten();
-                if current.reference(row, entry.column).ok().flatten() != want {
-                    calls.push((
-                        "setCell".to_owned(),
-                        json!([
-                            kind.prose(),
-                            id,
-                            entry.column.lookup_name(),
-                            want.map(|t| t.id)
-                        ]),
-                    ));
-                }
-            }
-        }
-    }
-    calls
 }
 
 async fn call(browser: &Browser, method: &str, args: &Value) -> anyhow::Result<Value> {
@@ -109,7 +68,7 @@ async fn a_flip_done_cell_by_cell_passes_and_one_cell_short_is_named() -> anyhow
     assert_eq!(state["attempt"], 1);
     assert_eq!(state["passed"], Value::Null);
 
-    let mut calls = writes(&before, &target);
+    let mut calls = student_writes(&before, &target);
     assert!(calls.len() >= 6, "a flip writes several cells: {calls:?}");
     let last = calls.pop().context("a last write")?;
     for (method, args) in &calls {
@@ -127,7 +86,7 @@ async fn a_flip_done_cell_by_cell_passes_and_one_cell_short_is_named() -> anyhow
     );
     browser.screenshot("practice-flip-one-cell-short").await?;
 
-    call(&browser, &last.0, &last.1).await?;
+    call(&browser, last.0, &last.1).await?;
     browser
         .eval_async("window.edgewise.submitExercise()")
         .await?;
@@ -184,7 +143,7 @@ async fn a_course_page_on_another_origin_hears_the_score() -> anyhow::Result<()>
     // The writes, worked out in the app's own page first.
     browser.open("").await?;
     let (before, target) = start_and_target(&browser).await?;
-    let calls = writes(&before, &target);
+    let calls = student_writes(&before, &target);
     let app_origin = url::Url::parse(browser.base_url())?
         .origin()
         .ascii_serialization();
@@ -214,8 +173,8 @@ async fn a_course_page_on_another_origin_hears_the_score() -> anyhow::Result<()>
     let mut id = 0;
     for (method, args) in calls
         .iter()
-        .map(|(m, a)| (m.clone(), a.clone()))
-        .chain([("submitExercise".to_owned(), json!([]))])
+        .map(|(m, a)| (*m, a.clone()))
+        .chain([("submitExercise", json!([]))])
     {
         id += 1;
         browser

@@ -1,0 +1,357 @@
+//! SCORM packages in an LMS's frame (docs/lms.md). `cargo xtask hosts`
+//! serves a page that installs scorm-again (the runtime LMSs embed, from
+//! npm) as the API and keeps the learner's data across visits, and two
+//! packages made by `edgewise package` of this build, unzipped beside it.
+//! In each version a student passes a walk, fails a prediction, leaves a
+//! do-it half done and closes the page; on return the package resumes the
+//! same instance with the same writes, and the finished set passes. The
+//! LMS's own records are read back from scorm-again.
+
+use std::time::Duration;
+
+use anyhow::Context as _;
+use edgewise_browser_tests::{Browser, ONE_HEAVY_PAGE_AT_A_TIME, student_writes};
+use edgewise_core::mesh::operations;
+use edgewise_model::practice::{Exercise, Task, catalog};
+use serde_json::{Value, json};
+
+const START_TIMEOUT: Duration = Duration::from_secs(240);
+const STEP_TIMEOUT: Duration = Duration::from_secs(60);
+
+/// The launch page (in the LMS's frame) and the app (in the launch page's),
+/// as expressions in the LMS's page: the package is served from the LMS's
+/// origin, so both can be scripted.
+const LAUNCH: &str = "document.getElementById('sco').contentWindow";
+const APP: &str = "document.getElementById('sco').contentWindow.document.getElementById('edgewise-frame').contentWindow.edgewise";
+
+fn hosts_url() -> anyhow::Result<String> {
+    std::env::var("EDGEWISE_HOSTS_URL")
+        .context("EDGEWISE_HOSTS_URL is not set: run these tests with `cargo xtask test`")
+}
+
+async fn package_state(browser: &Browser) -> anyhow::Result<Value> {
+    browser
+        .eval(&format!("return {LAUNCH}.edgewisePackage.state();"))
+        .await
+}
+
+/// What the LMS holds for the learner now (scorm-again's `cmi`).
+async fn cmi(browser: &Browser) -> anyhow::Result<Value> {
+    browser.eval("return window.lms.cmi();").await
+}
+
+/// Waits until the app in the package shows exercise `name`, and returns
+/// its state.
+async fn exercise_on_screen(
+    browser: &Browser,
+    name: &str,
+    timeout: Duration,
+) -> anyhow::Result<Value> {
+    let condition = format!(
+        "(() => {{ try {{ const s = {APP}.state(); return s.exercise && s.exercise.name === '{name}'; }} \
+           catch (err) {{ return false; }} }})()"
+    );
+    if let Err(err) = browser.wait_for(&condition, timeout).await {
+        let launch = package_state(browser).await.unwrap_or(Value::Null);
+        let console = browser.console_errors().await.unwrap_or_default();
+        anyhow::bail!("{name} is not on screen: {err}\npackage: {launch}\nconsole: {console:#?}");
+    }
+    browser
+        .eval(&format!("return {APP}.state().exercise;"))
+        .await
+}
+
+async fn call(browser: &Browser, method: &str, args: &Value) -> anyhow::Result<Value> {
+    browser
+        .eval_async(&format!("{APP}.{method}(...{args})"))
+        .await
+}
+
+async fn wait_finished(browser: &Browser, item: usize) -> anyhow::Result<Value> {
+    browser
+        .wait_for(
+            &format!("{LAUNCH}.edgewisePackage.state().items[{item}].finished"),
+            STEP_TIMEOUT,
+        )
+        .await?;
+    package_state(browser).await
+}
+
+fn exercise(name: &str) -> anyhow::Result<Exercise> {
+    catalog::find(name)
+        .context("a shipped exercise")?
+        .map_err(|err| anyhow::anyhow!("{err}"))
+}
+
+fn seed_of(state: &Value) -> anyhow::Result<u64> {
+    state["seed"].as_u64().context("a seed")
+}
+
+/// The names a version gives its records.
+struct Version {
+    name: &'static str,
+    status: fn(&Value) -> (Value, Value),
+    score: fn(&Value) -> Value,
+    entry: fn(&Value) -> Value,
+    response: &'static str,
+    wrong: &'static str,
+}
+
+const V1_2: Version = Version {
+    name: "1.2",
+    status: |cmi| (cmi["core"]["lesson_status"].clone(), Value::Null),
+    score: |cmi| cmi["core"]["score"]["raw"].clone(),
+    entry: |cmi| cmi["core"]["entry"].clone(),
+    response: "student_response",
+    wrong: "wrong",
+};
+
+const V2004: Version = Version {
+    name: "2004",
+    status: |cmi| {
+        (
+            cmi["completion_status"].clone(),
+            cmi["success_status"].clone(),
+        )
+    },
+    score: |cmi| cmi["score"]["raw"].clone(),
+    entry: |cmi| cmi["entry"].clone(),
+    response: "learner_response",
+    wrong: "incorrect",
+};
+
+/// The interactions the LMS holds, in order.
+fn interactions(cmi: &Value) -> Vec<Value> {
+    let Some(all) = cmi["interactions"].as_object() else {
+        return Vec::new();
+    };
+    let mut records: Vec<(usize, Value)> = all
+        .iter()
+        .filter_map(|(n, record)| Some((n.parse().ok()?, record.clone())))
+        .collect();
+    records.sort_by_key(|(n, _)| *n);
+    records.into_iter().map(|(_, record)| record).collect()
+}
+
+async fn pass_fail_leave_and_resume(version: &Version) -> anyhow::Result<()> {
+    let hosts = hosts_url()?;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(Duration::from_secs(120)).await?;
+    let lms = format!("{hosts}scorm/?version={}", version.name);
+
+    browser.goto_url(&lms).await?;
+    // A package of three exercises fits in 3 MB.
+    let bytes = browser
+        .eval_async(&format!(
+            "fetch('edgewise-{}.zip').then((r) => r.arrayBuffer()).then((b) => b.byteLength)",
+            version.name
+        ))
+        .await?;
+    let bytes = bytes.as_u64().context("the zip's size")?;
+    assert!(bytes <= 3_000_000, "the package is {bytes} bytes");
+
+    // 1. The walk, every click right: passed.
+    let walk = exercise_on_screen(&browser, "walk-face-loop-half-edge", START_TIMEOUT).await?;
+    let instance = exercise("walk-face-loop-half-edge")?.instance(seed_of(&walk)?)?;
+    let Task::Walk { expected, .. } = &instance.task else {
+        anyhow::bail!("a walk");
+    };
+    for element in expected {
+        call(
+            &browser,
+            "answerExercise",
+            &json!([element.kind.prose(), element.id]),
+        )
+        .await?;
+    }
+    let state = wait_finished(&browser, 0).await?;
+    assert_eq!(state["items"][0]["best"], expected.len(), "{state}");
+    let now = cmi(&browser).await?;
+    let records = interactions(&now);
+    assert_eq!(records.len(), expected.len(), "one record per click: {now}");
+    let first = &records[0];
+    assert!(
+        first["id"]
+            .as_str()
+            .is_some_and(|id| id.starts_with("walk-face-loop-half-edge-1-")),
+        "{first}"
+    );
+    assert_eq!(first["result"], "correct", "{first}");
+    assert!(
+        first[version.response]
+            .as_str()
+            .is_some_and(|r| r.starts_with("half-edge ")),
+        "{first}"
+    );
+    // One of three exercises: a third of the total, below the mark.
+    assert_eq!((version.score)(&now), "33.33", "{now}");
+
+    // 2. The prediction, every answer wrong: failed.
+    browser
+        .eval(&format!("{LAUNCH}.edgewisePackage.open(1); return null;"))
+        .await?;
+    let predict =
+        exercise_on_screen(&browser, "predict-vertex-edges-half-edge", STEP_TIMEOUT).await?;
+    let instance = exercise("predict-vertex-edges-half-edge")?.instance(seed_of(&predict)?)?;
+    let Task::Predict { lookups, .. } = &instance.task else {
+        anyhow::bail!("a prediction");
+    };
+    for lookup in lookups {
+        let wrong = match lookup.answer {
+            Some(_) => json!([null]),
+            None => json!(["vertex", 0]),
+        };
+        call(&browser, "answerExercise", &wrong).await?;
+    }
+    let state = wait_finished(&browser, 1).await?;
+    assert_eq!(state["items"][1]["best"], 0, "{state}");
+    let now = cmi(&browser).await?;
+    let records = interactions(&now);
+    assert_eq!(records.len(), expected.len() + lookups.len(), "{now}");
+    assert_eq!(
+        records.last().map(|r| r["result"].clone()),
+        Some(json!(version.wrong))
+    );
+
+    // 3. The do-it, half done; then the page is closed.
+    browser
+        .eval(&format!("{LAUNCH}.edgewisePackage.open(2); return null;"))
+        .await?;
+    let split = exercise_on_screen(&browser, "split-edge-half-edge", STEP_TIMEOUT).await?;
+    let seed = seed_of(&split)?;
+    let instance = exercise("split-edge-half-edge")?.instance(seed)?;
+    let Task::DoIt { operation, ids } = &instance.task else {
+        anyhow::bail!("a do-it");
+    };
+    let mut target = instance.mesh.clone();
+    operations::apply(&mut target, *operation, ids)?;
+    let writes = student_writes(&instance.mesh, &target);
+    let half = writes.len() / 2;
+    for (method, args) in &writes[..half] {
+        call(&browser, method, args).await?;
+    }
+    let counts = browser
+        .eval(&format!("return {APP}.state().counts;"))
+        .await?;
+    // Kept in suspend_data once the writes settle (without a commit).
+    browser
+        .wait_for(
+            "(window.lms.cmi().suspend_data.split('|')[5] || '').split(':').length === 6 \
+             && !(window.lms.cmi().suspend_data.split('|')[5] || '').endsWith(':')",
+            STEP_TIMEOUT,
+        )
+        .await?;
+    let (completion, _) = (version.status)(&cmi(&browser).await?);
+    assert_eq!(completion, "incomplete");
+    browser
+        .screenshot(&format!("scorm-{}-before-leaving", version.name))
+        .await?;
+
+    // Leaving ends the attempt with exit = suspend; the LMS brings it back.
+    browser.goto_url(&lms).await?;
+    let again = exercise_on_screen(&browser, "split-edge-half-edge", START_TIMEOUT).await?;
+    assert_eq!(seed_of(&again)?, seed, "the same instance");
+    assert_eq!(again["step"], half, "the writes are counted");
+    let counts_again = browser
+        .eval(&format!("return {APP}.state().counts;"))
+        .await?;
+    assert_eq!(counts_again, counts, "the same tables");
+    let now = cmi(&browser).await?;
+    assert_eq!((version.entry)(&now), "resume", "{now}");
+    let state = package_state(&browser).await?;
+    assert_eq!(state["items"][0]["finished"], true, "{state}");
+    assert_eq!(state["items"][1]["finished"], true, "{state}");
+    assert_eq!(state["current"], 2, "{state}");
+
+    // The rest of the writes, and Check: two of three passed.
+    for (method, args) in &writes[half..] {
+        call(&browser, method, args).await?;
+    }
+    call(&browser, "submitExercise", &json!([])).await?;
+    let state = wait_finished(&browser, 2).await?;
+    assert_eq!(state["passed"], true, "{state}");
+    assert_eq!(state["completed"], true, "{state}");
+    let now = cmi(&browser).await?;
+    assert_eq!((version.score)(&now), "66.67", "{now}");
+    let status = (version.status)(&now);
+    if version.name == "1.2" {
+        assert_eq!(status.0, "passed", "{now}");
+    } else {
+        assert_eq!(status, (json!("completed"), json!("passed")), "{now}");
+        assert_eq!(now["score"]["scaled"], "0.6667", "{now}");
+    }
+    let records = interactions(&now);
+    let check = records.last().context("the Check's record")?;
+    assert_eq!(check["result"], "correct", "{check}");
+    assert!(
+        check[version.response]
+            .as_str()
+            .is_some_and(|r| r.starts_with("the tables after")),
+        "{check}"
+    );
+    let errors = &state["lms"]["errors"];
+    assert_eq!(errors, &json!([]), "every LMS call succeeded");
+    browser
+        .screenshot(&format!("scorm-{}-passed", version.name))
+        .await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
+#[tokio::test]
+async fn a_scorm_1_2_package_scores_resumes_and_passes() -> anyhow::Result<()> {
+    pass_fail_leave_and_resume(&V1_2).await
+}
+
+#[tokio::test]
+async fn a_scorm_2004_package_scores_resumes_and_passes() -> anyhow::Result<()> {
+    pass_fail_leave_and_resume(&V2004).await
+}
+
+/// Opened outside an LMS, the package says so once and still works.
+#[tokio::test]
+async fn a_package_without_an_lms_runs_as_a_plain_page() -> anyhow::Result<()> {
+    let hosts = hosts_url()?;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
+    let browser = Browser::launch().await?;
+    browser
+        .goto_url(&format!("{hosts}scorm/package-1.2/launch.html"))
+        .await?;
+    let app = "document.getElementById('edgewise-frame').contentWindow.edgewise";
+    let started = browser
+        .wait_for(
+            &format!(
+                "(() => {{ try {{ return {app}.state().exercise.name === 'walk-face-loop-half-edge'; }} \
+                   catch (err) {{ return false; }} }})()"
+            ),
+            START_TIMEOUT,
+        )
+        .await;
+    if let Err(err) = started {
+        let seen = browser
+            .eval(&format!(
+                "const f = document.getElementById('edgewise-frame'); \
+                 let app = null; try {{ app = {app} ? {app}.state().exercise : 'no API'; }} catch (e) {{ app = String(e); }} \
+                 return {{ src: f.src, package: window.edgewisePackage && window.edgewisePackage.state(), app }};"
+            ))
+            .await?;
+        let console = browser.console_errors().await.unwrap_or_default();
+        anyhow::bail!("{err}\nseen: {seen}\nconsole: {console:#?}");
+    }
+    let line = browser
+        .eval("return document.getElementById('edgewise-lms').textContent;")
+        .await?;
+    assert!(
+        line.as_str().is_some_and(|l| l.contains("No LMS found")),
+        "{line}"
+    );
+    let state = browser
+        .eval("return window.edgewisePackage.state();")
+        .await?;
+    assert_eq!(state["lms"]["found"], false, "{state}");
+    assert_eq!(state["lms"]["errors"], json!([]), "{state}");
+    browser.screenshot("scorm-plain-page").await?;
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
