@@ -355,3 +355,51 @@ async fn a_package_without_an_lms_runs_as_a_plain_page() -> anyhow::Result<()> {
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// Share's package, built in the page from its own files, is byte for byte
+/// the one the library makes of dist/ (what `edgewise package` writes).
+#[tokio::test]
+async fn the_page_builds_the_package_the_command_builds() -> anyhow::Result<()> {
+    use base64::Engine as _;
+    use edgewise_model::package::{AppFiles, Item, Package, Scorm};
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
+    let browser = Browser::launch().await?;
+    browser.set_script_timeout(Duration::from_secs(120)).await?;
+    browser.open("").await?;
+    browser
+        .eval_async("window.edgewise.startExercise('kev-half-edge', { seed: 3 })")
+        .await?;
+    let exported = browser
+        .eval_async("window.edgewise.exportPackage('2004')")
+        .await?;
+    assert_eq!(exported["name"], "kev-half-edge-scorm-2004.zip");
+    let zipped = base64::engine::general_purpose::STANDARD
+        .decode(exported["base64"].as_str().context("base64")?)?;
+
+    let dist = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../dist");
+    let app = AppFiles::read(|name| std::fs::read(dist.join(name)).map_err(|e| e.to_string()))?;
+    let kev = exercise("kev-half-edge")?;
+    let title = kev.title.clone();
+    let package = Package::new(
+        Scorm::V2004,
+        &title,
+        "80",
+        vec![Item::Exercise(Box::new(kev))],
+    )?;
+    assert!(
+        zipped == package.zip(&app)?,
+        "the page's package ({} bytes) differs from the library's",
+        zipped.len()
+    );
+    let refused = browser
+        .refusal("window.edgewise.exportPackage('2005')")
+        .await?;
+    assert!(
+        refused
+            .as_str()
+            .is_some_and(|m| m.contains("'1.2' or '2004'")),
+        "{refused}"
+    );
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
