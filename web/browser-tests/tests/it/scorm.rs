@@ -10,7 +10,7 @@
 use std::time::Duration;
 
 use anyhow::Context as _;
-use edgewise_browser_tests::{Browser, ONE_HEAVY_PAGE_AT_A_TIME, student_writes};
+use edgewise_browser_tests::{Browser, ONE_HEAVY_PAGE_AT_A_TIME, SCREENS, student_writes};
 use edgewise_core::mesh::operations;
 use edgewise_model::practice::{Exercise, Task, catalog};
 use serde_json::{Value, json};
@@ -352,6 +352,42 @@ async fn a_package_without_an_lms_runs_as_a_plain_page() -> anyhow::Result<()> {
     assert_eq!(state["lms"]["found"], false, "{state}");
     assert_eq!(state["lms"]["errors"], json!([]), "{state}");
     browser.screenshot("scorm-plain-page").await?;
+
+    // On a phone the items become a row above the view, each a finger's
+    // height, and the view keeps most of the screen.
+    let phone = SCREENS
+        .iter()
+        .find(|s| s.name.starts_with("phone"))
+        .context("a phone")?;
+    browser.emulate(phone).await?;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let layout = browser
+        .eval(
+            "const nav = document.querySelector('nav').getBoundingClientRect(); \
+             const frame = document.getElementById('edgewise-frame').getBoundingClientRect(); \
+             const button = document.querySelector('nav button').getBoundingClientRect(); \
+             return { navBottom: nav.bottom, frameTop: frame.top, frameHeight: frame.height, \
+                      frameWidth: frame.width, buttonHeight: button.height, width: innerWidth, height: innerHeight };",
+        )
+        .await?;
+    let n = |key: &str| layout[key].as_f64().unwrap_or_default();
+    assert!(
+        n("frameTop") >= n("navBottom") - 1.0,
+        "the items sit above the view: {layout}"
+    );
+    assert!(
+        n("frameWidth") >= n("width") - 1.0,
+        "the view spans the phone: {layout}"
+    );
+    assert!(
+        n("frameHeight") >= 0.5 * n("height"),
+        "the view keeps most of it: {layout}"
+    );
+    assert!(
+        n("buttonHeight") >= 44.0,
+        "items are a finger's height: {layout}"
+    );
+    browser.screenshot("scorm-plain-page-phone").await?;
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
