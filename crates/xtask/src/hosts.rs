@@ -100,18 +100,9 @@ fn scorm_lms(root: &Path, source: &Path, out: &Path) -> anyhow::Result<()> {
     }
     for version in ["1.2", "2004"] {
         let zip = out.join(format!("edgewise-{version}.zip"));
-        let mut package = process::cargo();
+        let mut package = process::edgewise_package();
         package
             .current_dir(root)
-            .args([
-                "run",
-                "--quiet",
-                "--locked",
-                "--package",
-                "edgewise-cli",
-                "--",
-                "package",
-            ])
             .arg(&zip)
             .args([
                 "--scorm",

@@ -134,18 +134,8 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         }
         Command::Package { ref args } => {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
-            let mut package = process::cargo();
-            package
-                .args([
-                    "run",
-                    "--quiet",
-                    "--locked",
-                    "--package",
-                    "edgewise-cli",
-                    "--",
-                    "package",
-                ])
-                .args(args);
+            let mut package = process::edgewise_package();
+            package.args(args);
             if !args
                 .iter()
                 .any(|arg| arg == "--app" || arg.starts_with("--app="))

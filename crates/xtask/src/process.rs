@@ -13,6 +13,22 @@ pub fn cargo() -> Command {
     Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
 }
 
+/// `edgewise package`, built from this workspace as needed; the caller adds
+/// its arguments.
+pub fn edgewise_package() -> Command {
+    let mut cmd = cargo();
+    cmd.args([
+        "run",
+        "--quiet",
+        "--locked",
+        "--package",
+        "edgewise-cli",
+        "--",
+        "package",
+    ]);
+    cmd
+}
+
 /// Runs `cmd`, streaming its output, and fails with `what` if it fails.
 pub fn run(what: &str, cmd: &mut Command) -> anyhow::Result<()> {
     let status = cmd
