@@ -439,3 +439,65 @@ async fn the_page_builds_the_package_the_command_builds() -> anyhow::Result<()> 
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
+
+/// SCORM 1.2 keeps 4,096 characters of `suspend_data`. When the saved
+/// attempts pass it, the runtime leaves out the largest unfinished attempt's
+/// progress first, and keeps every score.
+#[tokio::test]
+async fn a_1_2_package_keeps_its_suspend_data_within_4096_characters() -> anyhow::Result<()> {
+    const LIMIT: usize = 4096;
+    let hosts = hosts_url()?;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
+    let browser = Browser::launch().await?;
+    // What an earlier visit left in the LMS: the walk finished at 5/5, the
+    // prediction open, and the do-it's writes filling the rest of the room.
+    let head = "E1|1|0|5~5~fs~|0~0~s~|0~0~s~1:7:1:999::";
+    let mut writes = String::new();
+    while head.len() + writes.len() + 3 <= LIMIT - 6 {
+        writes.push_str("+v,");
+    }
+    writes.push_str("+v");
+    let saved = format!("{head}{writes}");
+    assert!(saved.len() <= LIMIT && saved.len() > LIMIT - 12);
+    // Any page of the LMS's site reaches its storage.
+    browser
+        .goto_url(&format!("{hosts}scorm/scorm-again.js"))
+        .await?;
+    browser
+        .eval(&format!(
+            "localStorage.setItem('edgewise-lms-1.2', JSON.stringify({{ \
+               core: {{ exit: 'suspend', lesson_status: 'incomplete' }}, suspend_data: '{saved}' }})); \
+             return null;"
+        ))
+        .await?;
+    // That page's missing icon is the site's, not the package's.
+    browser.console_errors().await?;
+    browser
+        .goto_url(&format!("{hosts}scorm/?version=1.2"))
+        .await?;
+    exercise_on_screen(&browser, "predict-vertex-edges-half-edge", START_TIMEOUT).await?;
+    // The prediction's own attempt joins the data and passes the limit.
+    browser
+        .wait_for(
+            "window.lms.cmi().suspend_data.split('|')[4].includes(':')",
+            STEP_TIMEOUT,
+        )
+        .await?;
+    let now = cmi(&browser).await?;
+    let suspend = now["suspend_data"].as_str().context("suspend_data")?;
+    assert!(suspend.len() <= LIMIT, "{} characters", suspend.len());
+    assert!(
+        suspend.contains("|5~5~fs~|"),
+        "the walk's score is kept: {suspend}"
+    );
+    assert!(
+        !suspend.contains("+v"),
+        "the do-it's writes are left out: {suspend}"
+    );
+    assert_eq!((V1_2.entry)(&now), "resume", "{now}");
+    let state = package_state(&browser).await?;
+    assert_eq!(state["items"][0]["best"], 5, "{state}");
+    assert_eq!(state["lms"]["errors"], json!([]), "{state}");
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
