@@ -109,7 +109,7 @@
   const items = config.items.map((item) => Object.assign({}, item, {
     // Saved attempt (exerciseProgress()), the best finished score, and
     // whether an attempt is over.
-    progress: '', best: 0, bestMax: 0, finished: false, started: false, passed: false,
+    progress: '', best: 0, bestMax: 0, finished: false, started: false,
   }));
   const exercises = items.filter((item) => item.kind === 'exercise');
   let current = -1;
@@ -366,7 +366,6 @@
         item.bestMax = max;
       }
       item.finished = true;
-      item.passed = item.passed || detail.passed === true;
     }
     await keepProgress();
     if (mine === generation) save(true);

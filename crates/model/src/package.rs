@@ -355,7 +355,7 @@ impl Package {
 }
 
 /// A file name made of what every LMS and zip tool takes.
-fn file_stem(name: &str) -> String {
+pub fn file_stem(name: &str) -> String {
     name.chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '-' || c == '_' {

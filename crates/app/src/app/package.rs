@@ -2,7 +2,7 @@
 //! view on screen as a package an LMS imports, built in the browser from
 //! the app's own files, so a lecturer needs no command line.
 
-use edgewise_model::package::{Item, Package, Scorm};
+use edgewise_model::package::{Item, Package, PackageError, Scorm, file_stem};
 
 use super::EdgewiseApp;
 
@@ -26,28 +26,18 @@ impl EdgewiseApp {
                     .as_ref()
                     .ok_or("open a mesh or an exercise first")?;
                 let url = self.share_url(&crate::platform::page_base())?;
-                let item = Item::view(1, &url).map_err(|err| {
-                    err.to_string().trim_start_matches("--link 1: ").replacen(
-                        "its mesh",
-                        "this view's mesh",
-                        1,
-                    )
+                let item = Item::view(1, &url).map_err(|err| match err {
+                    PackageError::Link { reason, .. } => {
+                        format!("this view cannot be packaged: {reason}")
+                    }
+                    other => other.to_string(),
                 })?;
                 ("edgewise-view".to_owned(), self.embed_title(), item)
             }
         };
         let package =
             Package::new(scorm, &title, PASS_MARK, vec![item]).map_err(|err| err.to_string())?;
-        let stem: String = stem
-            .chars()
-            .map(|c| {
-                if c.is_ascii_alphanumeric() || c == '-' {
-                    c
-                } else {
-                    '-'
-                }
-            })
-            .collect();
+        let stem = file_stem(&stem);
         Ok((format!("{stem}-scorm-{}.zip", scorm.name()), package))
     }
 

@@ -189,19 +189,13 @@ pub fn writes_between(from: &Mesh, to: &Mesh) -> Vec<Write> {
             }
         }
     }
+    // A row deleted from the instance, or added and deleted in the same
+    // attempt (one the instance had deleted already takes no write).
     for kind in ElementKind::ALL {
-        for id in 0..to.count(kind).min(from.count(kind)) as u32 {
+        for id in 0..to.count(kind) as u32 {
             let element = ElementRef::new(kind, id);
-            if from.contains(element) && !to.contains(element) {
-                writes.push(Write::DeleteRow(element));
-            }
-        }
-    }
-    // A row added and deleted in the same attempt.
-    for kind in ElementKind::ALL {
-        for id in from.count(kind) as u32..to.count(kind) as u32 {
-            let element = ElementRef::new(kind, id);
-            if !to.contains(element) {
+            let new = id as usize >= from.count(kind);
+            if !to.contains(element) && (new || from.contains(element)) {
                 writes.push(Write::DeleteRow(element));
             }
         }
@@ -481,13 +475,8 @@ impl Progress {
 }
 
 /// At most 24 characters of hostile text, for a message.
-fn clip(text: &str) -> String {
-    let clipped: String = text.chars().take(24).collect();
-    if clipped.len() < text.len() {
-        format!("{clipped}…")
-    } else {
-        clipped
-    }
+fn clip(text: &str) -> std::borrow::Cow<'_, str> {
+    edgewise_core::lang::diagnostic::shorten(text, 24)
 }
 
 #[cfg(test)]

@@ -193,10 +193,7 @@ impl Session {
         };
         self.answers.push(given);
         self.last_action = Some(Action {
-            response: given.map_or_else(
-                || "null".to_owned(),
-                |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
-            ),
+            response: answer_name(structure, given),
             correct: click.right,
         });
         let (total, progress) = self.steps()?;
@@ -248,13 +245,7 @@ impl Session {
                 let structure = self.exercise.structure;
                 let given: Vec<String> = lookups
                     .iter()
-                    .map(|l| {
-                        let answer = l.answer.map_or_else(
-                            || "null".to_owned(),
-                            |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
-                        );
-                        format!("{} = {answer}", l.question)
-                    })
+                    .map(|l| format!("{} = {}", l.question, answer_name(structure, l.answer)))
                     .collect();
                 feedback.push_str(&format!(" The lookups give: {}.", given.join("; ")));
             }
@@ -440,6 +431,17 @@ impl Session {
 
 /// The seed of a later attempt: mixed, so that attempts of neighbouring
 /// seeds do not share instances.
+/// An answer as the card and a gradebook name it: `half-edge 7`, `null`.
+fn answer_name(
+    structure: edgewise_core::mesh::Structure,
+    answer: Option<edgewise_core::schema::ElementRef>,
+) -> String {
+    answer.map_or_else(
+        || "null".to_owned(),
+        |e| edgewise_core::mesh::Element::of(structure, e).to_string(),
+    )
+}
+
 fn attempt_seed(base: u64, attempt: u32) -> u64 {
     let mut mixed = Seeded::new(base ^ (u64::from(attempt) << 32));
     mixed.next()
