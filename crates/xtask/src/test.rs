@@ -14,7 +14,11 @@ const CHROMIUM: &str = "/usr/bin/chromium";
 const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
 const VULKAN_LOADER: &str = "/usr/lib/x86_64-linux-gnu/libvulkan.so.1";
 const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
-const BROWSER_TESTS: &str = "edgewise-browser-tests";
+/// The browser tests' target: `test = false` keeps it out of `--all-targets`,
+/// as it needs the served app.
+const BROWSER_TESTS: &str = "browser";
+/// Joins the arguments cargo-clippy hands clippy-driver.
+const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
 /// The crates that are compiled for the browser.
 const WASM_PACKAGES: [&str; 5] = [
     "edgewise-core",
@@ -27,7 +31,14 @@ const WASM_PACKAGES: [&str; 5] = [
 /// Runs every check CI runs and stops at the first failure.
 pub fn run_all(root: &Path) -> anyhow::Result<()> {
     let mut timings = Timings::default();
+    let result = run_steps(root, &mut timings);
+    timings.print();
+    result?;
+    eprintln!("==> all checks passed");
+    Ok(())
+}
 
+fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
     timings.step("architecture (tidy)", || tidy::run(root))?;
     timings.step("formatting", || {
         process::run(
@@ -35,53 +46,69 @@ pub fn run_all(root: &Path) -> anyhow::Result<()> {
             cargo().args(["fmt", "--all", "--", "--check"]),
         )
     })?;
-    timings.step("clippy (native)", || {
+    timings.step("native build and lints", || {
         process::run(
-            "clippy (native)",
-            cargo().args([
-                "clippy",
-                "--locked",
-                "--workspace",
-                "--all-targets",
-                "--",
-                "-D",
-                "warnings",
-            ]),
+            "native build and lints",
+            native_tests().args(["--no-run", "--all-targets"]),
+        )?;
+        // `--all-targets` outweighs `--test`, so the browser tests are built
+        // on their own, with everything they share already built.
+        process::run(
+            "the browser tests' build",
+            native_tests().args(["--no-run", "--test", BROWSER_TESTS]),
         )
     })?;
+    timings.step("native tests", run_native_tests)?;
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
     timings.step("clippy (wasm32)", || wasm_lints(root, toolchain))?;
-    timings.step("native tests", || {
-        // The 3D view's render tests draw on the CPU through lavapipe.
-        process::ensure_debian_packages(
-            "the 3D view's render tests (software Vulkan)",
-            &[
-                (VULKAN_LOADER, "libvulkan1"),
-                (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
-            ],
-        )?;
-        process::run(
-            "native tests",
-            cargo()
-                .args([
-                    "test",
-                    "--locked",
-                    "--workspace",
-                    "--exclude",
-                    BROWSER_TESTS,
-                ])
-                // The rendering tests fail, rather than skip, without an adapter.
-                .env("EDGEWISE_REQUIRE_GPU", "1"),
-        )
-    })?;
     let dist = timings.step("wasm build", || {
         web_build::build(root, web_build::Profile::Release)
     })?;
-    timings.step("browser tests", || browser_tests(root, &dist))?;
+    timings.step("browser tests", || browser_tests(root, &dist))
+}
 
-    timings.print();
-    eprintln!("==> all checks passed");
-    Ok(())
+/// The native tests, and then the doctests, which target flags leave out.
+/// The benchmarks were built and linted with the rest; run once each in
+/// criterion's test mode they would add half a minute and test nothing the
+/// tests do not.
+fn run_native_tests() -> anyhow::Result<()> {
+    // The 3D view's render tests draw on the CPU through lavapipe.
+    process::ensure_debian_packages(
+        "the 3D view's render tests (software Vulkan)",
+        &[
+            (VULKAN_LOADER, "libvulkan1"),
+            (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
+        ],
+    )?;
+    process::run(
+        "native tests",
+        native_tests()
+            .args(["--lib", "--bins", "--tests", "--examples"])
+            // The rendering tests fail, rather than skip, without an adapter.
+            .env("EDGEWISE_REQUIRE_GPU", "1"),
+    )?;
+    process::run("doctests", native_tests().arg("--doc"))
+}
+
+/// `cargo test` over the whole workspace, its own crates compiled by
+/// clippy-driver: one build both lints and links them, where `cargo clippy`
+/// then `cargo test` compiled every dependency twice. Every native step
+/// selects the same packages with the same environment, so that none
+/// rebuilds what another built (a narrower selection unifies features
+/// differently and recompiles the crates that share them).
+fn native_tests() -> std::process::Command {
+    let mut cmd = cargo();
+    cmd.args(["test", "--locked", "--workspace"])
+        .env("RUSTC_WORKSPACE_WRAPPER", clippy_driver())
+        .env("CLIPPY_ARGS", CLIPPY_ARGS);
+    cmd
+}
+
+/// The toolchain's clippy-driver, found once rather than through the rustup
+/// proxy at every compiler call.
+fn clippy_driver() -> std::ffi::OsString {
+    process::output_of(std::process::Command::new("rustup").args(["which", "clippy-driver"]))
+        .map_or_else(|| "clippy-driver".into(), |path| path.trim().into())
 }
 
 /// Lints the crates that run in the browser, as compiled for wasm32.
@@ -122,9 +149,9 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
     eprintln!("==> browser tests against {url}, hosts at {hosts_url}");
     process::run(
         "browser tests",
-        cargo()
+        native_tests()
             .current_dir(root)
-            .args(["test", "--locked", "--package", BROWSER_TESTS])
+            .args(["--test", BROWSER_TESTS])
             // One test at a time: two software-rendered pages side by side on
             // a two-core machine starved each other's renderers past the
             // tests' waits (a host page, then the edit menu's undo).
@@ -180,16 +207,15 @@ impl Timings {
         let start = Instant::now();
         let result = f();
         self.0.push((name, start.elapsed().as_secs_f64()));
-        if result.is_err() {
-            self.print();
-        }
         result
     }
 
     fn print(&self) {
         eprintln!("\n==> timings");
         for (name, secs) in &self.0 {
-            eprintln!("    {name:<20} {secs:>7.1} s");
+            eprintln!("    {name:<24} {secs:>7.1} s");
         }
+        let all: f64 = self.0.iter().map(|(_, secs)| secs).sum();
+        eprintln!("    {:<24} {all:>7.1} s", "all steps");
     }
 }
