@@ -515,7 +515,7 @@ impl Browser {
             "(async () => {{
              {FIRE_TOUCH}
              fireTouch('start', {x}, {y});
-             const steps = 8;
+             const steps = 4;
              for (let i = 1; i <= steps; i++) {{
                await new Promise((r) => requestAnimationFrame(r));
                fireTouch('move', {x}, {y} + {dy} * i / steps);

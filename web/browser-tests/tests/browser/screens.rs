@@ -252,8 +252,11 @@ impl Seen<'_> {
             }
             let (x, y) = rect.centre();
             if self.screen.touch {
-                // A thumb pushes the list up.
-                self.browser.swipe(x, y, -rect.h * 0.6).await?;
+                // A thumb pushes the list up by nearly its height: each
+                // swipe is a dozen frames, slow at a phone's ratio.
+                self.browser
+                    .swipe(x, rect.y + rect.h * 0.95, -rect.h * 0.9)
+                    .await?;
                 continue;
             }
             self.browser
