@@ -5,68 +5,29 @@
 //! libraries. Every builder check is on, each build allocates fresh tables,
 //! and dropping the result is not timed.
 //!
-//! `bare_counting_sort` is a reference measured alongside: the plainest
-//! half-edge build (counting sort of half-edges by start vertex, pairs found
-//! by scanning, no checks, no boundary), so figures taken on a busy machine
-//! can still be compared with figures taken on a quiet one.
+//! `floor` is the floor measured alongside (`support/floor.rs`): the plainest
+//! half-edge build from triangles, no checks and no boundary. After the
+//! criterion groups, `cargo bench` prints the builders' medians against it,
+//! measured in turns in the same run (`support/ratios.rs`), the table that
+//! `cargo xtask bench-wasm` prints for wasm32.
 //!
 //! Run: `cargo bench -p edgewise-core --bench mesh_build`.
 
-use std::hint::black_box;
+use std::{hint::black_box, time::Instant};
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use edgewise_core::mesh::{HalfEdgeMesh, Polygons, WingedEdgeMesh, generate};
-use glam::Vec3;
+use criterion::{BenchmarkId, Criterion, Throughput};
+use edgewise_core::mesh::{HalfEdgeMesh, WingedEdgeMesh, generate};
 
-const SIZES: [(u32, u32); 3] = [(100, 50), (316, 158), (1000, 500)];
-
-/// One row of the reference build: end vertex, face, pair, successor.
-type BareRow = [u32; 4];
-
-/// The reference build: triangles only, no checks. Returns the half-edge rows,
-/// the face table and the vertex table.
-fn bare_counting_sort(polygons: &Polygons) -> (Vec<BareRow>, Vec<u32>, Vec<(Vec3, u32)>) {
-    let indices: Vec<u32> = polygons.faces().flatten().copied().collect();
-    let n = indices.len();
-    let vertex_count = polygons.vertex_count();
-    let next = |h: usize| if h % 3 == 2 { h - 2 } else { h + 1 };
-    let mut start = vec![0u32; vertex_count + 1];
-    for &a in &indices {
-        start[a as usize + 1] += 1;
-    }
-    for v in 1..=vertex_count {
-        start[v] += start[v - 1];
-    }
-    let mut cursor = start.clone();
-    let mut outgoing = vec![0u32; n];
-    for (h, &a) in indices.iter().enumerate() {
-        outgoing[cursor[a as usize] as usize] = h as u32;
-        cursor[a as usize] += 1;
-    }
-    let mut rows = Vec::with_capacity(n);
-    let mut incident = vec![u32::MAX; vertex_count];
-    for h in 0..n {
-        let (a, b) = (indices[h], indices[next(h)]);
-        let around_b = &outgoing[start[b as usize] as usize..start[b as usize + 1] as usize];
-        let pair = around_b
-            .iter()
-            .copied()
-            .find(|&g| indices[next(g as usize)] == a)
-            .unwrap_or(u32::MAX);
-        rows.push([b, (h / 3) as u32, pair, next(h) as u32]);
-        if incident[b as usize] == u32::MAX {
-            incident[b as usize] = h as u32;
-        }
-    }
-    let faces = (0..n as u32 / 3).map(|f| 3 * f).collect();
-    let vertices = polygons.positions().iter().copied().zip(incident).collect();
-    (rows, faces, vertices)
-}
+#[path = "support/floor.rs"]
+mod floor;
+#[path = "support/ratios.rs"]
+mod ratios;
 
 fn mesh_build(c: &mut Criterion) {
     let mut group = c.benchmark_group("mesh_build");
-    for (nu, nv) in SIZES {
+    for (nu, nv) in ratios::SIZES {
         let polygons = generate::torus(nu, nv);
+        let indices: Vec<u32> = polygons.faces().flatten().copied().collect();
         let label = format!("{nu}x{nv}");
         group.throughput(Throughput::Elements(polygons.face_count() as u64));
         group.sample_size(if polygons.face_count() > 500_000 {
@@ -90,10 +51,12 @@ fn mesh_build(c: &mut Criterion) {
             },
         );
         group.bench_with_input(
-            BenchmarkId::new("bare_counting_sort", &label),
+            BenchmarkId::new("floor", &label),
             &polygons,
             |b, polygons| {
-                b.iter_with_large_drop(|| bare_counting_sort(black_box(polygons)));
+                b.iter_with_large_drop(|| {
+                    floor::half_edge(black_box(&indices), black_box(polygons.positions()))
+                });
             },
         );
 
@@ -117,5 +80,18 @@ fn mesh_build(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, mesh_build);
-criterion_main!(benches);
+fn main() {
+    let mut criterion = Criterion::default().configure_from_args();
+    mesh_build(&mut criterion);
+    criterion.final_summary();
+    // `cargo bench` passes --bench; `cargo test --benches` runs each
+    // benchmark once, unoptimised, where the ratios would take minutes.
+    if std::env::args().any(|arg| arg == "--bench") {
+        let start = Instant::now();
+        let rows = ratios::measure(&|| start.elapsed().as_secs_f64() * 1e3);
+        println!(
+            "\nThe builders against the floor, natively:\n\n{}",
+            ratios::table(&rows, "≤ 1.2×")
+        );
+    }
+}

@@ -14,6 +14,7 @@
 //! - `fuzz [TARGET] [--seconds N]` fuzzes with cargo-fuzz (nightly only);
 //!   `fuzz --make-seeds` rebuilds the seed corpus in fuzz/seeds/.
 
+mod bench_wasm;
 mod fuzz;
 mod hosts;
 mod process;
@@ -83,6 +84,9 @@ enum Command {
     /// Build dist/, then measure it in headless Chromium beside a bare WebGL2
     /// page drawing the same torus, and print the table (see README).
     BenchWeb,
+    /// Build the `mesh_build` benchmark's builders and floor for wasm32 and
+    /// print their medians and ratios under node (docs/performance.md).
+    BenchWasm,
     /// Fuzz one target, or each in turn, with cargo-fuzz and libFuzzer (needs
     /// a nightly toolchain; see docs/reliability.md), then print the
     /// executions, seconds and crashes of each.
@@ -150,6 +154,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
             let dist = web_build::build(&root, web_build::Profile::Release)?;
             test::bench_web(&root, &dist)
         }
+        Command::BenchWasm => bench_wasm::run(&root),
         Command::Fuzz {
             ref target,
             seconds,

@@ -31,6 +31,7 @@ use lexer::Token;
 /// on none.
 pub const LAYERS: &[(&str, &str, u8)] = &[
     ("edgewise-core", "crates/core", 0),
+    ("edgewise-bench-wasm", "crates/bench-wasm", 1),
     ("edgewise-pictures", "crates/pictures", 1),
     ("edgewise-model", "crates/model", 2),
     ("edgewise-renderer", "crates/renderer", 2),
