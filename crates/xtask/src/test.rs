@@ -17,11 +17,15 @@ const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 /// The browser tests' target: `test = false` keeps it out of `--all-targets`,
 /// as it needs the served app.
 const BROWSER_TESTS: &str = "browser";
+/// Their crate, whose `bench_web` binary is `cargo xtask bench-web`.
+const BROWSER_TESTS_PACKAGE: &str = "edgewise-browser-tests";
 /// Joins the arguments cargo-clippy hands clippy-driver.
 const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
-/// The crates that are compiled for the browser.
-const WASM_PACKAGES: [&str; 5] = [
+/// The crates that are compiled for wasm32: the browser's, and the wasm32
+/// benchmark, whose code exists only there.
+const WASM_PACKAGES: [&str; 6] = [
     "edgewise-core",
+    "edgewise-bench-wasm",
     "edgewise-pictures",
     "edgewise-model",
     "edgewise-renderer",
@@ -181,7 +185,7 @@ pub fn bench_web(root: &Path, dist: &Path) -> anyhow::Result<()> {
                 "run",
                 "--locked",
                 "--package",
-                BROWSER_TESTS,
+                BROWSER_TESTS_PACKAGE,
                 "--bin",
                 "bench_web",
             ])
