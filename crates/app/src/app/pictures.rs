@@ -91,8 +91,15 @@ impl EdgewiseApp {
 
     /// The screenshot asked for, once the frame is drawn.
     pub fn take_screenshot(&mut self) -> Option<Arc<egui::ColorImage>> {
-        let image = self.screenshot.as_ref()?.lock().ok()?.take()?;
-        self.screenshot = None;
-        Some(image)
+        let image = self.screenshot.as_ref()?.lock().ok()?.take();
+        if image.is_some() {
+            self.screenshot = None;
+        } else if let Some(ctx) = &self.ctx {
+            // The pixels are read back a frame or more after the one drawn,
+            // and egui draws no frame for their arrival: on an idle page the
+            // wait would last until the next pointer move.
+            ctx.request_repaint();
+        }
+        image
     }
 }
