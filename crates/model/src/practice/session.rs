@@ -429,8 +429,6 @@ impl Session {
     }
 }
 
-/// The seed of a later attempt: mixed, so that attempts of neighbouring
-/// seeds do not share instances.
 /// An answer as the card and a gradebook name it: `half-edge 7`, `null`.
 fn answer_name(
     structure: edgewise_core::mesh::Structure,
@@ -442,6 +440,8 @@ fn answer_name(
     )
 }
 
+/// The seed of a later attempt: mixed, so that attempts of neighbouring
+/// seeds do not share instances.
 fn attempt_seed(base: u64, attempt: u32) -> u64 {
     let mut mixed = Seeded::new(base ^ (u64::from(attempt) << 32));
     mixed.next()
