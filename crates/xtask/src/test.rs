@@ -53,13 +53,13 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
     timings.step("native build and lints", || {
         process::run(
             "native build and lints",
-            native_tests().args(["--no-run", "--all-targets"]),
+            workspace_test().args(["--no-run", "--all-targets"]),
         )?;
         // `--all-targets` outweighs `--test`, so the browser tests are built
         // on their own, with everything they share already built.
         process::run(
             "the browser tests' build",
-            native_tests().args(["--no-run", "--test", BROWSER_TESTS]),
+            workspace_test().args(["--no-run", "--test", BROWSER_TESTS]),
         )
     })?;
     timings.step("native tests", run_native_tests)?;
@@ -86,21 +86,21 @@ fn run_native_tests() -> anyhow::Result<()> {
     )?;
     process::run(
         "native tests",
-        native_tests()
+        workspace_test()
             .args(["--lib", "--bins", "--tests", "--examples"])
             // The rendering tests fail, rather than skip, without an adapter.
             .env("EDGEWISE_REQUIRE_GPU", "1"),
     )?;
-    process::run("doctests", native_tests().arg("--doc"))
+    process::run("doctests", workspace_test().arg("--doc"))
 }
 
 /// `cargo test` over the whole workspace, its own crates compiled by
 /// clippy-driver: one build both lints and links them, where `cargo clippy`
-/// then `cargo test` compiled every dependency twice. Every native step
-/// selects the same packages with the same environment, so that none
-/// rebuilds what another built (a narrower selection unifies features
+/// then `cargo test` compiled every dependency twice. Every step that
+/// builds natively (the browser tests' too) selects the same packages with
+/// the same environment, so that none rebuilds what another built (a narrower selection unifies features
 /// differently and recompiles the crates that share them).
-fn native_tests() -> std::process::Command {
+fn workspace_test() -> std::process::Command {
     let mut cmd = cargo();
     cmd.args(["test", "--locked", "--workspace"])
         .env("RUSTC_WORKSPACE_WRAPPER", clippy_driver())
@@ -153,7 +153,7 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
     eprintln!("==> browser tests against {url}, hosts at {hosts_url}");
     process::run(
         "browser tests",
-        native_tests()
+        workspace_test()
             .current_dir(root)
             .args(["--test", BROWSER_TESTS])
             // One test at a time: two software-rendered pages side by side on
