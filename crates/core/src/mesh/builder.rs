@@ -20,6 +20,13 @@
 //! vertex is `indices[h]`. The half-edge build writes its rows in the first
 //! pass and pairs straight into them; besides the rows it holds only a few
 //! per-vertex tables, so the peak stays near the final size.
+//!
+//! The browser's build optimises for size, and there LLVM leaves `Vec`
+//! indexing and `push`, closures and small trait methods as calls. So the
+//! hot loops index slices of tables sized up front, and the hooks called per
+//! corner or per step ([`Assembly`], [`Layout`], [`Pairs`]) are
+//! `#[inline(always)]`: that made the wasm32 half-edge build three times
+//! faster (docs/performance.md).
 
 use super::error::{BuildError, BuildWarning, FaceRef};
 use super::ids::{FaceId, VertexId};
@@ -37,6 +44,8 @@ const FORWARD: u32 = 1 << 31;
 /// Ends a bucket chain (with or without the [`FORWARD`] bit, a value typed ids
 /// can hold and no half-edge has).
 const CHAIN_END: u32 = FORWARD - 2;
+/// Buckets of [`pair_up`] up to this size are gathered on the stack.
+const SMALL_BUCKET: usize = 16;
 /// Half-edge numbers must stay below [`CHAIN_END`] and leave the [`FORWARD`]
 /// bit free; boundary half-edges (at most one per interior one) then stay
 /// below [`UNPAIRED`].
@@ -48,14 +57,16 @@ pub(crate) trait Assembly: Sized {
     /// The structure built.
     type Mesh;
     /// Where steps 2 and 3 write each interior half-edge's pair.
-    type Pairs: Pairs;
+    type Pairs: Pairs + ?Sized;
 
-    /// Empty tables for `polygons`, which are not checked yet: sizes only.
+    /// Tables for `polygons`, which are not checked yet: sizes only, with a
+    /// row for every corner.
     fn new(polygons: &Polygons) -> Self;
 
-    /// Step 1, for interior half-edge `h` ending at vertex `end` in `face`,
-    /// called for `h = 0, 1, 2, ...` in turn: records it, storing `link` as
-    /// its pair (see [`scan_faces`]).
+    /// Step 1, for interior half-edge `h` ending at vertex `end` (in range)
+    /// in `face`, called for `h = 0, 1, 2, ...` in turn: records it, storing
+    /// `link` as its pair (see [`scan_faces`]). `#[inline(always)]`, as are
+    /// the other hooks called per corner or per step (see the module notes).
     fn corner<L: Layout>(&mut self, layout: &L, h: u32, end: u32, face: u32, link: u32);
 
     /// The pair storage, filled by [`corner`](Self::corner).
@@ -103,20 +114,12 @@ fn assemble<A: Assembly, L: Layout>(
         valence,
         heads,
         warnings,
-    } = scan_faces(polygons, triangles, |h, _, end, face, link| {
-        assembly.corner(layout, h, end, face, link);
-    })?;
+    } = scan_faces(polygons, layout, triangles, &mut assembly)?;
     let unpaired = pair_up(polygons, layout, &heads, assembly.pairs())?;
     drop(heads);
     let boundary = link_boundary(polygons, layout, &valence, unpaired, assembly.pairs())?;
     assembly.boundary(polygons.indices(), &boundary);
-    check_fans(
-        polygons,
-        layout,
-        &valence,
-        |v| assembly.first_incoming(v),
-        |h| assembly.around(layout, &boundary, h),
-    )?;
+    check_fans(polygons, layout, &valence, &boundary, &assembly)?;
     drop(valence);
     Ok((assembly.finish(polygons, layout, boundary), warnings))
 }
@@ -133,15 +136,15 @@ pub(crate) trait Layout {
 struct Triangles;
 
 impl Layout for Triangles {
-    #[inline]
+    #[inline(always)]
     fn next(&self, h: u32) -> u32 {
         if h % 3 == 2 { h - 2 } else { h + 1 }
     }
-    #[inline]
+    #[inline(always)]
     fn prev(&self, h: u32) -> u32 {
         if h.is_multiple_of(3) { h + 2 } else { h - 1 }
     }
-    #[inline]
+    #[inline(always)]
     fn face(&self, h: u32) -> u32 {
         h / 3
     }
@@ -149,7 +152,9 @@ impl Layout for Triangles {
 
 /// Faces of any size: a corner-to-face table plus the face offsets.
 pub(crate) struct General<'a> {
-    face_of: Vec<u32>,
+    /// A boxed slice, whose indexing is inline where a `Vec`'s is a call
+    /// (see the module notes).
+    face_of: Box<[u32]>,
     offsets: &'a [usize],
 }
 
@@ -162,10 +167,13 @@ impl<'a> General<'a> {
                 face_of.extend(std::iter::repeat_n(face as u32, end - start));
             }
         }
-        Self { face_of, offsets }
+        Self {
+            face_of: face_of.into_boxed_slice(),
+            offsets,
+        }
     }
 
-    #[inline]
+    #[inline(always)]
     fn bounds(&self, h: u32) -> (u32, u32) {
         let face = self.face_of[h as usize] as usize;
         (self.offsets[face] as u32, self.offsets[face + 1] as u32)
@@ -173,17 +181,17 @@ impl<'a> General<'a> {
 }
 
 impl Layout for General<'_> {
-    #[inline]
+    #[inline(always)]
     fn next(&self, h: u32) -> u32 {
         let (start, end) = self.bounds(h);
         if h + 1 == end { start } else { h + 1 }
     }
-    #[inline]
+    #[inline(always)]
     fn prev(&self, h: u32) -> u32 {
         let (start, end) = self.bounds(h);
         if h == start { end - 1 } else { h - 1 }
     }
-    #[inline]
+    #[inline(always)]
     fn face(&self, h: u32) -> u32 {
         self.face_of[h as usize]
     }
@@ -199,16 +207,16 @@ pub(crate) trait Pairs {
     fn end_or_start<L: Layout>(&self, layout: &L, indices: &[u32], h: u32, forward: bool) -> u32;
 }
 
-impl Pairs for Vec<u32> {
-    #[inline]
+impl Pairs for [u32] {
+    #[inline(always)]
     fn pair(&self, h: u32) -> u32 {
         self[h as usize]
     }
-    #[inline]
+    #[inline(always)]
     fn set_pair(&mut self, h: u32, pair: u32) {
         self[h as usize] = pair;
     }
-    #[inline]
+    #[inline(always)]
     fn end_or_start<L: Layout>(&self, layout: &L, indices: &[u32], h: u32, forward: bool) -> u32 {
         indices[if forward { layout.next(h) } else { h } as usize]
     }
@@ -243,17 +251,19 @@ fn all_triangles(polygons: &Polygons) -> bool {
 
 /// Step 1, in one pass over the faces: refuses faces that are too small, out
 /// of range or repeat a vertex, counts the corners at each vertex, and hands
-/// every interior half-edge `h = a→b` of face `f` to `corner(h, a, b, f, link)`.
+/// every interior half-edge `h = a→b` of face `f` to
+/// [`Assembly::corner`]`(h, b, f, link)`.
 ///
 /// `link` threads the half-edges into one chain per bucket (the edges whose
 /// lower-numbered end is the same vertex): the caller stores it as the
 /// half-edge's pair until [`pair_up`] replaces it, so the buckets need no
 /// table of their own. It is the next half-edge of the chain (or
 /// [`CHAIN_END`]) plus the [`FORWARD`] bit when `a < b`.
-fn scan_faces(
+fn scan_faces<A: Assembly, L: Layout>(
     polygons: &Polygons,
+    layout: &L,
     triangles: bool,
-    mut corner: impl FnMut(u32, u32, u32, u32, u32),
+    assembly: &mut A,
 ) -> Result<Scanned, BuildError> {
     let vertex_count = polygons.vertex_count();
     if vertex_count >= UNPAIRED as usize {
@@ -272,13 +282,10 @@ fn scan_faces(
         });
     }
     let indices = polygons.indices();
-    let mut valence = vec![0u32; vertex_count];
-    let mut heads = vec![CHAIN_END; vertex_count];
-    let mut half_edge = |h: u32, a: u32, b: u32, face: u32| {
-        let head = &mut heads[a.min(b) as usize];
-        corner(h, a, b, face, *head | if a < b { FORWARD } else { 0 });
-        *head = h;
-    };
+    let mut valence_table = vec![0u32; vertex_count];
+    let mut heads_table = vec![CHAIN_END; vertex_count];
+    // Slices in the hot loop (see the module notes).
+    let (valence, heads) = (&mut valence_table[..], &mut heads_table[..]);
     if triangles {
         for (face, corners) in (0u32..).zip(indices.chunks_exact(3)) {
             let &[a, b, c] = corners else { continue };
@@ -300,13 +307,13 @@ fn scan_faces(
                     vertex,
                 });
             }
-            for v in [a, b, c] {
-                valence[v as usize] += 1;
-            }
+            valence[a as usize] += 1;
+            valence[b as usize] += 1;
+            valence[c as usize] += 1;
             let h = 3 * face;
-            half_edge(h, a, b, face);
-            half_edge(h + 1, b, c, face);
-            half_edge(h + 2, c, a, face);
+            assembly.corner(layout, h, b, face, chain(heads, h, a, b));
+            assembly.corner(layout, h + 1, c, face, chain(heads, h + 1, b, c));
+            assembly.corner(layout, h + 2, a, face, chain(heads, h + 2, c, a));
         }
     } else {
         // Only faces with many corners use this (last face that used each vertex).
@@ -352,7 +359,8 @@ fn scan_faces(
             for (k, &a) in corners.iter().enumerate() {
                 valence[a as usize] += 1;
                 let b = corners.get(k + 1).copied().unwrap_or(corners[0]);
-                half_edge((start + k) as u32, a, b, face as u32);
+                let h = (start + k) as u32;
+                assembly.corner(layout, h, b, face as u32, chain(heads, h, a, b));
             }
         }
     }
@@ -365,10 +373,20 @@ fn scan_faces(
         })
         .collect();
     Ok(Scanned {
-        valence,
-        heads,
+        valence: valence_table,
+        heads: heads_table,
         warnings,
     })
+}
+
+/// Threads half-edge `h = a→b` onto the bucket chain of `min(a, b)`, and
+/// returns its link (see [`scan_faces`]).
+#[inline(always)]
+fn chain(heads: &mut [u32], h: u32, a: u32, b: u32) -> u32 {
+    let head = &mut heads[a.min(b) as usize];
+    let link = *head | if a < b { FORWARD } else { 0 };
+    *head = h;
+    link
 }
 
 /// Step 2: pairs every interior half-edge, refusing edges with more than two
@@ -380,26 +398,46 @@ fn pair_up<L: Layout>(
     polygons: &Polygons,
     layout: &L,
     heads: &[u32],
-    pairs: &mut impl Pairs,
+    pairs: &mut (impl Pairs + ?Sized),
 ) -> Result<Vec<u32>, BuildError> {
     let indices = polygons.indices();
     let mut unpaired = Vec::new();
     // Entry: the upper end in the high half, the half-edge and its direction
-    // in the low half. Reused for every bucket.
-    let mut bucket: Vec<u64> = Vec::new();
+    // in the low half. A bucket is gathered on the stack while it is small
+    // (most hold about three entries), so no `push` is called per entry.
+    let mut small = [0u64; SMALL_BUCKET];
+    let mut large: Vec<u64> = Vec::new();
     for (low, &head) in (0u32..).zip(heads) {
-        bucket.clear();
+        let mut len = 0;
         let mut h = head;
         while h != CHAIN_END {
             let link = pairs.pair(h);
             let forward = link & FORWARD;
             let high = pairs.end_or_start(layout, indices, h, forward != 0);
-            bucket.push((u64::from(high) << 32) | u64::from(h | forward));
+            let entry = (u64::from(high) << 32) | u64::from(h | forward);
+            if len < SMALL_BUCKET {
+                small[len] = entry;
+            } else {
+                if len == SMALL_BUCKET {
+                    large.clear();
+                    large.extend_from_slice(&small);
+                }
+                large.push(entry);
+            }
+            len += 1;
             h = link & !FORWARD;
         }
-        if bucket.len() > 1 {
+        let bucket = if len <= SMALL_BUCKET {
+            &mut small[..len]
+        } else {
+            &mut large[..]
+        };
+        if len <= SMALL_BUCKET {
+            insertion_sort(bucket);
+        } else {
             bucket.sort_unstable();
         }
+        let bucket = &*bucket;
         let mut i = 0;
         while i < bucket.len() {
             let high = (bucket[i] >> 32) as u32;
@@ -453,6 +491,20 @@ fn pair_up<L: Layout>(
     Ok(unpaired)
 }
 
+/// Sorts a small bucket in place, with no call (see [`SMALL_BUCKET`]).
+#[inline(always)]
+fn insertion_sort(bucket: &mut [u64]) {
+    for i in 1..bucket.len() {
+        let entry = bucket[i];
+        let mut j = i;
+        while j > 0 && bucket[j - 1] > entry {
+            bucket[j] = bucket[j - 1];
+            j -= 1;
+        }
+        bucket[j] = entry;
+    }
+}
+
 /// The boundary half-edges: boundary half-edge `i` is number `n + i`.
 pub(crate) struct Boundary {
     /// The interior pair of each boundary half-edge.
@@ -469,7 +521,7 @@ fn link_boundary<L: Layout>(
     layout: &L,
     valence: &[u32],
     twin: Vec<u32>,
-    pairs: &mut impl Pairs,
+    pairs: &mut (impl Pairs + ?Sized),
 ) -> Result<Boundary, BuildError> {
     let indices = polygons.indices();
     let n = indices.len() as u32;
@@ -508,32 +560,37 @@ fn link_boundary<L: Layout>(
 
 /// Step 4: the paper's loop (successor, then pair) from the first half-edge
 /// ending at each vertex must meet every corner at the vertex, or the vertex
-/// joins several fans. `rotate` is one step of the loop.
-fn check_fans<L: Layout>(
+/// joins several fans.
+fn check_fans<A: Assembly, L: Layout>(
     polygons: &Polygons,
     layout: &L,
     valence: &[u32],
-    first_incoming: impl Fn(usize) -> u32,
-    rotate: impl Fn(u32) -> u32,
+    boundary: &Boundary,
+    assembly: &A,
 ) -> Result<(), BuildError> {
     let n = polygons.corner_count() as u32;
     for (v, &count) in valence.iter().enumerate() {
         if count == 0 {
             continue;
         }
-        let first = first_incoming(v);
+        let first = assembly.first_incoming(v);
         let mut h = first;
         let mut seen = 0;
         let mut closed = false;
-        for _ in 0..=2 * u64::from(count) {
+        // At most 2 × count + 1 steps: a fan meets each corner once, and
+        // a boundary half-edge between corners.
+        let mut steps = 2 * u64::from(count) + 1;
+        while steps > 0 {
             seen += u32::from(h < n);
-            h = rotate(h);
+            h = assembly.around(layout, boundary, h);
             if h == first {
                 closed = true;
                 break;
             }
+            steps -= 1;
         }
         if !closed || seen != count {
+            let rotate = |h| assembly.around(layout, boundary, h);
             return Err(fan_error(polygons, layout, v as u32, first, count, &rotate));
         }
     }

@@ -73,16 +73,16 @@ impl PartialEq for HalfEdgeMesh {
     }
 }
 
-impl Pairs for Vec<HalfEdge> {
-    #[inline]
+impl Pairs for [HalfEdge] {
+    #[inline(always)]
     fn pair(&self, h: u32) -> u32 {
         self[h as usize].pair_edge.raw()
     }
-    #[inline]
+    #[inline(always)]
     fn set_pair(&mut self, h: u32, pair: u32) {
         self[h as usize].pair_edge = HalfEdgeId::new(pair);
     }
-    #[inline]
+    #[inline(always)]
     fn end_or_start<L: Layout>(&self, layout: &L, _: &[u32], h: u32, forward: bool) -> u32 {
         // Both rows lie in the same face, usually in the same cache line.
         self[if forward { h } else { layout.prev(h) } as usize]
@@ -96,7 +96,7 @@ impl Pairs for Vec<HalfEdge> {
 /// final size. Faces are added last.
 impl builder::Assembly for HalfEdgeMesh {
     type Mesh = Self;
-    type Pairs = Vec<HalfEdge>;
+    type Pairs = [HalfEdge];
 
     fn new(polygons: &Polygons) -> Self {
         let vertices = polygons
@@ -110,7 +110,7 @@ impl builder::Assembly for HalfEdgeMesh {
         Self {
             vertices,
             faces: Vec::new(),
-            half_edges: Vec::with_capacity(polygons.corner_count()),
+            half_edges: vec![HalfEdge::default(); polygons.corner_count()],
             predecessors: OnceLock::new(),
             deleted: Deleted::default(),
         }
@@ -118,22 +118,23 @@ impl builder::Assembly for HalfEdgeMesh {
 
     /// Writes the row, with the bucket link as pair for now; the first
     /// half-edge to end at a vertex is its lowest-numbered one.
-    #[inline]
+    #[inline(always)]
     fn corner<L: Layout>(&mut self, layout: &L, h: u32, end: u32, face: u32, link: u32) {
-        self.half_edges.push(HalfEdge {
+        let rows: &mut [HalfEdge] = &mut self.half_edges;
+        rows[h as usize] = HalfEdge {
             end_vertex: VertexId::new(end),
             face: Some(FaceId::new(face)),
             pair_edge: HalfEdgeId::new(link),
             successor_edge: HalfEdgeId::new(layout.next(h)),
-        });
-        if let Some(vertex) = self.vertices.get_mut(end as usize)
-            && vertex.incident_edge.is_none()
-        {
+        };
+        let vertices: &mut [Vertex] = &mut self.vertices;
+        let vertex = &mut vertices[end as usize];
+        if vertex.incident_edge.is_none() {
             vertex.incident_edge = Some(HalfEdgeId::new(h));
         }
     }
 
-    fn pairs(&mut self) -> &mut Vec<HalfEdge> {
+    fn pairs(&mut self) -> &mut [HalfEdge] {
         &mut self.half_edges
     }
 
@@ -149,14 +150,24 @@ impl builder::Assembly for HalfEdgeMesh {
         }
     }
 
+    #[inline(always)]
     fn first_incoming(&self, v: usize) -> u32 {
-        self.vertices[v].incident_edge.map_or(NONE, HalfEdgeId::raw)
+        let vertices: &[Vertex] = &self.vertices;
+        vertices[v].incident_edge.map_or(NONE, HalfEdgeId::raw)
     }
 
-    /// Every row is written by now, boundary ones included.
-    fn around<L: Layout>(&self, _: &L, _: &Boundary, h: u32) -> u32 {
-        let successor = self.half_edges[h as usize].successor_edge;
-        self.half_edges[successor.index()].pair_edge.raw()
+    /// Every row is written by now, boundary ones included. An interior
+    /// successor is arithmetic, which saves the loop a dependent read.
+    #[inline(always)]
+    fn around<L: Layout>(&self, layout: &L, boundary: &Boundary, h: u32) -> u32 {
+        let rows: &[HalfEdge] = &self.half_edges;
+        let interior = (rows.len() - boundary.twin.len()) as u32;
+        let successor = if h < interior {
+            layout.next(h)
+        } else {
+            rows[h as usize].successor_edge.raw()
+        };
+        rows[successor as usize].pair_edge.raw()
     }
 
     /// Each face's incident edge is its first half-edge.

@@ -75,49 +75,55 @@ struct WingedEdgeAssembly {
 
 impl builder::Assembly for WingedEdgeAssembly {
     type Mesh = WingedEdgeMesh;
-    type Pairs = Vec<u32>;
+    type Pairs = [u32];
 
     fn new(polygons: &Polygons) -> Self {
         Self {
-            pair: Vec::with_capacity(polygons.corner_count()),
+            pair: vec![0; polygons.corner_count()],
             first_incoming: vec![NONE; polygons.vertex_count()],
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn corner<L: Layout>(&mut self, _: &L, h: u32, end: u32, _: u32, link: u32) {
-        self.pair.push(link);
-        if let Some(slot) = self.first_incoming.get_mut(end as usize)
-            && *slot == NONE
-        {
+        let pair: &mut [u32] = &mut self.pair;
+        pair[h as usize] = link;
+        let first_incoming: &mut [u32] = &mut self.first_incoming;
+        let slot = &mut first_incoming[end as usize];
+        if *slot == NONE {
             *slot = h;
         }
     }
 
-    fn pairs(&mut self) -> &mut Vec<u32> {
+    fn pairs(&mut self) -> &mut [u32] {
         &mut self.pair
     }
 
     /// Boundary half-edges get no rows: their links stay in `boundary`.
     fn boundary(&mut self, _: &[u32], _: &Boundary) {}
 
+    #[inline(always)]
     fn first_incoming(&self, v: usize) -> u32 {
         self.first_incoming[v]
     }
 
     /// Half-edge `h` is interior below `n`, the number of corners (one pair
     /// entry each), and boundary half-edge `h - n` from there on.
+    #[inline(always)]
     fn around<L: Layout>(&self, layout: &L, boundary: &Boundary, h: u32) -> u32 {
-        let n = self.pair.len() as u32;
+        let pair: &[u32] = &self.pair;
+        let n = pair.len() as u32;
         let s = if h < n {
             layout.next(h)
         } else {
-            boundary.next[(h - n) as usize]
+            let next: &[u32] = &boundary.next;
+            next[(h - n) as usize]
         };
         if s < n {
-            self.pair[s as usize]
+            pair[s as usize]
         } else {
-            boundary.twin[(s - n) as usize]
+            let twin: &[u32] = &boundary.twin;
+            twin[(s - n) as usize]
         }
     }
 
@@ -141,7 +147,10 @@ impl builder::Assembly for WingedEdgeAssembly {
         } = boundary;
         // Number the edges in place: an interior half-edge whose pair comes later
         // (or is a boundary half-edge) is the first appearance of its edge.
-        let mut edge_of = pair;
+        // Slices of tables sized up front in the loops over half-edges and
+        // edges, as in the builder (see its module notes).
+        let mut edge_of_table = pair;
+        let edge_of = &mut edge_of_table[..];
         let mut edge_count = 0u32;
         for h in 0..edge_of.len() {
             let p = edge_of[h];
@@ -152,15 +161,20 @@ impl builder::Assembly for WingedEdgeAssembly {
                 edge_of[p as usize]
             };
         }
-        let mut edges: Vec<WingedEdge> = Vec::with_capacity(edge_count as usize);
-        for (h, &e) in (0..n).zip(&edge_of) {
+        let mut edges_table = vec![WingedEdge::default(); edge_count as usize];
+        let edges = &mut edges_table[..];
+        // Edges are numbered in order of first appearance.
+        let mut new_edge = 0;
+        for (h, &e) in (0..n).zip(&*edge_of) {
             let next = layout.next(h);
             let face = Some(FaceId::new(layout.face(h)));
             // Counter-clockwise next is the clockwise predecessor, and back.
             let predecessor = EdgeId::new(edge_of[next as usize]);
             let successor = EdgeId::new(edge_of[layout.prev(h) as usize]);
-            if e as usize == edges.len() {
-                edges.push(WingedEdge {
+            let edge = &mut edges[e as usize];
+            if e == new_edge {
+                new_edge += 1;
+                *edge = WingedEdge {
                     start_vertex: VertexId::new(indices[h as usize]),
                     end_vertex: VertexId::new(indices[next as usize]),
                     left_face: face,
@@ -169,8 +183,8 @@ impl builder::Assembly for WingedEdgeAssembly {
                     left_successor: successor,
                     right_predecessor: EdgeId::new(e),
                     right_successor: EdgeId::new(e),
-                });
-            } else if let Some(edge) = edges.get_mut(e as usize) {
+                };
+            } else {
                 edge.right_face = face;
                 edge.right_predecessor = predecessor;
                 edge.right_successor = successor;
@@ -204,27 +218,29 @@ impl builder::Assembly for WingedEdgeAssembly {
                 }
             })
             .collect();
-        drop(edge_of);
-        let mut incident = vec![NONE; polygons.vertex_count()];
-        for (e, edge) in (0u32..).zip(&edges) {
-            for v in [edge.start_vertex, edge.end_vertex] {
-                if let Some(slot) = incident.get_mut(v.index())
-                    && *slot == NONE
-                {
-                    *slot = e;
-                }
+        drop(edge_of_table);
+        let mut incident_table = vec![NONE; polygons.vertex_count()];
+        let incident = &mut incident_table[..];
+        for (e, edge) in (0u32..).zip(&*edges) {
+            let start = &mut incident[edge.start_vertex.index()];
+            if *start == NONE {
+                *start = e;
+            }
+            let end = &mut incident[edge.end_vertex.index()];
+            if *end == NONE {
+                *end = e;
             }
         }
         let vertices = polygons
             .positions()
             .iter()
-            .zip(&incident)
+            .zip(&incident_table)
             .map(|(&position, &e)| Vertex {
                 position,
                 incident_edge: (e != NONE).then_some(EdgeId::new(e)),
             })
             .collect();
-        WingedEdgeMesh::from_raw_parts(vertices, faces, edges)
+        WingedEdgeMesh::from_raw_parts(vertices, faces, edges_table)
     }
 }
 
