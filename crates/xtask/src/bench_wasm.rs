@@ -1,10 +1,11 @@
 //! `cargo xtask bench-wasm`: the `mesh_build` benchmark's builders against
-//! the floor, compiled for wasm32 with the browser build's profile and run
-//! under node (crates/bench-wasm), printed as the native bench prints them.
+//! the floor, compiled for wasm32 with the browser build's profile
+//! (crates/bench-wasm), run under node and then in headless Chromium, the
+//! engine the page runs on, each printed as the native bench prints them.
 
 use std::{path::Path, process::Command};
 
-use crate::{process, toolchain::WasmToolchain, web_build};
+use crate::{process, serve, test, toolchain::WasmToolchain, web_build};
 
 const PACKAGE: &str = "edgewise-bench-wasm";
 /// The browser build's profile: what the page runs.
@@ -42,5 +43,22 @@ pub fn run(root: &Path) -> anyhow::Result<()> {
     let runner = target_dir.join("bench-wasm.mjs");
     std::fs::write(&runner, RUNNER)?;
     eprintln!("==> the builders against the floor, as wasm32 under node:\n");
-    process::run("node", Command::new("node").arg(&runner).arg(&wasm))
+    process::run("node", Command::new("node").arg(&runner).arg(&wasm))?;
+
+    // The page's engine: the module served beside an empty page, which the
+    // browser tests' `bench_wasm` driver opens and runs.
+    let page = target_dir.join("bench-wasm-page");
+    std::fs::create_dir_all(&page)?;
+    std::fs::copy(&wasm, page.join("edgewise_bench_wasm.wasm"))?;
+    std::fs::write(
+        page.join("index.html"),
+        "<!doctype html><title>bench-wasm</title>",
+    )?;
+    let addr = serve::serve_in_background(&page)?;
+    eprintln!("\n==> the builders against the floor, as wasm32 in headless Chromium:\n");
+    test::run_browser_bench(
+        root,
+        "bench_wasm",
+        &[("EDGEWISE_URL", format!("http://{addr}/"))],
+    )
 }

@@ -85,7 +85,8 @@ enum Command {
     /// page drawing the same torus, and print the table (see README).
     BenchWeb,
     /// Build the `mesh_build` benchmark's builders and floor for wasm32 and
-    /// print their medians and ratios under node (docs/performance.md).
+    /// print their medians and ratios under node, then in headless Chromium
+    /// (docs/performance.md).
     BenchWasm,
     /// Fuzz one target, or each in turn, with cargo-fuzz and libFuzzer (needs
     /// a nightly toolchain; see docs/reliability.md), then print the

@@ -170,31 +170,44 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
 /// `cargo xtask bench-web`: serves dist/ and web/bench/, and runs the
 /// benchmark driver of the browser tests' crate, which prints the table.
 pub fn bench_web(root: &Path, dist: &Path) -> anyhow::Result<()> {
-    process::ensure_debian_packages(
-        "the web benchmark",
-        &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
-    )?;
     let app = serve::serve_in_background(dist)?;
     let baseline = serve::serve_in_background(&root.join("web/bench"))?;
     eprintln!("==> benchmarking http://{app}/ beside http://{baseline}/baseline.html");
-    process::run(
-        "web benchmark",
-        cargo()
-            .current_dir(root)
-            .args([
-                "run",
-                "--locked",
-                "--package",
-                BROWSER_TESTS_PACKAGE,
-                "--bin",
-                "bench_web",
-            ])
-            .env("EDGEWISE_URL", format!("http://{app}/"))
-            .env("EDGEWISE_BASELINE_URL", format!("http://{baseline}/"))
-            .env("EDGEWISE_DIST", dist)
-            .env("EDGEWISE_CHROMIUM", CHROMIUM)
-            .env("EDGEWISE_CHROMEDRIVER", CHROMEDRIVER),
+    run_browser_bench(
+        root,
+        "bench_web",
+        &[
+            ("EDGEWISE_URL", format!("http://{app}/")),
+            ("EDGEWISE_BASELINE_URL", format!("http://{baseline}/")),
+            ("EDGEWISE_DIST", dist.display().to_string()),
+        ],
     )
+}
+
+/// Runs benchmark driver `bin` of the browser tests' crate in headless
+/// Chromium, with `vars` set (the pages it measures).
+pub fn run_browser_bench(root: &Path, bin: &str, vars: &[(&str, String)]) -> anyhow::Result<()> {
+    process::ensure_debian_packages(
+        "the browser benchmarks",
+        &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
+    )?;
+    let mut command = cargo();
+    command
+        .current_dir(root)
+        .args([
+            "run",
+            "--locked",
+            "--package",
+            BROWSER_TESTS_PACKAGE,
+            "--bin",
+            bin,
+        ])
+        .env("EDGEWISE_CHROMIUM", CHROMIUM)
+        .env("EDGEWISE_CHROMEDRIVER", CHROMEDRIVER);
+    for (name, value) in vars {
+        command.env(name, value);
+    }
+    process::run(bin, &mut command)
 }
 
 /// How long each step took, printed at the end so slow steps stand out.
