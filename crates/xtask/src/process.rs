@@ -13,6 +13,12 @@ pub fn cargo() -> Command {
     Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
 }
 
+/// Cargo.toml's profile for xtask itself (.cargo/config.toml's alias), the
+/// native tests and the `edgewise package` the host pages use: dev, with
+/// its dependencies unoptimised, which halves a cold build, and one set of
+/// them for all three.
+pub const CHECKS_PROFILE: &str = "checks";
+
 /// `edgewise package`, built from this workspace as needed; the caller adds
 /// its arguments.
 pub fn edgewise_package() -> Command {
@@ -21,6 +27,8 @@ pub fn edgewise_package() -> Command {
         "run",
         "--quiet",
         "--locked",
+        "--profile",
+        CHECKS_PROFILE,
         "--package",
         "edgewise-cli",
         "--",

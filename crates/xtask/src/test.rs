@@ -4,7 +4,7 @@ use std::{path::Path, time::Instant};
 
 use crate::{
     hosts,
-    process::{self, cargo},
+    process::{self, CHECKS_PROFILE, cargo},
     serve, tidy,
     toolchain::WasmToolchain,
     web_build,
@@ -19,9 +19,6 @@ const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 const BROWSER_TESTS: &str = "browser";
 /// Their crate, whose `bench_web` binary is `cargo xtask bench-web`.
 const BROWSER_TESTS_PACKAGE: &str = "edgewise-browser-tests";
-/// Cargo.toml's profile for the native build and tests: dev, with its
-/// dependencies unoptimised, which halves a cold build.
-const CHECKS_PROFILE: &str = "checks";
 /// Joins the arguments cargo-clippy hands clippy-driver.
 const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
 /// The crates that are compiled for wasm32: the browser's, and the wasm32
@@ -65,24 +62,11 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
             workspace_test().args(["--no-run", "--test", BROWSER_TESTS]),
         )
     })?;
+    timings.step("native tests", run_native_tests)?;
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
-    // The wasm build ends on one core (fat LTO in one codegen unit, then
-    // wasm-opt): it runs beside the native tests and the wasm32 lints, which
-    // fill the other.
-    let dist = std::thread::scope(|scope| {
-        let wasm_build = scope.spawn(|| {
-            let start = Instant::now();
-            let dist = web_build::build(root, web_build::Profile::Release);
-            (dist, start.elapsed().as_secs_f64())
-        });
-        let beside = timings
-            .step("native tests", run_native_tests)
-            .and_then(|()| timings.step("clippy (wasm32)", || wasm_lints(root, toolchain)));
-        let (dist, secs) = wasm_build
-            .join()
-            .map_err(|_| anyhow::anyhow!("the wasm build panicked"))?;
-        timings.0.push(("wasm build (beside them)", secs));
-        beside.and(dist)
+    timings.step("clippy (wasm32)", || wasm_lints(root, toolchain))?;
+    let dist = timings.step("wasm build", || {
+        web_build::build(root, web_build::Profile::Release)
     })?;
     timings.step("browser tests", || browser_tests(root, &dist))
 }
@@ -137,11 +121,9 @@ fn clippy_driver() -> std::ffi::OsString {
         .map_or_else(|| "clippy-driver".into(), |path| path.trim().into())
 }
 
-/// Lints the crates that run in the browser, as compiled for wasm32. In
-/// cargo's own target dir, free once the native tests are done: a check
-/// shares no artifact with the wasm build, which holds its own beside it.
+/// Lints the crates that run in the browser, as compiled for wasm32.
 fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
-    let target_dir = web_build::cargo_target_dir(root);
+    let target_dir = web_build::target_dir(root);
     let mut cmd = if toolchain.has_clippy() {
         toolchain.cargo("clippy", &target_dir)
     } else {
@@ -235,8 +217,7 @@ pub fn run_browser_bench(root: &Path, bin: &str, vars: &[(&str, String)]) -> any
 }
 
 /// How long each step took, printed at the end so slow steps stand out.
-/// The wasm build's time overlaps the steps it ran beside, so the whole
-/// run's time is the clock's, not the steps' sum.
+/// The whole run's time is the clock's, from the start of the first step.
 struct Timings(Vec<(&'static str, f64)>, Instant);
 
 impl Default for Timings {

@@ -120,7 +120,7 @@ const WASM_FEATURES: [&str; 7] = [
     "--enable-multivalue",
 ];
 
-/// wasm-opt, installed with npm under target/wasm/tools on first use.
+/// wasm-opt, installed with npm under target/tools on first use.
 fn wasm_opt(root: &Path) -> anyhow::Result<PathBuf> {
     let prefix = target_dir(root).join("tools/binaryen");
     let program = prefix.join("node_modules/binaryen/bin/wasm-opt");
@@ -147,7 +147,7 @@ fn wasm_opt(root: &Path) -> anyhow::Result<PathBuf> {
 ///
 /// wasm-opt gives the same output for the same input, and it was most of a
 /// build whose wasm had not changed (about 80 s of the 100 that a restart of
-/// `serve` took), so its last output is kept under target/wasm/tools, named by a
+/// `serve` took), so its last output is kept under target/tools, named by a
 /// hash of its input and options, and reused for that input.
 fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
     let program = match wasm_opt(root) {
@@ -238,17 +238,10 @@ fn precompress(dist: &Path) -> anyhow::Result<u64> {
 
 /// Cargo's target dir: `CARGO_TARGET_DIR` when set (as for plain cargo
 /// commands), otherwise the workspace's target/.
-pub fn cargo_target_dir(root: &Path) -> PathBuf {
+pub fn target_dir(root: &Path) -> PathBuf {
     std::env::var_os("CARGO_TARGET_DIR")
         .filter(|dir| !dir.is_empty())
         .map_or_else(|| root.join("target"), |dir| root.join(PathBuf::from(dir)))
-}
-
-/// The wasm builds' target dir (and their tools'), inside cargo's: a folder
-/// of their own, since `cargo xtask test` builds for the browser while the
-/// native tests run, and cargo locks a target dir for one build at a time.
-pub fn target_dir(root: &Path) -> PathBuf {
-    cargo_target_dir(root).join("wasm")
 }
 
 /// The text in index.html and web/static/sw.js that becomes the build's
