@@ -121,7 +121,11 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         .with_context(|| format!("cannot enter the workspace at {}", root.display()))?;
     match cli.command {
         Command::Serve { port, profiling } => {
-            let dist = web_build::build(&root, web_build::Profile::release(profiling))?;
+            let dist = web_build::build(
+                &root,
+                web_build::Profile::release(profiling),
+                web_build::Lints::Off,
+            )?;
             serve::serve_forever(&dist, port)
         }
         Command::Test => test::run_all(&root),
@@ -131,14 +135,15 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
             } else {
                 web_build::Profile::release(profiling)
             };
-            web_build::build(&root, profile).map(|_| ())
+            web_build::build(&root, profile, web_build::Lints::Off).map(|_| ())
         }
         Command::BrowserTest => {
-            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            let dist =
+                web_build::build(&root, web_build::Profile::Release, web_build::Lints::Clippy)?;
             test::browser_tests(&root, &dist)
         }
         Command::Package { ref args } => {
-            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            let dist = web_build::build(&root, web_build::Profile::Release, web_build::Lints::Off)?;
             let mut package = process::edgewise_package();
             package.args(args);
             if !args
@@ -152,7 +157,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Tidy => tidy::run(&root),
         Command::Hosts { ref app } => hosts::serve(&root, app.as_deref()),
         Command::BenchWeb => {
-            let dist = web_build::build(&root, web_build::Profile::Release)?;
+            let dist = web_build::build(&root, web_build::Profile::Release, web_build::Lints::Off)?;
             test::bench_web(&root, &dist)
         }
         Command::BenchWasm => bench_wasm::run(&root),

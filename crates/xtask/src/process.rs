@@ -19,6 +19,26 @@ pub fn cargo() -> Command {
 /// them for all three.
 pub const CHECKS_PROFILE: &str = "checks";
 
+/// Joins the arguments cargo-clippy hands clippy-driver.
+const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
+
+/// Has clippy-driver compile the workspace's own crates in `cmd`'s build, as
+/// `cargo clippy` would lint them, with every warning an error: one build
+/// both lints and makes the artifacts, where `cargo clippy` and then a build
+/// would compile every dependency twice. Cargo rebuilds those crates when the
+/// wrapper comes or goes, so a build with it and one without do not share them.
+pub fn lint_with_clippy(cmd: &mut Command) -> &mut Command {
+    cmd.env("RUSTC_WORKSPACE_WRAPPER", clippy_driver())
+        .env("CLIPPY_ARGS", CLIPPY_ARGS)
+}
+
+/// The toolchain's clippy-driver, found once rather than through the rustup
+/// proxy at every compiler call.
+fn clippy_driver() -> std::ffi::OsString {
+    output_of(Command::new("rustup").args(["which", "clippy-driver"]))
+        .map_or_else(|| "clippy-driver".into(), |path| path.trim().into())
+}
+
 /// `edgewise package`, built from this workspace as needed; the caller adds
 /// its arguments.
 pub fn edgewise_package() -> Command {

@@ -19,8 +19,6 @@ const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 const BROWSER_TESTS: &str = "browser";
 /// Their crate, whose `bench_web` binary is `cargo xtask bench-web`.
 const BROWSER_TESTS_PACKAGE: &str = "edgewise-browser-tests";
-/// Joins the arguments cargo-clippy hands clippy-driver.
-const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
 /// The crates that are compiled for wasm32: the browser's, and the wasm32
 /// benchmark, whose code exists only there.
 const WASM_PACKAGES: [&str; 6] = [
@@ -31,6 +29,8 @@ const WASM_PACKAGES: [&str; 6] = [
     "edgewise-renderer",
     "edgewise-app",
 ];
+/// Of those, the one the browser app's build does not compile.
+const WASM_BENCHMARK: &str = "edgewise-bench-wasm";
 
 /// Runs every check CI runs and stops at the first failure.
 pub fn run_all(root: &Path) -> anyhow::Result<()> {
@@ -64,9 +64,11 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
     })?;
     timings.step("native tests", run_native_tests)?;
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
-    timings.step("clippy (wasm32)", || wasm_lints(root, toolchain))?;
-    let dist = timings.step("wasm build", || {
-        web_build::build(root, web_build::Profile::Release)
+    timings.step("clippy (the wasm32 benchmark)", || {
+        wasm_lints(root, toolchain)
+    })?;
+    let dist = timings.step("wasm build and lints", || {
+        web_build::build(root, web_build::Profile::Release, web_build::Lints::Clippy)
     })?;
     timings.step("browser tests", || browser_tests(root, &dist))
 }
@@ -95,8 +97,7 @@ fn run_native_tests() -> anyhow::Result<()> {
 }
 
 /// `cargo test` over the whole workspace, its own crates compiled by
-/// clippy-driver: one build both lints and links them, where `cargo clippy`
-/// then `cargo test` compiled every dependency twice. Every step that
+/// clippy-driver ([`process::lint_with_clippy`]). Every step that
 /// builds natively (the browser tests' too) selects the same packages with
 /// the same environment, so that none rebuilds what another built (a narrower selection unifies features
 /// differently and recompiles the crates that share them).
@@ -108,20 +109,16 @@ fn workspace_test() -> std::process::Command {
         "--workspace",
         "--profile",
         CHECKS_PROFILE,
-    ])
-    .env("RUSTC_WORKSPACE_WRAPPER", clippy_driver())
-    .env("CLIPPY_ARGS", CLIPPY_ARGS);
+    ]);
+    process::lint_with_clippy(&mut cmd);
     cmd
 }
 
-/// The toolchain's clippy-driver, found once rather than through the rustup
-/// proxy at every compiler call.
-fn clippy_driver() -> std::ffi::OsString {
-    process::output_of(std::process::Command::new("rustup").args(["which", "clippy-driver"]))
-        .map_or_else(|| "clippy-driver".into(), |path| path.trim().into())
-}
-
-/// Lints the crates that run in the browser, as compiled for wasm32.
+/// Lints the crates compiled for wasm32 that the wasm build does not: with
+/// clippy, the build lints the app and what it uses, so only the wasm32
+/// benchmark is checked here (a separate `cargo clippy` of the app checked
+/// its dependencies once more, about two minutes of a cold run). Without
+/// clippy, every wasm32 crate is checked with rustc's lints.
 fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
     let target_dir = web_build::target_dir(root);
     let mut cmd = if toolchain.has_clippy() {
@@ -136,8 +133,12 @@ fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
         cmd
     };
     cmd.arg("--locked");
-    for package in WASM_PACKAGES {
-        cmd.args(["--package", package]);
+    if toolchain.has_clippy() {
+        cmd.args(["--package", WASM_BENCHMARK]);
+    } else {
+        for package in WASM_PACKAGES {
+            cmd.args(["--package", package]);
+        }
     }
     if toolchain.has_clippy() {
         cmd.args(["--", "-D", "warnings"]);

@@ -42,8 +42,19 @@ const APP_PACKAGE: &str = "edgewise-app";
 /// which index.html and sw.js name through [`BUILD_PLACEHOLDER`].
 const OUT_NAME: &str = "edgewise_app";
 
+/// Whether a wasm build lints the workspace's crates as it compiles them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lints {
+    /// `serve` and the other commands that only need dist/: a newer
+    /// toolchain's lints must never stop a lecturer's server.
+    Off,
+    /// `cargo xtask test` and `browser-test`: clippy, where the toolchain has
+    /// it ([`process::lint_with_clippy`]), with every warning an error.
+    Clippy,
+}
+
 /// Builds the app for the browser into `root/dist` and returns that path.
-pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
+pub fn build(root: &Path, profile: Profile, lints: Lints) -> anyhow::Result<PathBuf> {
     let toolchain = WasmToolchain::find()?;
     let target_dir = target_dir(root);
     eprintln!("==> building {APP_PACKAGE} for wasm32 ({profile:?}, {toolchain:?} toolchain)");
@@ -53,6 +64,9 @@ pub fn build(root: &Path, profile: Profile) -> anyhow::Result<PathBuf> {
     if profile != Profile::Dev {
         // Cargo.toml's `web` profile: release, with LTO, optimised for size.
         cmd.args(["--profile", "web"]);
+    }
+    if lints == Lints::Clippy && toolchain.has_clippy() {
+        process::lint_with_clippy(&mut cmd);
     }
     process::run("the wasm build", &mut cmd)?;
 
