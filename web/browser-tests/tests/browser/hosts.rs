@@ -401,11 +401,13 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
             .await
     };
     // The whole frame in sight, just under the theme's bar: the card is
-    // at its bottom.
+    // at its bottom. At once: the theme scrolls smoothly, and a frame
+    // measured mid-scroll sends the clicks below (an unoptimised screenshot
+    // decode once hid this by taking longer than the scroll).
     browser
         .eval(
             "const r = document.querySelector('iframe').getBoundingClientRect(); \
-             window.scrollBy(0, r.top - 60); return null;",
+             window.scrollBy({ top: r.top - 60, behavior: 'instant' }); return null;",
         )
         .await?;
     let first = height().await?;
