@@ -756,8 +756,12 @@ pub struct Screenshot {
     pub path: PathBuf,
     pub width: u32,
     pub height: u32,
-    /// RGBA pixels, row by row.
-    pub pixels: Vec<u8>,
+    /// RGB or RGBA pixels, row by row: left as decoded, since widening a
+    /// large screenshot to RGBA in the unoptimised test build took longer
+    /// than decoding it.
+    pixels: Vec<u8>,
+    /// 3 or 4.
+    channels: usize,
 }
 
 /// Where screenshots and exported pictures are written, to be looked at.
@@ -786,26 +790,24 @@ impl Screenshot {
         let mut buf = vec![0; size];
         let info = reader.next_frame(&mut buf)?;
         buf.truncate(info.buffer_size());
-        let pixels = match info.color_type {
-            png::ColorType::Rgba => buf,
-            png::ColorType::Rgb => buf
-                .chunks_exact(3)
-                .flat_map(|p| [p[0], p[1], p[2], 255])
-                .collect(),
+        let channels = match info.color_type {
+            png::ColorType::Rgba => 4,
+            png::ColorType::Rgb => 3,
             other => bail!("unexpected screenshot colour type {other:?}"),
         };
         Ok(Self {
             path,
             width: info.width,
             height: info.height,
-            pixels,
+            channels,
+            pixels: buf,
         })
     }
 
     /// The number of distinct colours, capped at `cap`.
     pub fn distinct_colours(&self, cap: usize) -> usize {
         let mut seen = std::collections::HashSet::new();
-        for pixel in self.pixels.chunks_exact(4) {
+        for pixel in self.pixels.chunks_exact(self.channels) {
             seen.insert([pixel[0], pixel[1], pixel[2]]);
             if seen.len() >= cap {
                 break;
@@ -823,14 +825,14 @@ impl Screenshot {
     /// How many pixels are `colour`, give or take `tolerance` per channel.
     pub fn count(&self, colour: [u8; 3], tolerance: u8) -> usize {
         self.pixels
-            .chunks_exact(4)
+            .chunks_exact(self.channels)
             .filter(|p| (0..3).all(|c| p[c].abs_diff(colour[c]) <= tolerance))
             .count()
     }
 
     /// The RGB colour at (x, y).
     pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
-        let i = ((y * self.width + x) * 4) as usize;
+        let i = (y * self.width + x) as usize * self.channels;
         [self.pixels[i], self.pixels[i + 1], self.pixels[i + 2]]
     }
 }
