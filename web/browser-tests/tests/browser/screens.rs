@@ -236,8 +236,11 @@ impl Seen<'_> {
     }
 
     /// Scrolls the menu `name` with the wheel (or a finger) until its last
-    /// entry is in sight.
+    /// entry is in sight, nearly a menu's height at a time, as a reader
+    /// pages down: each turn is a scroll animation and two frames, over a
+    /// second at a high ratio under a software renderer.
     async fn reach_last_entry(&self, name: &str) -> anyhow::Result<()> {
+        let mut pointer = None;
         for _ in 0..40 {
             let layout = self.layout().await?;
             let open = menu(&layout, name)?;
@@ -251,25 +254,29 @@ impl Seen<'_> {
                 return Ok(());
             }
             let (x, y) = rect.centre();
+            let page = rect.h * 0.9;
             if self.screen.touch {
-                // A thumb pushes the list up by nearly its height: each
-                // swipe is a dozen frames, slow at a phone's ratio.
-                self.browser
-                    .swipe(x, rect.y + rect.h * 0.95, -rect.h * 0.9)
-                    .await?;
+                // A thumb pushes the list up: each swipe is a dozen frames,
+                // slow at a phone's ratio.
+                self.browser.swipe(x, rect.y + rect.h * 0.95, -page).await?;
                 continue;
+            }
+            // The pointer moves over the menu once; a move per turn cost
+            // a frame each.
+            if pointer != Some((x, y)) {
+                self.browser
+                    .cdp(
+                        "Input.dispatchMouseEvent",
+                        serde_json::json!({ "type": "mouseMoved", "x": x, "y": y }),
+                    )
+                    .await?;
+                pointer = Some((x, y));
             }
             self.browser
                 .cdp(
                     "Input.dispatchMouseEvent",
-                    serde_json::json!({ "type": "mouseMoved", "x": x, "y": y }),
-                )
-                .await?;
-            self.browser
-                .cdp(
-                    "Input.dispatchMouseEvent",
                     serde_json::json!({ "type": "mouseWheel", "x": x, "y": y,
-                                        "deltaX": 0, "deltaY": 200 }),
+                                        "deltaX": 0, "deltaY": page }),
                 )
                 .await?;
         }
