@@ -104,7 +104,8 @@ impl builder::Assembly for WingedEdgeAssembly {
 
     #[inline(always)]
     fn first_incoming(&self, v: usize) -> u32 {
-        self.first_incoming[v]
+        let first_incoming: &[u32] = &self.first_incoming;
+        first_incoming[v]
     }
 
     /// Half-edge `h` is interior below `n`, the number of corners (one pair
@@ -205,19 +206,18 @@ impl builder::Assembly for WingedEdgeAssembly {
                 edge.right_successor = EdgeId::new(e);
             }
         }
-        let faces = polygons
-            .offsets()
-            .windows(2)
-            .map(|window| {
-                let lowest = match window {
-                    &[start, end] => edge_of[start..end].iter().copied().min().unwrap_or(0),
-                    _ => 0,
-                };
-                Face {
-                    incident_edge: EdgeId::new(lowest),
-                }
-            })
-            .collect();
+        // Each face's lowest-numbered edge, in a plain loop: the
+        // size-optimised build called `Iterator::min` once per face.
+        let offsets = polygons.offsets();
+        let mut faces = vec![Face::default(); polygons.face_count()];
+        for (face, row) in faces.iter_mut().enumerate() {
+            let (start, end) = (offsets[face], offsets[face + 1]);
+            let mut lowest = edge_of[start];
+            for &e in &edge_of[start + 1..end] {
+                lowest = lowest.min(e);
+            }
+            row.incident_edge = EdgeId::new(lowest);
+        }
         drop(edge_of_table);
         let mut incident_table = vec![NONE; polygons.vertex_count()];
         let incident = &mut incident_table[..];
