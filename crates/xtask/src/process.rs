@@ -25,8 +25,9 @@ const CLIPPY_ARGS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
 /// Has clippy-driver compile the workspace's own crates in `cmd`'s build, as
 /// `cargo clippy` would lint them, with every warning an error: one build
 /// both lints and makes the artifacts, where `cargo clippy` and then a build
-/// would compile every dependency twice. Cargo rebuilds those crates when the
-/// wrapper comes or goes, so a build with it and one without do not share them.
+/// would compile every dependency twice. Cargo puts the wrapper in those
+/// crates' metadata hash, so linted and unlinted artifacts sit side by side,
+/// each compiled once.
 pub fn lint_with_clippy(cmd: &mut Command) -> &mut Command {
     cmd.env("RUSTC_WORKSPACE_WRAPPER", clippy_driver())
         .env("CLIPPY_ARGS", CLIPPY_ARGS)

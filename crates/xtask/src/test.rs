@@ -122,27 +122,28 @@ fn workspace_test() -> std::process::Command {
 fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
     let target_dir = web_build::target_dir(root);
     let mut cmd = if toolchain.has_clippy() {
-        toolchain.cargo("clippy", &target_dir)
+        let mut cmd = toolchain.cargo("clippy", &target_dir);
+        cmd.args([
+            "--locked",
+            "--package",
+            WASM_BENCHMARK,
+            "--",
+            "-D",
+            "warnings",
+        ]);
+        cmd
     } else {
         eprintln!(
             "==> Debian's rustc-web has no clippy: wasm32 code is checked with rustc's lints \
              (clippy's lints run natively on the same code)"
         );
         let mut cmd = toolchain.cargo("check", &target_dir);
-        cmd.env("RUSTFLAGS", "-D warnings");
-        cmd
-    };
-    cmd.arg("--locked");
-    if toolchain.has_clippy() {
-        cmd.args(["--package", WASM_BENCHMARK]);
-    } else {
+        cmd.arg("--locked").env("RUSTFLAGS", "-D warnings");
         for package in WASM_PACKAGES {
             cmd.args(["--package", package]);
         }
-    }
-    if toolchain.has_clippy() {
-        cmd.args(["--", "-D", "warnings"]);
-    }
+        cmd
+    };
     process::run("wasm32 lints", &mut cmd)
 }
 
