@@ -139,7 +139,6 @@ impl builder::Assembly for WingedEdgeAssembly {
             pair,
             first_incoming,
         } = self;
-        drop(first_incoming);
         let indices = polygons.indices();
         let n = indices.len() as u32;
         let Boundary {
@@ -218,28 +217,22 @@ impl builder::Assembly for WingedEdgeAssembly {
             }
             row.incident_edge = EdgeId::new(lowest);
         }
-        drop(edge_of_table);
-        let mut incident_table = vec![NONE; polygons.vertex_count()];
-        let incident = &mut incident_table[..];
-        for (e, edge) in (0u32..).zip(&*edges) {
-            let start = &mut incident[edge.start_vertex.index()];
-            if *start == NONE {
-                *start = e;
-            }
-            let end = &mut incident[edge.end_vertex.index()];
-            if *end == NONE {
-                *end = e;
+        // A vertex's lowest-numbered edge is that of its lowest-numbered
+        // half-edge, which is in the first face to use it: the one ending
+        // there, or the one leaving.
+        let first_incoming: &[u32] = &first_incoming;
+        let mut vertices = vec![Vertex::default(); polygons.vertex_count()];
+        for ((vertex, &position), &h) in vertices
+            .iter_mut()
+            .zip(polygons.positions())
+            .zip(first_incoming)
+        {
+            vertex.position = position;
+            if h != NONE {
+                let e = edge_of[h as usize].min(edge_of[layout.next(h) as usize]);
+                vertex.incident_edge = Some(EdgeId::new(e));
             }
         }
-        let vertices = polygons
-            .positions()
-            .iter()
-            .zip(&incident_table)
-            .map(|(&position, &e)| Vertex {
-                position,
-                incident_edge: (e != NONE).then_some(EdgeId::new(e)),
-            })
-            .collect();
         WingedEdgeMesh::from_raw_parts(vertices, faces, edges_table)
     }
 }

@@ -491,7 +491,15 @@ fn check_all(input: &Polygons) {
         let touching = (0..we.edge_count() as u32)
             .map(EdgeId::new)
             .filter(|&x| we.edges()[x.index()].other_vertex(id).is_some());
-        assert_eq!(sorted(we.around_vertex(id)), sorted(touching));
+        assert_eq!(sorted(we.around_vertex(id)), sorted(touching.clone()));
+        // Incident edges are the lowest-numbered candidates.
+        assert_eq!(we.vertices()[vertex].incident_edge, touching.min());
+        assert_eq!(
+            he.vertices()[vertex].incident_edge,
+            (0..he.half_edge_count() as u32)
+                .map(HalfEdgeId::new)
+                .find(|&h| he.half_edges()[h.index()].end_vertex == id)
+        );
         let faces: Vec<u32> = brute.faces_at[vertex].iter().copied().collect();
         assert_eq!(sorted(he.vertex_faces(id).map(FaceId::raw)), faces);
         assert_eq!(sorted(we.vertex_faces(id).map(FaceId::raw)), faces);
