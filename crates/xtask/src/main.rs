@@ -17,6 +17,7 @@
 mod bench_wasm;
 mod fuzz;
 mod hosts;
+mod native_tests;
 mod process;
 mod serve;
 mod test;

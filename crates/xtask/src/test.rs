@@ -4,6 +4,7 @@ use std::{path::Path, time::Instant};
 
 use crate::{
     hosts,
+    native_tests::{self, NativeTests},
     process::{self, CHECKS_PROFILE, cargo},
     serve, tidy,
     toolchain::WasmToolchain,
@@ -62,22 +63,30 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
             workspace_test().args(["--no-run", "--test", BROWSER_TESTS]),
         )
     })?;
-    timings.step("native tests", run_native_tests)?;
+    let mut native = timings.step("native tests started, and the doctests", || {
+        start_native_tests(root)
+    })?;
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
     timings.step("clippy (the wasm32 benchmark)", || {
         wasm_lints(root, toolchain)
     })?;
+    native.check()?;
     let dist = timings.step("wasm build and lints", || {
         web_build::build(root, web_build::Profile::Release, web_build::Lints::Clippy)
     })?;
-    timings.step("browser tests", || browser_tests(root, &dist))
+    native.check()?;
+    timings.step("browser tests", || browser_tests(root, &dist))?;
+    let ran = timings.step("native tests, the rest", || native.finish())?;
+    timings.beside("native tests, from their start", ran.as_secs_f64());
+    Ok(())
 }
 
-/// The native tests, and then the doctests, which target flags leave out.
-/// The benchmarks were built and linted with the rest; run once each in
-/// criterion's test mode they would add half a minute and test nothing the
-/// tests do not.
-fn run_native_tests() -> anyhow::Result<()> {
+/// Starts the native tests beside the steps that follow (`native_tests.rs`),
+/// then runs the doctests, which target flags leave out and which need
+/// cargo's build lock, in the foreground. The benchmarks were built and
+/// linted with the rest; run once each in criterion's test mode they would
+/// add half a minute and test nothing the tests do not.
+fn start_native_tests(root: &Path) -> anyhow::Result<NativeTests> {
     // The 3D view's render tests draw on the CPU through lavapipe.
     process::ensure_debian_packages(
         "the 3D view's render tests (software Vulkan)",
@@ -86,14 +95,23 @@ fn run_native_tests() -> anyhow::Result<()> {
             (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
         ],
     )?;
-    process::run(
-        "native tests",
-        workspace_test()
-            .args(["--lib", "--bins", "--tests", "--examples"])
-            // The rendering tests fail, rather than skip, without an adapter.
-            .env("EDGEWISE_REQUIRE_GPU", "1"),
-    )?;
-    process::run("doctests", workspace_test().arg("--doc"))
+    let executables = native_tests::executables(workspace_test().args([
+        "--lib",
+        "--bins",
+        "--tests",
+        "--examples",
+    ]))?;
+    let log = web_build::target_dir(root).join("native-tests.log");
+    eprintln!(
+        "==> {} native test executables started at the lowest priority; their output, in {}, \
+         follows the browser tests",
+        executables.len(),
+        log.display()
+    );
+    // The rendering tests fail, rather than skip, without an adapter.
+    let native = NativeTests::start(executables, &[("EDGEWISE_REQUIRE_GPU", "1")], &log)?;
+    process::run("doctests", workspace_test().arg("--doc"))?;
+    Ok(native)
 }
 
 /// `cargo test` over the whole workspace, its own crates compiled by
@@ -218,9 +236,13 @@ pub fn run_browser_bench(root: &Path, bin: &str, vars: &[(&str, String)]) -> any
     process::run(bin, &mut command)
 }
 
-/// How long each step took, printed at the end so slow steps stand out.
+/// How long each step took, printed at the end so slow steps stand out, and
+/// how long the work beside the steps ran.
 #[derive(Default)]
-struct Timings(Vec<(&'static str, f64)>);
+struct Timings {
+    steps: Vec<(&'static str, f64)>,
+    beside: Vec<(&'static str, f64)>,
+}
 
 impl Timings {
     fn step<T>(
@@ -231,16 +253,23 @@ impl Timings {
         eprintln!("\n==> {name}");
         let start = Instant::now();
         let result = f();
-        self.0.push((name, start.elapsed().as_secs_f64()));
+        self.steps.push((name, start.elapsed().as_secs_f64()));
         result
+    }
+
+    fn beside(&mut self, name: &'static str, secs: f64) {
+        self.beside.push((name, secs));
     }
 
     fn print(&self) {
         eprintln!("\n==> timings");
-        for (name, secs) in &self.0 {
-            eprintln!("    {name:<24} {secs:>7.1} s");
+        for (name, secs) in &self.steps {
+            eprintln!("    {name:<38} {secs:>7.1} s");
         }
-        let all: f64 = self.0.iter().map(|(_, secs)| secs).sum();
-        eprintln!("    {:<24} {all:>7.1} s", "all steps");
+        let all: f64 = self.steps.iter().map(|(_, secs)| secs).sum();
+        eprintln!("    {:<38} {all:>7.1} s", "all steps");
+        for (name, secs) in &self.beside {
+            eprintln!("    beside them: {name}, {secs:.1} s");
+        }
     }
 }

@@ -1,0 +1,218 @@
+//! The native test executables, run beside the wasm32 steps and the browser
+//! tests at the lowest priority, so that they take the CPU those steps leave
+//! idle instead of a step of their own.
+//!
+//! Measured with `vmstat` on the 2-core machine: the wasm build keeps one core
+//! idle for about 200 s (its fat-LTO link and wasm-opt each run on one core),
+//! and the browser suite leaves 16% of both cores idle (pages waiting on
+//! timers and the test's polls).
+//!
+//! At the same priority the tests slowed those steps about as much as they
+//! gained (docs/performance.md), and at nice 19 the browser suite still ran
+//! a quarter slower (953 s against 727 s): Chromium's processes hand each
+//! frame on to one another, and each hand-over waited for the test's time
+//! slice to end. So the tests run under `SCHED_IDLE`, which a waking
+//! process of any other policy preempts at once. They stay in the session
+//! of `cargo xtask test`, where Chromium and the builds run too: the kernel
+//! shares the CPU between sessions (autogroups) first, so a session of
+//! their own would give them half the machine whatever their policy.
+
+use std::{
+    fs::File,
+    io::Write as _,
+    path::{Path, PathBuf},
+    process::{Child, Command, Stdio},
+    sync::{
+        Arc, Mutex, MutexGuard,
+        atomic::{AtomicBool, Ordering},
+    },
+    thread::JoinHandle,
+    time::{Duration, Instant},
+};
+
+use anyhow::{Context as _, bail};
+
+/// One test executable and the package directory cargo would run it in.
+pub struct TestExecutable {
+    path: PathBuf,
+    package_dir: PathBuf,
+}
+
+/// The test executables of `build` (a `cargo test --no-run` selection whose
+/// artifacts are built), in cargo's order.
+pub fn executables(build: &mut Command) -> anyhow::Result<Vec<TestExecutable>> {
+    let output = build
+        .args(["--no-run", "--message-format=json"])
+        .stderr(Stdio::inherit())
+        .output()
+        .context("could not run cargo to list the test executables")?;
+    if !output.status.success() {
+        bail!("listing the test executables failed ({})", output.status);
+    }
+    let mut found = Vec::new();
+    for line in String::from_utf8_lossy(&output.stdout).lines() {
+        let Ok(message) = serde_json::from_str::<serde_json::Value>(line) else {
+            continue;
+        };
+        let is_test = message["profile"]["test"].as_bool() == Some(true);
+        let (Some(path), Some(manifest)) = (
+            message["executable"].as_str(),
+            message["manifest_path"].as_str(),
+        ) else {
+            continue;
+        };
+        if is_test && message["reason"] == "compiler-artifact" {
+            found.push(TestExecutable {
+                path: path.into(),
+                package_dir: Path::new(manifest)
+                    .parent()
+                    .map_or_else(PathBuf::new, Path::to_path_buf),
+            });
+        }
+    }
+    if found.is_empty() {
+        bail!("cargo listed no test executables");
+    }
+    // The CLI's first: they run target/checks/edgewise, which the host
+    // pages' `cargo run` and the browser tests' build each link again (cargo
+    // removes the file, then links the new one), so they should be done by
+    // then.
+    found.sort_by_key(|executable| !executable.package_dir.ends_with("crates/cli"));
+    Ok(found)
+}
+
+/// The executables running one after another on a thread, as `cargo test`
+/// runs them; dropping this stops them.
+pub struct NativeTests {
+    thread: Option<JoinHandle<anyhow::Result<()>>>,
+    running: Arc<Mutex<Option<Child>>>,
+    stop: Arc<AtomicBool>,
+    log: PathBuf,
+    started: Instant,
+}
+
+impl NativeTests {
+    /// Starts `executables` with `envs`, their output going to `log`.
+    pub fn start(
+        executables: Vec<TestExecutable>,
+        envs: &[(&str, &str)],
+        log: &Path,
+    ) -> anyhow::Result<Self> {
+        let file = File::create(log).with_context(|| format!("cannot create {}", log.display()))?;
+        let running = Arc::new(Mutex::new(None));
+        let stop = Arc::new(AtomicBool::new(false));
+        let envs: Vec<(String, String)> = envs
+            .iter()
+            .map(|&(name, value)| (name.into(), value.into()))
+            .collect();
+        let thread = std::thread::spawn({
+            let (running, stop) = (Arc::clone(&running), Arc::clone(&stop));
+            move || run_each(&executables, &envs, &file, &running, &stop)
+        });
+        Ok(Self {
+            thread: Some(thread),
+            running,
+            stop,
+            log: log.to_path_buf(),
+            started: Instant::now(),
+        })
+    }
+
+    /// Fails with the tests' output if they have already failed, so that a
+    /// failure stops the run at the next step rather than at the end.
+    pub fn check(&mut self) -> anyhow::Result<()> {
+        if self.thread.as_ref().is_some_and(JoinHandle::is_finished) {
+            let result = self.join();
+            if result.is_err() {
+                self.print_log();
+            }
+            result?;
+        }
+        Ok(())
+    }
+
+    /// Waits for the tests and prints their output; returns how long they
+    /// ran in all, from their start.
+    pub fn finish(mut self) -> anyhow::Result<Duration> {
+        let result = self.join();
+        self.print_log();
+        result?;
+        Ok(self.started.elapsed())
+    }
+
+    fn join(&mut self) -> anyhow::Result<()> {
+        match self.thread.take().map(JoinHandle::join) {
+            Some(Ok(result)) => result,
+            Some(Err(_)) => bail!("the native tests' thread panicked"),
+            None => Ok(()),
+        }
+    }
+
+    fn print_log(&self) {
+        match std::fs::read_to_string(&self.log) {
+            Ok(text) => eprint!("{text}"),
+            Err(error) => eprintln!("cannot read {}: {error}", self.log.display()),
+        }
+    }
+}
+
+impl Drop for NativeTests {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::Relaxed);
+        if let Ok(mut running) = self.running.lock()
+            && let Some(child) = running.as_mut()
+        {
+            child.kill().ok();
+        }
+        self.join().ok();
+    }
+}
+
+fn lock(running: &Mutex<Option<Child>>) -> anyhow::Result<MutexGuard<'_, Option<Child>>> {
+    running
+        .lock()
+        .map_err(|_| anyhow::anyhow!("the native tests' lock is poisoned"))
+}
+
+fn run_each(
+    executables: &[TestExecutable],
+    envs: &[(String, String)],
+    log: &File,
+    running: &Mutex<Option<Child>>,
+    stop: &AtomicBool,
+) -> anyhow::Result<()> {
+    for executable in executables {
+        if stop.load(Ordering::Relaxed) {
+            bail!("the native tests were stopped");
+        }
+        let name = executable.path.display();
+        writeln!(&*log, "     Running {name}")?;
+        let child = Command::new("chrt")
+            .args(["--idle", "0"])
+            .arg(&executable.path)
+            .current_dir(&executable.package_dir)
+            .envs(envs.iter().map(|(name, value)| (name, value)))
+            .stdin(Stdio::null())
+            .stdout(log.try_clone()?)
+            .stderr(log.try_clone()?)
+            .spawn()
+            .with_context(|| format!("could not start {name}"))?;
+        *lock(running)? = Some(child);
+        let status = loop {
+            let mut guard = lock(running)?;
+            let Some(child) = guard.as_mut() else {
+                bail!("{name} was not running");
+            };
+            if let Some(status) = child.try_wait()? {
+                guard.take();
+                break status;
+            }
+            drop(guard);
+            std::thread::sleep(Duration::from_millis(100));
+        };
+        if !status.success() {
+            bail!("native tests failed: {name} ({status})");
+        }
+    }
+    Ok(())
+}
