@@ -161,6 +161,17 @@ impl builder::Assembly for WingedEdgeAssembly {
                 edge_of[p as usize]
             };
         }
+        // A vertex's lowest-numbered edge is that of its lowest-numbered
+        // half-edge, which is in the first face to use it: the one ending
+        // there, or the one leaving. Written over the first incoming
+        // half-edges before the rows are allocated, so the peak stays that of
+        // the rows and the edge numbers.
+        let mut incident_table = first_incoming;
+        for h in &mut incident_table[..] {
+            if *h != NONE {
+                *h = edge_of[*h as usize].min(edge_of[layout.next(*h) as usize]);
+            }
+        }
         let mut edges_table = vec![WingedEdge::default(); edge_count as usize];
         let edges = &mut edges_table[..];
         // Edges are numbered in order of first appearance.
@@ -217,21 +228,15 @@ impl builder::Assembly for WingedEdgeAssembly {
             }
             row.incident_edge = EdgeId::new(lowest);
         }
-        // A vertex's lowest-numbered edge is that of its lowest-numbered
-        // half-edge, which is in the first face to use it: the one ending
-        // there, or the one leaving.
-        let first_incoming: &[u32] = &first_incoming;
+        drop(edge_of_table);
         let mut vertices = vec![Vertex::default(); polygons.vertex_count()];
-        for ((vertex, &position), &h) in vertices
+        for ((vertex, &position), &e) in vertices
             .iter_mut()
             .zip(polygons.positions())
-            .zip(first_incoming)
+            .zip(&incident_table)
         {
             vertex.position = position;
-            if h != NONE {
-                let e = edge_of[h as usize].min(edge_of[layout.next(h) as usize]);
-                vertex.incident_edge = Some(EdgeId::new(e));
-            }
+            vertex.incident_edge = (e != NONE).then_some(EdgeId::new(e));
         }
         WingedEdgeMesh::from_raw_parts(vertices, faces, edges_table)
     }
