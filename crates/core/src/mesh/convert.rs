@@ -197,14 +197,10 @@ impl HalfEdgeMesh {
                 incident_edge: EdgeId::new(e),
             })
             .collect();
-        let vertices = lowest_incident(self.vertices.len(), &edges)
-            .into_iter()
-            .zip(&self.vertices)
-            .map(|(e, vertex)| winged_edge::Vertex {
-                position: vertex.position,
-                incident_edge: (e != NONE).then_some(EdgeId::new(e)),
-            })
-            .collect();
+        let vertices = winged_edge::Vertex::rows(
+            self.vertices.iter().map(|vertex| vertex.position),
+            &lowest_incident(self.vertices.len(), &edges),
+        );
         let correspondence = EdgeCorrespondence {
             edge_of_half_edge: edge_of.into_iter().map(EdgeId::new).collect(),
             half_edges_of_edge: pairs,

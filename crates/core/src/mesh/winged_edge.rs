@@ -25,6 +25,21 @@ pub struct Vertex {
     pub incident_edge: Option<EdgeId>,
 }
 
+impl Vertex {
+    /// The vertex table from each vertex's position and incident edge
+    /// (`NONE` for an isolated vertex), as the build and the conversion from
+    /// half-edges find them. Written into rows sized up front, as in the
+    /// builder (see its module notes).
+    pub(crate) fn rows(positions: impl IntoIterator<Item = Vec3>, incident: &[u32]) -> Vec<Self> {
+        let mut rows = vec![Self::default(); incident.len()];
+        for ((row, position), &e) in rows.iter_mut().zip(positions).zip(incident) {
+            row.position = position;
+            row.incident_edge = (e != NONE).then_some(EdgeId::new(e));
+        }
+        rows
+    }
+}
+
 /// A row of the winged-edge face table.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Face {
@@ -229,15 +244,7 @@ impl builder::Assembly for WingedEdgeAssembly {
             row.incident_edge = EdgeId::new(lowest);
         }
         drop(edge_of_table);
-        let mut vertices = vec![Vertex::default(); polygons.vertex_count()];
-        for ((vertex, &position), &e) in vertices
-            .iter_mut()
-            .zip(polygons.positions())
-            .zip(&incident_table)
-        {
-            vertex.position = position;
-            vertex.incident_edge = (e != NONE).then_some(EdgeId::new(e));
-        }
+        let vertices = Vertex::rows(polygons.positions().iter().copied(), &incident_table);
         WingedEdgeMesh::from_raw_parts(vertices, faces, edges_table)
     }
 }
