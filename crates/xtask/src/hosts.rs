@@ -19,16 +19,20 @@ use std::{
 
 use anyhow::{Context as _, bail};
 
-use crate::{process, serve};
+use crate::{
+    process::{self, Edgewise},
+    serve,
+};
 
 /// Where the snippets in web/hosts (as docs/embedding.md prints them) say
 /// the app is served; replaced by the app's real address.
 const PLACEHOLDER: &str = "https://example.edu/edgewise/";
 
-/// Installs the tools if needed and builds the deck and the notes into
-/// target/hosts for the app at `app_url` (ending in '/'). Returns the
-/// folder to serve: `reveal/` holds the deck and `mkdocs/` the notes.
-pub fn build(root: &Path, app_url: &str) -> anyhow::Result<PathBuf> {
+/// Installs the tools if needed and builds the deck, the notes and the LMS
+/// (its packages made by `edgewise`) into target/hosts for the app at
+/// `app_url` (ending in '/'). Returns the folder to serve: `reveal/` holds
+/// the deck, `mkdocs/` the notes and `scorm/` the LMS.
+pub fn build(root: &Path, app_url: &str, edgewise: &Edgewise) -> anyhow::Result<PathBuf> {
     let source = root.join("web/hosts");
     let target = root.join("target");
     install_npm_tools(&source)?;
@@ -71,7 +75,7 @@ pub fn build(root: &Path, app_url: &str) -> anyhow::Result<PathBuf> {
             .arg("--site-dir")
             .arg(out.join("mkdocs")),
     )?;
-    scorm_lms(root, &source, &out.join("scorm"))?;
+    scorm_lms(root, &source, &out.join("scorm"), edgewise)?;
     Ok(out)
 }
 
@@ -85,7 +89,7 @@ const SCORM_EXERCISES: [&str; 3] = [
 
 /// scorm-again's page as the LMS, and a package of dist/ for each SCORM
 /// version unzipped beside it (`package-1.2/`, `package-2004/`).
-fn scorm_lms(root: &Path, source: &Path, out: &Path) -> anyhow::Result<()> {
+fn scorm_lms(root: &Path, source: &Path, out: &Path, edgewise: &Edgewise) -> anyhow::Result<()> {
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     std::fs::copy(
         source.join("node_modules/scorm-again/dist/scorm-again.min.js"),
@@ -100,7 +104,7 @@ fn scorm_lms(root: &Path, source: &Path, out: &Path) -> anyhow::Result<()> {
     }
     for version in ["1.2", "2004"] {
         let zip = out.join(format!("edgewise-{version}.zip"));
-        let mut package = process::edgewise_package();
+        let mut package = edgewise.package();
         package
             .current_dir(root)
             .arg(&zip)
@@ -143,7 +147,7 @@ pub fn serve(root: &Path, app: Option<&str>) -> anyhow::Result<()> {
             format!("http://{}/", serve::serve_in_background(&dist)?)
         }
     };
-    let hosts = build(root, &app_url)?;
+    let hosts = build(root, &app_url, &Edgewise::CargoRun)?;
     let addr = serve::serve_in_background(&hosts)?;
     println!("The app:          {app_url}");
     println!("reveal.js deck:   http://{addr}/reveal/");

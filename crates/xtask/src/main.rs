@@ -61,7 +61,11 @@ enum Command {
         profiling: bool,
     },
     /// Build dist/ and run only the browser tests.
-    BrowserTest,
+    BrowserTest {
+        /// Only the tests whose names contain one of these (`cargo test`'s
+        /// filters), for a quicker check of one page while working on it.
+        filters: Vec<String>,
+    },
     /// Check the invariants ARCHITECTURE.md states: no module cycles, a
     /// column named only in schema/column.rs, `impl EdgewiseApp` only in
     /// app/, dependencies down the layers, every crate described.
@@ -138,14 +142,14 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
             };
             web_build::build(&root, profile, web_build::Lints::Off).map(|_| ())
         }
-        Command::BrowserTest => {
+        Command::BrowserTest { ref filters } => {
             let dist =
                 web_build::build(&root, web_build::Profile::Release, web_build::Lints::Clippy)?;
-            test::browser_tests(&root, &dist)
+            test::browser_tests(&root, &dist, &process::Edgewise::CargoRun, filters)
         }
         Command::Package { ref args } => {
             let dist = web_build::build(&root, web_build::Profile::Release, web_build::Lints::Off)?;
-            let mut package = process::edgewise_package();
+            let mut package = process::Edgewise::CargoRun.package();
             package.args(args);
             if !args
                 .iter()

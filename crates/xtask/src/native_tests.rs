@@ -38,9 +38,17 @@ pub struct TestExecutable {
     package_dir: PathBuf,
 }
 
-/// The test executables of `build` (a `cargo test --no-run` selection whose
-/// artifacts are built), in cargo's order.
-pub fn executables(build: &mut Command) -> anyhow::Result<Vec<TestExecutable>> {
+/// What a `cargo test --no-run` selection built.
+pub struct Built {
+    /// Its test executables, in cargo's order.
+    pub tests: Vec<TestExecutable>,
+    /// The `edgewise` binary, built for the CLI's tests.
+    pub edgewise: Option<PathBuf>,
+}
+
+/// Lists what `build` (a `cargo test --no-run` selection whose artifacts are
+/// built) made.
+pub fn list(build: &mut Command) -> anyhow::Result<Built> {
     let output = build
         .args(["--no-run", "--message-format=json"])
         .stderr(Stdio::inherit())
@@ -49,36 +57,38 @@ pub fn executables(build: &mut Command) -> anyhow::Result<Vec<TestExecutable>> {
     if !output.status.success() {
         bail!("listing the test executables failed ({})", output.status);
     }
-    let mut found = Vec::new();
+    let mut built = Built {
+        tests: Vec::new(),
+        edgewise: None,
+    };
     for line in String::from_utf8_lossy(&output.stdout).lines() {
         let Ok(message) = serde_json::from_str::<serde_json::Value>(line) else {
             continue;
         };
-        let is_test = message["profile"]["test"].as_bool() == Some(true);
         let (Some(path), Some(manifest)) = (
             message["executable"].as_str(),
             message["manifest_path"].as_str(),
         ) else {
             continue;
         };
-        if is_test && message["reason"] == "compiler-artifact" {
-            found.push(TestExecutable {
+        if message["reason"] != "compiler-artifact" {
+            continue;
+        }
+        if message["profile"]["test"].as_bool() == Some(true) {
+            built.tests.push(TestExecutable {
                 path: path.into(),
                 package_dir: Path::new(manifest)
                     .parent()
                     .map_or_else(PathBuf::new, Path::to_path_buf),
             });
+        } else if message["target"]["name"] == "edgewise" {
+            built.edgewise = Some(path.into());
         }
     }
-    if found.is_empty() {
+    if built.tests.is_empty() {
         bail!("cargo listed no test executables");
     }
-    // The CLI's first: they run target/checks/edgewise, which the host
-    // pages' `cargo run` and the browser tests' build each link again (cargo
-    // removes the file, then links the new one), so they should be done by
-    // then.
-    found.sort_by_key(|executable| !executable.package_dir.ends_with("crates/cli"));
-    Ok(found)
+    Ok(built)
 }
 
 /// The executables running one after another on a thread, as `cargo test`
@@ -211,6 +221,11 @@ fn run_each(
             std::thread::sleep(Duration::from_millis(100));
         };
         if !status.success() {
+            // Said at once, in the middle of another step's output: the run
+            // stops at the next step, which may be a quarter of an hour away.
+            eprintln!(
+                "\n==> native tests failed: {name} ({status}); the run stops after this step"
+            );
             bail!("native tests failed: {name} ({status})");
         }
     }

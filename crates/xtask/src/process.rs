@@ -1,7 +1,7 @@
 //! Running commands and installing Debian packages.
 
 use std::{
-    path::Path,
+    path::{Path, PathBuf},
     process::{Command, Stdio},
     time::{Duration, Instant},
 };
@@ -14,9 +14,9 @@ pub fn cargo() -> Command {
 }
 
 /// Cargo.toml's profile for xtask itself (.cargo/config.toml's alias), the
-/// native tests and the `edgewise package` the host pages use: dev, with
-/// its dependencies unoptimised, which halves a cold build, and one set of
-/// them for all three.
+/// native tests and `cargo xtask package` and `hosts`: dev, with its
+/// dependencies unoptimised, which halves a cold build, and one set of them
+/// for all three.
 pub const CHECKS_PROFILE: &str = "checks";
 
 /// Joins the arguments cargo-clippy hands clippy-driver.
@@ -40,22 +40,40 @@ fn clippy_driver() -> std::ffi::OsString {
         .map_or_else(|| "clippy-driver".into(), |path| path.trim().into())
 }
 
-/// `edgewise package`, built from this workspace as needed; the caller adds
-/// its arguments.
-pub fn edgewise_package() -> Command {
-    let mut cmd = cargo();
-    cmd.args([
-        "run",
-        "--quiet",
-        "--locked",
-        "--profile",
-        CHECKS_PROFILE,
-        "--package",
-        "edgewise-cli",
-        "--",
-        "package",
-    ]);
-    cmd
+/// Where the xtask's commands find `edgewise`.
+pub enum Edgewise {
+    /// Built from this workspace as needed, by `cargo run`.
+    CargoRun,
+    /// A binary already built: the one `cargo xtask test`'s workspace build
+    /// made. `cargo run` of the CLI alone selects other features, so it
+    /// compiled core, model and the CLI again (about 19 s) and linked
+    /// target/checks/edgewise anew while the CLI's tests were running it.
+    Built(PathBuf),
+}
+
+impl Edgewise {
+    /// `edgewise package`; the caller adds its arguments.
+    pub fn package(&self) -> Command {
+        let mut cmd = match self {
+            Self::CargoRun => {
+                let mut cmd = cargo();
+                cmd.args([
+                    "run",
+                    "--quiet",
+                    "--locked",
+                    "--profile",
+                    CHECKS_PROFILE,
+                    "--package",
+                    "edgewise-cli",
+                    "--",
+                ]);
+                cmd
+            }
+            Self::Built(path) => Command::new(path),
+        };
+        cmd.arg("package");
+        cmd
+    }
 }
 
 /// Runs `cmd`, streaming its output, and fails with `what` if it fails.

@@ -5,7 +5,7 @@ use std::{path::Path, time::Instant};
 use crate::{
     hosts,
     native_tests::{self, NativeTests},
-    process::{self, CHECKS_PROFILE, cargo},
+    process::{self, CHECKS_PROFILE, Edgewise, cargo},
     serve, tidy,
     toolchain::WasmToolchain,
     web_build,
@@ -63,7 +63,7 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
             workspace_test().args(["--no-run", "--test", BROWSER_TESTS]),
         )
     })?;
-    let mut native = timings.step("native tests started, and the doctests", || {
+    let (mut native, edgewise) = timings.step("native tests started, and the doctests", || {
         start_native_tests(root)
     })?;
     let toolchain = timings.step("wasm32 toolchain", WasmToolchain::find)?;
@@ -75,7 +75,9 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
         web_build::build(root, web_build::Profile::Release, web_build::Lints::Clippy)
     })?;
     native.check()?;
-    timings.step("browser tests", || browser_tests(root, &dist))?;
+    timings.step("browser tests", || {
+        browser_tests(root, &dist, &edgewise, &[])
+    })?;
     let ran = timings.step("native tests, the rest", || native.finish())?;
     timings.beside("native tests, from their start", ran.as_secs_f64());
     Ok(())
@@ -85,8 +87,9 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
 /// then runs the doctests, which target flags leave out and which need
 /// cargo's build lock, in the foreground. The benchmarks were built and
 /// linted with the rest; run once each in criterion's test mode they would
-/// add half a minute and test nothing the tests do not.
-fn start_native_tests(root: &Path) -> anyhow::Result<NativeTests> {
+/// add half a minute and test nothing the tests do not. Also returns the
+/// `edgewise` binary that build made, for the host pages.
+fn start_native_tests(root: &Path) -> anyhow::Result<(NativeTests, Edgewise)> {
     // The 3D view's render tests draw on the CPU through lavapipe.
     process::ensure_debian_packages(
         "the 3D view's render tests (software Vulkan)",
@@ -95,23 +98,20 @@ fn start_native_tests(root: &Path) -> anyhow::Result<NativeTests> {
             (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
         ],
     )?;
-    let executables = native_tests::executables(workspace_test().args([
-        "--lib",
-        "--bins",
-        "--tests",
-        "--examples",
-    ]))?;
+    let built =
+        native_tests::list(workspace_test().args(["--lib", "--bins", "--tests", "--examples"]))?;
+    let edgewise = built.edgewise.map_or(Edgewise::CargoRun, Edgewise::Built);
     let log = web_build::target_dir(root).join("native-tests.log");
     eprintln!(
         "==> {} native test executables started at the lowest priority; their output, in {}, \
          follows the browser tests",
-        executables.len(),
+        built.tests.len(),
         log.display()
     );
     // The rendering tests fail, rather than skip, without an adapter.
-    let native = NativeTests::start(executables, &[("EDGEWISE_REQUIRE_GPU", "1")], &log)?;
+    let native = NativeTests::start(built.tests, &[("EDGEWISE_REQUIRE_GPU", "1")], &log)?;
     process::run("doctests", workspace_test().arg("--doc"))?;
-    Ok(native)
+    Ok((native, edgewise))
 }
 
 /// `cargo test` over the whole workspace, its own crates compiled by
@@ -167,14 +167,21 @@ fn wasm_lints(root: &Path, toolchain: WasmToolchain) -> anyhow::Result<()> {
 
 /// Serves `dist` and the host pages that embed it (hosts.rs), each on its
 /// own origin, and runs the browser tests against them in headless Chromium.
-pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
+/// `edgewise` makes the host pages' SCORM packages; `filters`, if any, pick
+/// the tests whose names contain one of them.
+pub fn browser_tests(
+    root: &Path,
+    dist: &Path,
+    edgewise: &Edgewise,
+    filters: &[String],
+) -> anyhow::Result<()> {
     process::ensure_debian_packages(
         "the browser tests",
         &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
     )?;
     let addr = serve::serve_in_background(dist)?;
     let url = format!("http://{addr}/");
-    let hosts_addr = serve::serve_in_background(&hosts::build(root, &url)?)?;
+    let hosts_addr = serve::serve_in_background(&hosts::build(root, &url, edgewise)?)?;
     let hosts_url = format!("http://{hosts_addr}/");
     eprintln!("==> browser tests against {url}, hosts at {hosts_url}");
     process::run(
@@ -186,6 +193,7 @@ pub fn browser_tests(root: &Path, dist: &Path) -> anyhow::Result<()> {
             // a two-core machine starved each other's renderers past the
             // tests' waits (a host page, then the edit menu's undo).
             .args(["--", "--test-threads=1"])
+            .args(filters)
             .env("EDGEWISE_URL", &url)
             .env("EDGEWISE_HOSTS_URL", &hosts_url)
             .env("EDGEWISE_CHROMIUM", CHROMIUM)
@@ -241,7 +249,7 @@ pub fn run_browser_bench(root: &Path, bin: &str, vars: &[(&str, String)]) -> any
 #[derive(Default)]
 struct Timings {
     steps: Vec<(&'static str, f64)>,
-    beside: Vec<(&'static str, f64)>,
+    beside: Option<(&'static str, f64)>,
 }
 
 impl Timings {
@@ -258,7 +266,7 @@ impl Timings {
     }
 
     fn beside(&mut self, name: &'static str, secs: f64) {
-        self.beside.push((name, secs));
+        self.beside = Some((name, secs));
     }
 
     fn print(&self) {
@@ -268,7 +276,7 @@ impl Timings {
         }
         let all: f64 = self.steps.iter().map(|(_, secs)| secs).sum();
         eprintln!("    {:<38} {all:>7.1} s", "all steps");
-        for (name, secs) in &self.beside {
+        if let Some((name, secs)) = self.beside {
             eprintln!("    beside them: {name}, {secs:.1} s");
         }
     }
