@@ -553,6 +553,16 @@ impl Browser {
             .map(drop)
     }
 
+    /// Waits for `count` more animation frames, in which the app draws what
+    /// the input it has taken changed (egui lays a new window out in the
+    /// frame after the one that shows it), rather than for a fixed time.
+    pub async fn frames(&self, count: u32) -> anyhow::Result<()> {
+        for _ in 0..count {
+            self.next_frame().await?;
+        }
+        Ok(())
+    }
+
     /// Where the app draws an element, in CSS pixels of the page: its
     /// `screenPosition` plus the canvas's offset; `None` if not in view.
     pub async fn element_at(&self, kind: &str, id: u32) -> anyhow::Result<Option<(f64, f64)>> {

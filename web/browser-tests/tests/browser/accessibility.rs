@@ -149,7 +149,7 @@ async fn the_keyboard_alone_moves_focus_visibly_and_walks_a_table() -> anyhow::R
     for _ in 0..3 {
         browser.press_key("Tab", 0).await?;
     }
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    browser.frames(2).await?;
     let ringed = browser
         .screenshot("keyboard-focus-ring")
         .await?

@@ -159,14 +159,14 @@ async fn an_embedded_view_takes_the_keys_only_when_asked() -> anyhow::Result<()>
         "BODY",
         "the view took the focus"
     );
-    let step = || async {
-        browser
-            .eval(&format!("return {view}.state().trace.step;"))
-            .await
-    };
     browser.press_key("ArrowRight", 0).await?;
-    tokio::time::sleep(Duration::from_millis(500)).await;
-    assert_eq!(step().await?, 3, "the page's → reached the view");
+    browser
+        .wait_for(
+            &format!("{view}.state().trace.step === 3"),
+            Duration::from_secs(10),
+        )
+        .await
+        .context("the page's → did not reach the view")?;
 
     // A click on the view gives it the keys, and shows a ring.
     let centre = browser

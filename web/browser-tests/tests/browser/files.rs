@@ -55,7 +55,7 @@ async fn a_dropped_obj_asks_for_a_structure_and_exports_round_trip() -> anyhow::
         "nothing opens before the answer"
     );
     // egui sizes a new window in the frame after it appears, unasked.
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    browser.frames(3).await?;
     let shot = browser.screenshot("structure-dialog").await?;
     assert!(!shot.is_blank());
 

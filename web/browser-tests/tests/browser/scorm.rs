@@ -360,7 +360,12 @@ async fn a_package_without_an_lms_runs_as_a_plain_page() -> anyhow::Result<()> {
         .find(|s| s.name.starts_with("phone"))
         .context("a phone")?;
     browser.emulate(phone).await?;
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    browser
+        .wait_for(
+            &format!("innerWidth === {}", phone.width),
+            Duration::from_secs(10),
+        )
+        .await?;
     let layout = browser
         .eval(
             "const nav = document.querySelector('nav').getBoundingClientRect(); \
