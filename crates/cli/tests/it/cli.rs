@@ -171,8 +171,7 @@ fn a_missing_file_is_bad_input() {
 
 #[test]
 fn convert_goes_through_every_format_and_back() {
-    let dir = std::env::temp_dir().join(format!("edgewise-cli-convert-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = scratch("convert");
     let source = root().join("meshes/dodecahedron.obj");
     let steps = [
         (source.clone(), dir.join("a.ply"), "binary"),
@@ -198,7 +197,6 @@ fn convert_goes_through_every_format_and_back() {
     };
     assert_eq!(info(&dir.join("e.obj")), info(&source));
     assert_eq!(info(&dir.join("b.wtb")), info(&source));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -283,7 +281,8 @@ fn trace_prints_a_question_set_with_its_answers() {
     );
     assert_eq!(text.matches("    answer: ").count(), 6, "{text}");
 
-    let set = scratch("questions").join("set.txt");
+    let dir = scratch("questions");
+    let set = dir.join("set.txt");
     std::fs::write(&set, "line 13: fine\nstep twelve: oops\n").expect("written");
     let output = trace_table_2("1", &["--questions", set.to_str().expect("UTF-8 path")]);
     assert_eq!(code(&output), 1);
@@ -483,7 +482,6 @@ fn edit_flips_an_octahedron_edge_and_writes_the_result() {
     let flipped = std::fs::read_to_string(&out).expect("written");
     let faces = |text: &str| text.lines().filter(|l| l.starts_with("f ")).count();
     assert_eq!(faces(&flipped), faces(&original));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -517,7 +515,6 @@ fn edit_compacts_the_ids_and_converts_when_asked() {
             out.display()
         )
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -551,7 +548,6 @@ fn edit_refuses_a_flip_on_the_tetrahedron_with_exit_1() {
         stderr(&output),
         "meshes/open-square.wtb: remove-vertex 9: vertex 9 does not exist\n"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -638,7 +634,6 @@ fn trace_runs_an_editing_algorithm_and_saves_what_it_leaves() {
         "algorithms/half-edge-edits.alg:41: error: edge 0 is on the boundary; a flip needs two faces\n"
     );
     assert!(!refused.exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -667,5 +662,4 @@ fn trace_refuses_to_save_what_an_algorithm_left_broken() {
     assert!(message.contains("broken record"), "{message}");
     assert!(message.contains("edge 2 pair_edge"), "{message}");
     assert!(!out.exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }

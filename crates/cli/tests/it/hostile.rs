@@ -5,19 +5,18 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use crate::common::scratch;
+
 fn check(command: &str, name: &str, contents: &str) -> Output {
-    let dir = std::env::temp_dir().join(format!("edgewise-hostile-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let dir = scratch(&format!("hostile-{name}"));
     let path: PathBuf = dir.join(name);
     std::fs::write(&path, contents).expect("writable");
-    let output = Command::new(env!("CARGO_BIN_EXE_edgewise"))
+    Command::new(env!("CARGO_BIN_EXE_edgewise"))
         .arg(command)
         .arg(&path)
-        .current_dir(&dir)
+        .current_dir(&*dir)
         .output()
-        .expect("edgewise runs");
-    std::fs::remove_file(&path).ok();
-    output
+        .expect("edgewise runs")
 }
 
 fn algorithm(params: &str, body: &str) -> String {

@@ -46,9 +46,27 @@ pub fn code(output: &Output) -> i32 {
     output.status.code().unwrap_or(-1)
 }
 
-/// A fresh folder for one test's output files.
-pub fn scratch(name: &str) -> PathBuf {
+/// A fresh folder for one test's output files, removed when the test ends,
+/// passed or failed: a run of the tests leaves nothing in the temp dir.
+pub struct Scratch(PathBuf);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        std::fs::remove_dir_all(&self.0).ok();
+    }
+}
+
+/// A [`Scratch`] folder, named after the test.
+pub fn scratch(name: &str) -> Scratch {
     let dir = std::env::temp_dir().join(format!("edgewise-cli-{name}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+    Scratch(dir)
 }
