@@ -105,13 +105,12 @@ impl NativeTests {
     /// Starts `executables` with `envs`, their output going to `log`.
     pub fn start(
         executables: Vec<TestExecutable>,
-        envs: &[(String, String)],
+        envs: Vec<(String, String)>,
         log: &Path,
     ) -> anyhow::Result<Self> {
         let file = File::create(log).with_context(|| format!("cannot create {}", log.display()))?;
         let running = Arc::new(Mutex::new(None));
         let stop = Arc::new(AtomicBool::new(false));
-        let envs = envs.to_vec();
         let thread = std::thread::spawn({
             let (running, stop) = (Arc::clone(&running), Arc::clone(&stop));
             move || run_each(&executables, &envs, &file, &running, &stop)

@@ -14,9 +14,9 @@ pub fn cargo() -> Command {
 }
 
 /// Cargo.toml's profile for xtask itself (.cargo/config.toml's alias), the
-/// native tests and `cargo xtask package` and `hosts`: dev, with its
-/// dependencies unoptimised, which halves a cold build, and one set of them
-/// for all three.
+/// native tests, and the `edgewise` that `cargo xtask package` and `hosts`
+/// run: dev, with its dependencies unoptimised, which halves a cold build,
+/// and one set of them for all.
 pub const CHECKS_PROFILE: &str = "checks";
 
 /// Joins the arguments cargo-clippy hands clippy-driver.

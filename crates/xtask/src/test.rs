@@ -118,7 +118,7 @@ fn start_native_tests(root: &Path) -> anyhow::Result<(NativeTests, Edgewise)> {
         // a passing run. A private folder of their own quiets it.
         envs.push(("XDG_RUNTIME_DIR".to_owned(), runtime_dir(root)?));
     }
-    let native = NativeTests::start(built.tests, &envs, &log)?;
+    let native = NativeTests::start(built.tests, envs, &log)?;
     process::run("doctests", workspace_test().arg("--doc"))?;
     Ok((native, edgewise))
 }

@@ -237,8 +237,7 @@ async fn a_walk_is_clicked_and_a_wrong_click_is_named() -> anyhow::Result<()> {
     let state = exercise(&browser).await?;
     assert_eq!(state["kind"], "walk");
     assert_eq!(state["total"], 3);
-    browser.next_frame().await?;
-    browser.next_frame().await?;
+    browser.frames(2).await?;
     let (x, y) = browser
         .element_at("edge", 1)
         .await?

@@ -87,8 +87,7 @@ struct Seen<'a> {
 impl Seen<'_> {
     async fn layout(&self) -> anyhow::Result<Value> {
         // Two frames, so that the layout is of what the last command did.
-        self.browser.next_frame().await?;
-        self.browser.next_frame().await?;
+        self.browser.frames(2).await?;
         Ok(self.browser.state().await?["layout"].take())
     }
 
