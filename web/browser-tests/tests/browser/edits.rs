@@ -2,8 +2,39 @@
 //! example mesh, whose records break at the first write and mend by the
 //! end, and a native operation refused with its reason.
 
+use anyhow::Context as _;
 use edgewise_browser_tests::{Browser, LaunchOptions};
+use edgewise_core::lang::{self, RunOptions, StepKind, Value as Input};
+use edgewise_core::schema::Structure;
+use edgewise_model::{algorithm::library::AlgorithmLibrary, samples};
 use serde_json::Value;
+
+/// The step, as the page numbers them, that makes `flipEdge`'s first write
+/// on the hexagon's half-edge 2: the step after that operation.
+fn first_write_step() -> anyhow::Result<usize> {
+    let document = samples::open("hexagon", Some(Structure::HalfEdge), Structure::HalfEdge)
+        .map_err(anyhow::Error::msg)?;
+    let flip = AlgorithmLibrary::shipped()
+        .find("flipEdge", Structure::HalfEdge)
+        .context("flipEdge is shipped")?
+        .clone();
+    let mut mesh = document.mesh().clone();
+    let trace = lang::run_editing(
+        &flip,
+        &mut mesh,
+        &[("h", Input::Edge(2))],
+        RunOptions::default(),
+    )?;
+    (0..trace.len())
+        .find(|&i| {
+            matches!(
+                trace.step(i).map(|step| step.kind),
+                Some(StepKind::Write { .. })
+            )
+        })
+        .map(|i| i + 1)
+        .context("the flip writes")
+}
 
 #[tokio::test]
 async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()> {
@@ -22,14 +53,21 @@ async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()
         .eval_async("window.edgewise.run('flipEdge', { h: 2 })")
         .await?;
 
-    // Step to the first write: the tables are sound until then.
-    let mut state = browser.state().await?;
-    while state["trace"]["operation"] != "write" {
-        assert_eq!(state["broken"], serde_json::json!([]), "{state}");
-        assert_eq!(state["trace"]["done"], false, "the flip never wrote");
-        browser.eval_async("window.edgewise.step(1)").await?;
-        state = browser.state().await?;
-    }
+    // The tables are sound until the first write. The app's own test walks
+    // every step to it (crates/app/tests/it/edits.rs); the page, where each
+    // step is a software-rendered frame, goes to the step before it, found in
+    // the same trace run here, then takes the write.
+    let first_write = first_write_step()?;
+    browser
+        .eval_async(&format!("window.edgewise.goto({})", first_write - 1))
+        .await?;
+    let state = browser.state().await?;
+    assert_eq!(state["broken"], serde_json::json!([]), "{state}");
+    assert_ne!(state["trace"]["operation"], "write", "{state}");
+    browser.eval_async("window.edgewise.step(1)").await?;
+    let state = browser.state().await?;
+    assert_eq!(state["trace"]["step"], first_write, "{state}");
+    assert_eq!(state["trace"]["operation"], "write", "{state}");
     let broken = state["broken"].as_array().cloned().unwrap_or_default();
     assert!(
         !broken.is_empty(),
