@@ -10,6 +10,9 @@ use edgewise_core::schema::ElementKind;
 use super::EdgewiseApp;
 use crate::history::History;
 
+/// The sample a first visit opens: the journal's Table 2.
+const FIRST_SAMPLE: &str = "tetrahedron";
+
 /// The three things to try.
 pub const STEPS: [&str; 3] = [
     "Click an edge, in the 3D view or in the Edges table.",
@@ -37,7 +40,7 @@ impl EdgewiseApp {
     /// hint unless it was dismissed before.
     pub fn first_visit(&mut self) {
         if self
-            .load_sample("tetrahedron", Some(Structure::WingedEdge))
+            .load_sample(FIRST_SAMPLE, Some(Structure::WingedEdge))
             .is_err()
         {
             return;
@@ -100,6 +103,13 @@ impl EdgewiseApp {
         let Some(view) = self.layout.view else {
             return;
         };
+        // The hint stays open over any mesh opened next; only the first
+        // names it.
+        let on_table_2 = self
+            .tab()
+            .document
+            .as_ref()
+            .is_some_and(|document| document.sample.as_deref() == Some(FIRST_SAMPLE));
         let corner = egui::pos2(view.x + view.w - 12.0, view.y + 12.0);
         let mut dismiss = false;
         let window = egui::Id::unique(TOUR_WINDOW);
@@ -113,10 +123,12 @@ impl EdgewiseApp {
             .default_open(!self.layout.compact)
             .show(ctx, |ui| {
                 ui.set_max_width(320.0_f32.min(view.w - 48.0).max(160.0));
-                ui.label(
+                ui.label(if on_table_2 {
                     "This is the tetrahedron of the winged-edge paper's Table 2: the 3D \
-                     view above, the records the structure stores below. Try:",
-                );
+                     view above, the records the structure stores below. Try:"
+                } else {
+                    "The 3D view above, the records the structure stores below. Try:"
+                });
                 for (step, done) in STEPS.iter().zip(tour.done) {
                     ui.horizontal_wrapped(|ui| {
                         ui.label(if done { "✔" } else { "○" });

@@ -58,6 +58,20 @@ fn the_first_visit_opens_table_2_and_ticks_off_three_things_to_try() {
     harness.run();
     assert_eq!(harness.state().tour().map(|t| t.done), Some([true; 3]));
     harness.get_by_label_contains("That is the whole idea");
+    harness.get_by_label_contains("This is the tetrahedron of the winged-edge paper's Table 2");
+
+    // Over another mesh the hint stays, and no longer names the tetrahedron.
+    harness
+        .state_mut()
+        .load_sample("hexagon", None)
+        .expect("loads");
+    harness.run();
+    harness.get_by_label_contains("Click an edge");
+    assert!(
+        harness
+            .query_by_label_contains("This is the tetrahedron")
+            .is_none()
+    );
 
     // What am I looking at? labels the parts, and a click closes it.
     harness.get_by_label("What am I looking at?").click();
