@@ -323,8 +323,9 @@ pub struct TraceState {
     pub span: Option<[u32; 2]>,
     /// Each variable's value: 'Edge 3', 'Integer 4', 'null'.
     pub variables: BTreeMap<String, String>,
-    /// 'start', 'lookup', 'assign', 'compare', 'compute', 'mark',
-    /// 'highlight', 'message' or 'done'.
+    /// The operation's short name, as [`TraceFrame::operation`] lists them.
+    ///
+    /// [`TraceFrame::operation`]: edgewise_model::algorithm::frame::TraceFrame::operation
     pub operation: &'static str,
     /// Marked elements in marking order.
     pub marked: Vec<ElementRef>,

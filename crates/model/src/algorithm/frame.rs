@@ -53,8 +53,10 @@ pub struct TraceFrame {
     /// The call stack, the started algorithm first: `cutCorner (called on
     /// line 140)`. One entry outside calls.
     pub calls: Vec<String>,
-    /// A short name of the operation: "lookup", "assign", "compare",
-    /// "compute", "mark", "highlight", "message", "done" or "start".
+    /// A short name of the operation: "start" at step 0, then "lookup",
+    /// "assign", "compare", "compute", "mark", "highlight", "message",
+    /// "write", "new", "delete", "call", "return", "index", "store",
+    /// "append" or "done".
     pub operation: &'static str,
     /// The message line: this step in one sentence.
     pub message: String,
