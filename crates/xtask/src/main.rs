@@ -44,7 +44,7 @@ enum Command {
         /// The port to serve on.
         #[arg(long, default_value_t = 8080)]
         port: u16,
-        /// Keep the functions' names (no wasm-opt), for a browser profiler.
+        /// Keep the functions' names, for a browser profiler.
         #[arg(long)]
         profiling: bool,
     },
@@ -56,7 +56,7 @@ enum Command {
         /// An unoptimised build, quicker to compile.
         #[arg(long, conflicts_with = "profiling")]
         dev: bool,
-        /// Keep the functions' names (no wasm-opt), for a browser profiler.
+        /// Keep the functions' names, for a browser profiler.
         #[arg(long)]
         profiling: bool,
     },

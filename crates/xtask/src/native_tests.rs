@@ -3,7 +3,7 @@
 //! idle instead of a step of their own.
 //!
 //! Measured with `vmstat` on the 2-core machine: the wasm build keeps one core
-//! idle for about 200 s (its fat-LTO link and wasm-opt each run on one core),
+//! idle for about 200 s (its fat-LTO link, and then wasm-opt, ran on one core),
 //! and the browser suite leaves 16% of both cores idle (pages waiting on
 //! timers and the test's polls).
 //!

@@ -12,8 +12,9 @@ use crate::{process, toolchain::WasmToolchain};
 pub enum Profile {
     Dev,
     Release,
-    /// Release code with its function names kept (no wasm-opt, which strips
-    /// them), so that a browser's CPU profile names each function.
+    /// Release code with its functions' name section kept, which the
+    /// release build drops, so that a browser's CPU profile names each
+    /// function.
     Profiling,
 }
 
@@ -89,13 +90,10 @@ pub fn build(root: &Path, profile: Profile, lints: Lints) -> anyhow::Result<Path
         // init() then finds the wasm file beside the JS file by itself.
         .omit_default_module_path(false)
         .debug(profile == Profile::Dev)
+        // The functions' names (1.6 MB) serve a profiler, not a student.
+        .remove_name_section(profile == Profile::Release)
         .generate(&dist)
         .with_context(|| format!("wasm-bindgen could not process {}", wasm.display()))?;
-
-    let wasm_out = dist.join(format!("{OUT_NAME}_bg.wasm"));
-    if profile == Profile::Release {
-        shrink_wasm(root, &wasm_out)?;
-    }
 
     copy_file(&root.join("index.html"), &dist.join("index.html"))?;
     copy_dir(&root.join("web/static"), &dist)?;
@@ -116,105 +114,6 @@ pub fn build(root: &Path, profile: Profile, lints: Lints) -> anyhow::Result<Path
     );
     Ok(dist)
 }
-
-/// binaryen, whose wasm-opt shrinks the wasm. From the npm registry, since
-/// Debian's (108) turns wasm-bindgen's externref table into a function table
-/// and the page then fails to start.
-const BINARYEN: &str = "binaryen@132.0.0";
-
-/// The wasm features rustc's wasm32 target emits (and SIMD, which
-/// .cargo/config.toml turns on), which wasm-opt must be told it may keep.
-const WASM_FEATURES: [&str; 7] = [
-    "--enable-simd",
-    "--enable-bulk-memory",
-    "--enable-sign-ext",
-    "--enable-mutable-globals",
-    "--enable-nontrapping-float-to-int",
-    "--enable-reference-types",
-    "--enable-multivalue",
-];
-
-/// wasm-opt, installed with npm under target/tools on first use.
-fn wasm_opt(root: &Path) -> anyhow::Result<PathBuf> {
-    let prefix = target_dir(root).join("tools/binaryen");
-    let program = prefix.join("node_modules/binaryen/bin/wasm-opt");
-    if !program.exists() {
-        eprintln!("==> installing {BINARYEN} with npm");
-        std::fs::create_dir_all(&prefix)?;
-        let mut cmd = std::process::Command::new("npm");
-        cmd.args([
-            "install",
-            "--no-audit",
-            "--no-fund",
-            "--no-save",
-            "--prefix",
-        ])
-        .arg(&prefix)
-        .arg(BINARYEN);
-        process::run("npm install binaryen", &mut cmd)?;
-    }
-    Ok(program)
-}
-
-/// Optimises the bindgen'd wasm for size with wasm-opt; without node and
-/// npm the build goes on, larger.
-///
-/// wasm-opt gives the same output for the same input, and it was most of a
-/// build whose wasm had not changed (about 80 s of the 100 that a restart of
-/// `serve` took), so its last output is kept under target/tools, named by a
-/// hash of its input and options, and reused for that input.
-fn shrink_wasm(root: &Path, wasm: &Path) -> anyhow::Result<()> {
-    let program = match wasm_opt(root) {
-        Ok(program) => program,
-        Err(error) => {
-            eprintln!("==> wasm-opt skipped (the download is larger): {error:#}");
-            return Ok(());
-        }
-    };
-    let input = std::fs::read(wasm).with_context(|| format!("cannot read {}", wasm.display()))?;
-    let mut key = Fnv1a::default();
-    for option in [BINARYEN, WASM_OPT_LEVEL].iter().chain(&WASM_FEATURES) {
-        key.write(option.as_bytes());
-        key.write(&[0]);
-    }
-    key.write(&input);
-    let kept_dir = target_dir(root).join("tools/wasm-opt-output");
-    let kept = kept_dir.join(format!("{:016x}.wasm", key.0));
-    if kept.is_file() {
-        copy_file(&kept, wasm)?;
-        eprintln!("==> wasm-opt: the input is unchanged, so its last output is reused");
-        return Ok(());
-    }
-    eprintln!("==> wasm-opt {WASM_OPT_LEVEL}");
-    let mut cmd = std::process::Command::new("node");
-    cmd.arg(&program)
-        .arg(WASM_OPT_LEVEL)
-        .args(WASM_FEATURES)
-        .arg(wasm)
-        .arg("-o")
-        .arg(wasm);
-    process::run("wasm-opt", &mut cmd)?;
-    let after = std::fs::metadata(wasm).map(|m| m.len()).unwrap_or(0);
-    eprintln!(
-        "==> wasm-opt: {:.1} MB -> {:.1} MB",
-        input.len() as f64 / 1e6,
-        after as f64 / 1e6
-    );
-    // Only the latest output is kept.
-    if kept_dir.exists() {
-        std::fs::remove_dir_all(&kept_dir)
-            .with_context(|| format!("cannot clear {}", kept_dir.display()))?;
-    }
-    std::fs::create_dir_all(&kept_dir)?;
-    // Copied whole before it takes its name: a build stopped halfway leaves
-    // no partial output to be reused.
-    let partial = kept.with_extension("partial");
-    copy_file(wasm, &partial)?;
-    rename(&partial, &kept)
-}
-
-/// wasm-opt's optimisation: for size.
-const WASM_OPT_LEVEL: &str = "-Oz";
 
 /// Files worth compressing for the wire.
 fn compressible(path: &Path) -> bool {
