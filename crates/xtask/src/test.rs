@@ -102,7 +102,12 @@ fn start_native_tests(root: &Path) -> anyhow::Result<(NativeTests, Edgewise)> {
     )?;
     let built =
         native_tests::list(workspace_test().args(["--lib", "--bins", "--tests", "--examples"]))?;
-    let edgewise = built.edgewise.map_or(Edgewise::CargoRun, Edgewise::Built);
+    // `cargo run` instead would compile the CLI again, and relink the binary
+    // the CLI's tests are running.
+    let edgewise = built
+        .edgewise
+        .map(Edgewise::Built)
+        .context("the test build listed no `edgewise` binary for the host pages")?;
     let log = web_build::target_dir(root).join("native-tests.log");
     eprintln!(
         "==> {} native test executables started at the lowest priority; their output, in {}, \
