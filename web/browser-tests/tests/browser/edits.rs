@@ -4,9 +4,10 @@
 
 use anyhow::Context as _;
 use edgewise_browser_tests::{Browser, LaunchOptions};
-use edgewise_core::lang::{self, RunOptions, StepKind, Value as Input};
+use edgewise_core::lang::{StepKind, Value as Input};
 use edgewise_core::schema::Structure;
-use edgewise_model::{algorithm::library::AlgorithmLibrary, samples};
+use edgewise_model::algorithm::{library::AlgorithmLibrary, session::PendingRun};
+use edgewise_model::samples;
 use serde_json::Value;
 
 /// The step, as the page numbers them, that makes `flipEdge`'s first write
@@ -18,13 +19,13 @@ fn first_write_step() -> anyhow::Result<usize> {
         .find("flipEdge", Structure::HalfEdge)
         .context("flipEdge is shipped")?
         .clone();
-    let mut mesh = document.mesh().clone();
-    let trace = lang::run_editing(
-        &flip,
-        &mut mesh,
-        &[("h", Input::Edge(2))],
-        RunOptions::default(),
-    )?;
+    // As the page's run('flipEdge', { h: 2 }) starts it.
+    let mut run = PendingRun::new(flip);
+    run.set("h", Input::Edge(2));
+    let trace = run
+        .start(document.mesh())
+        .map_err(anyhow::Error::msg)?
+        .trace;
     (0..trace.len())
         .find(|&i| {
             matches!(
