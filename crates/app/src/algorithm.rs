@@ -47,6 +47,9 @@ pub struct Algorithms {
     /// Where the step controls were drawn this frame, for
     /// `state().layout.stepControls`; the app takes it after each frame.
     pub step_controls: Option<egui::Rect>,
+    /// The first and last source line in sight this frame, for
+    /// `state().layout.sourceLines`; the app takes it after each frame.
+    pub source_lines: Option<[u32; 2]>,
     /// The panel is a small screen's sheet, which scrolls: the source keeps
     /// a least height instead of taking what the controls leave.
     pub in_sheet: bool,
@@ -63,6 +66,7 @@ impl Default for Algorithms {
             code_size: 14.0,
             highlighted: None,
             step_controls: None,
+            source_lines: None,
             in_sheet: false,
         }
     }

@@ -1154,6 +1154,7 @@ impl EdgewiseApp {
         part(central.response.rect, first_visit::VIEW);
         self.layout.view = Some(central.response.rect.into());
         self.layout.step_controls = self.algorithms.step_controls.take().map(Into::into);
+        self.layout.source_lines = self.algorithms.source_lines.take();
         if let Some(top_bar) = parts.iter().find(|p| p.title == first_visit::TOP_BAR.0) {
             self.layout.panels.insert("topBar", top_bar.rect.into());
         }

@@ -150,7 +150,7 @@ impl RectState {
 }
 
 /// What is where, with only what is on screen: `{window, view,
-/// stepControls, panels: {topBar, algorithm, objEditor, tables}, overlays,
+/// stepControls, sourceLines, panels: {topBar, algorithm, objEditor, tables}, overlays,
 /// menus, topBar, compact}`. Tests and embedding pages check with it that
 /// no panel squeezes the 3D view away, no overlay covers a control, and
 /// every command can be reached.
@@ -162,6 +162,10 @@ pub struct LayoutState {
     /// Step, Back, Play, the slider and Abort, while a trace runs.
     #[serde(rename = "stepControls")]
     pub step_controls: Option<RectState>,
+    /// The first and last line of the algorithm's source in sight (the
+    /// file's line numbers), while the panel shows a trace's code.
+    #[serde(rename = "sourceLines")]
+    pub source_lines: Option<[u32; 2]>,
     pub panels: BTreeMap<&'static str, RectState>,
     /// Cards drawn over the rest: the welcome card, the presentation hint.
     pub overlays: Vec<NamedRect>,

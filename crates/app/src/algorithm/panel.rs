@@ -21,8 +21,9 @@ use super::{
 use crate::command::Command;
 use edgewise_model::theme::Theme;
 
-/// The least height of the source listing, in points: a dozen lines, when
-/// the panel is a phone's sheet and everything above it scrolls away.
+/// The least height of the source listing, in points: a dozen lines. In a
+/// phone's sheet everything above it scrolls away; in a side panel the
+/// variables scroll to leave it.
 const SOURCE_LEAST_HEIGHT: f32 = 240.0;
 
 /// The height an embed keeps for its question card, in points: the
@@ -142,12 +143,8 @@ impl Algorithms {
         let Some(frame) = run.frame(theme).cloned() else {
             return answered;
         };
-        status_ui(ui, &frame, theme);
-        ui.add_space(4.0);
-        variables_ui(ui, &frame, theme);
-        ui.separator();
         // Where the panel has room, the legend goes first, at the bottom, so
-        // the source takes the height its rows leave, however many rows the
+        // the source takes the height the rest leaves, however many rows the
         // panel's width wraps the legend into. In a phone's sheet, which
         // scrolls, the source keeps a least height and the legend follows.
         if !self.in_sheet {
@@ -155,6 +152,22 @@ impl Algorithms {
                 .frame(egui::Frame::NONE.inner_margin(egui::Margin::symmetric(0, 4)))
                 .show(ui, |ui| legend_ui(ui, theme));
         }
+        status_ui(ui, &frame, theme);
+        ui.add_space(4.0);
+        if self.in_sheet {
+            variables_ui(ui, &frame, theme);
+        } else {
+            // A flip has ten variables: listed whole, they left the source
+            // three lines. They scroll instead, in what the source's least
+            // height leaves, and at least a quarter of the room.
+            let room = ui.available_height();
+            egui::ScrollArea::vertical()
+                .id_salt("trace_variables")
+                .auto_shrink([false, true])
+                .max_height((room - SOURCE_LEAST_HEIGHT).max(room / 4.0))
+                .show(ui, |ui| variables_ui(ui, &frame, theme));
+        }
+        ui.separator();
         let toggled = self.source_ui(run, ui, algorithm, &frame, &breakpoints, theme);
         if self.in_sheet {
             legend_ui(ui, theme);
@@ -345,8 +358,7 @@ impl Algorithms {
         let line_fill = ui.visuals().selection.bg_fill.gamma_multiply(0.22);
         let row_height = ui.fonts_mut(|f| f.row_height(&style.font)) + 2.0;
         let gutter = ui.fonts_mut(|f| f.glyph_width(&style.font, '0')) * 4.0 + 18.0;
-        let scroll_key = frame.line;
-        let needs_scroll = run.scrolled_to.map(|(_, line)| line) != Some(scroll_key as usize);
+        let needs_scroll = run.scrolled_to != Some(frame.line);
         let highlighted = self.highlighted(&source).clone();
         let mut toggled = None;
         let mut scrolled = false;
@@ -357,8 +369,10 @@ impl Algorithms {
         if self.in_sheet {
             area = area.min_scrolled_height(SOURCE_LEAST_HEIGHT);
         }
+        let mut in_sight: Option<[u32; 2]> = None;
         area.show(ui, |ui| {
             ui.spacing_mut().item_spacing.y = 0.0;
+            let sight = ui.clip_rect().y_range();
             for (number, range) in lines {
                 let current = frame.step > 0 && number == frame.line;
                 let background = ui.painter().add(egui::Shape::Noop);
@@ -401,6 +415,9 @@ impl Algorithms {
                     ui.add(egui::Label::new(job).extend());
                 });
                 let rect = row.response.rect;
+                if sight.contains(rect.center().y) {
+                    in_sight = Some(in_sight.map_or([number; 2], |[first, _]| [first, number]));
+                }
                 if current {
                     ui.painter().set(
                         background,
@@ -413,21 +430,24 @@ impl Algorithms {
                             line_fill,
                         ),
                     );
-                    if needs_scroll {
-                        // At once, as the tables do (`tables::table_ui`).
-                        ui.scroll_to_rect_animation(
-                            rect,
-                            Some(Align::Center),
-                            egui::style::ScrollAnimation::none(),
-                        );
-                        scrolled = true;
-                    }
+                }
+                // Step 0's line, the header, is not marked, but going back
+                // to it scrolls the code back to its top.
+                if needs_scroll && number == frame.line {
+                    // At once, as the tables do (`tables::table_ui`).
+                    ui.scroll_to_rect_animation(
+                        rect,
+                        Some(Align::Center),
+                        egui::style::ScrollAnimation::none(),
+                    );
+                    scrolled = true;
                 }
             }
         });
-        if scrolled || frame.step == 0 {
-            run.scrolled_to = Some((0, scroll_key as usize));
+        if scrolled {
+            run.scrolled_to = Some(frame.line);
         }
+        self.source_lines = in_sight;
         toggled.map(Command::ToggleBreakpoint)
     }
 }

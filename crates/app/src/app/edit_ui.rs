@@ -68,13 +68,22 @@ impl EdgewiseApp {
                 .color(colour)
                 .strong(),
             );
-            // In the language's names (successorEdge), at the panel's size.
-            for issue in broken.iter().take(LISTED) {
-                ui.label(egui::RichText::new(issue.in_language()).color(colour));
-            }
-            if tab.broken_total > LISTED {
-                ui.weak(format!("… and {} more", tab.broken_total - LISTED));
-            }
+            // The list scrolls within a quarter of the panel while a trace
+            // runs, whose current line and variables need the rest.
+            let share = if tab.run.is_active() { 0.25 } else { 0.5 };
+            egui::ScrollArea::vertical()
+                .id_salt("broken_records")
+                .auto_shrink([false, true])
+                .max_height(ui.available_height() * share)
+                .show(ui, |ui| {
+                    // In the language's names (successorEdge), at the panel's size.
+                    for issue in broken.iter().take(LISTED) {
+                        ui.label(egui::RichText::new(issue.in_language()).color(colour));
+                    }
+                    if tab.broken_total > LISTED {
+                        ui.weak(format!("… and {} more", tab.broken_total - LISTED));
+                    }
+                });
         } else if tab.run.session().is_some_and(TraceSession::edits) {
             ui.weak("Every record follows the structure's rules at this step.");
         }

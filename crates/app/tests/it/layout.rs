@@ -2,7 +2,8 @@
 //! algorithm panel (loopSubdivide's `points`, an array of vectors) is cut at
 //! the panel's edge, the panel takes at most half the window, and the 3D
 //! view keeps its room, at the last step, after going back and in the next
-//! run.
+//! run; and the line being run stays in sight beside a long list of
+//! variables.
 
 use crate::support;
 
@@ -247,4 +248,40 @@ fn the_id_column_stays_while_a_table_scrolls_sideways() {
         Some((edgewise_core::schema::ElementKind::Edge, 3)),
         "the sticky id previews its row"
     );
+}
+
+/// The line being run stays in sight, with the lines around it, however many
+/// variables and broken records the step lists: a flip's ten variables and
+/// eight broken records had left the source three lines of a laptop's
+/// window. Going to a step scrolls the code to it, and going back to step 0
+/// scrolls it back to the header.
+#[test]
+fn the_current_line_stays_in_sight_beside_many_variables() {
+    let mut harness = support::harness_sized(1280.0, 800.0);
+    harness
+        .state_mut()
+        .load_sample("hexagon", Some(Structure::HalfEdge))
+        .expect("opens");
+    harness.run();
+    support::run_flip_edge(&mut harness, 2);
+    for step in [70, usize::MAX, 0, 70, 71] {
+        harness.state_mut().trace_goto(step).expect("goto");
+        harness.run();
+        let state = harness.state().state();
+        let trace = state.trace.expect("tracing");
+        assert!(trace.variables.len() >= 10, "{:?}", trace.variables);
+        let [first, last] = state.layout.source_lines.expect("the source shows");
+        assert!(
+            (first..=last).contains(&trace.line),
+            "step {}: line {} is out of sight, lines {first}..={last} show",
+            trace.step,
+            trace.line
+        );
+        assert!(
+            last - first + 1 >= 8,
+            "step {}: only lines {first}..={last} show",
+            trace.step
+        );
+        assert_bounded(&state.layout, "beside ten variables");
+    }
 }

@@ -22,8 +22,10 @@ pub struct AlgorithmRun {
     generation: u64,
     /// The frame of the current step, and the (generation, theme key) it is for.
     frame: Option<((u64, u64), TraceFrame)>,
-    /// The step the source view last scrolled to.
-    pub scrolled_to: Option<(u64, usize)>,
+    /// The source line the algorithm view last scrolled to: it scrolls
+    /// again only when the current line changes, so a student can scroll
+    /// the code while a loop stays on one line.
+    pub scrolled_to: Option<u32>,
 }
 
 impl AlgorithmRun {

@@ -86,6 +86,16 @@ async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()
             .is_some_and(|h| h.iter().any(|h| h["role"] == "broken")),
         "{state}"
     );
+    // The write's line is in sight in the code, beside the ten variables.
+    let line = state["trace"]["line"].as_u64().context("a line")?;
+    let lines = &state["layout"]["sourceLines"];
+    let (first, last) = (lines[0].as_u64(), lines[1].as_u64());
+    assert!(
+        first
+            .zip(last)
+            .is_some_and(|(first, last)| (first..=last).contains(&line)),
+        "line {line} is out of sight: {lines}"
+    );
     let shot = browser.screenshot("edit-flip-first-write").await?;
     assert!(shot.distinct_colours(64) > 8, "the view is drawn");
 
