@@ -54,8 +54,7 @@ const UNSUPPORTED: [&str; 27] = [
 /// A forward reference to a vertex defined later, checked at the end.
 struct Pending {
     index: u64,
-    line: usize,
-    column: usize,
+    at: Location,
 }
 
 /// The 1-based column of byte `offset` in `line`, counting characters.
@@ -119,15 +118,30 @@ fn for_each_line(
 }
 
 pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError> {
-    let mut positions: Vec<Vec3> = Vec::new();
-    let mut faces: Vec<u32> = Vec::new();
-    let mut face_starts: Vec<(usize, usize)> = Vec::new();
-    let mut pending: Vec<Pending> = Vec::new();
-    let mut warned: Vec<&'static str> = Vec::new();
-    let mut warnings = Vec::new();
-
+    let mut reader = Reader::default();
     for_each_line(bytes, |line, number| {
-        let line = content(line);
+        reader.statement(content(line), number)
+    })?;
+    reader.finish()
+}
+
+/// What the statements read so far make; one method per statement.
+#[derive(Default)]
+struct Reader {
+    positions: Vec<Vec3>,
+    /// Every face's vertex indices, one after another.
+    faces: Vec<u32>,
+    /// Where each face starts in `faces`, and its line.
+    face_starts: Vec<(usize, usize)>,
+    pending: Vec<Pending>,
+    /// The unsupported statements warned about, each once.
+    warned: Vec<&'static str>,
+    warnings: Vec<Problem>,
+}
+
+impl Reader {
+    /// One logical line, without its comment.
+    fn statement(&mut self, line: &[u8], number: usize) -> Result<(), FormatError> {
         let mut words = words(line);
         let Some((_, keyword)) = words.next() else {
             return Ok(());
@@ -135,167 +149,196 @@ pub(super) fn read(bytes: &[u8]) -> Result<(Polygons, Vec<Problem>), FormatError
         let at = |offset: usize| Location::at(number, column(line, offset));
         match keyword {
             b"v" => {
-                let mut xyz = [0.0f32; 3];
-                let mut count = 0;
-                for (offset, word) in words {
-                    let text = std::str::from_utf8(word).unwrap_or("");
-                    let value = text.parse::<f32>().ok().filter(|v| v.is_finite());
-                    match value {
-                        Some(value) if is_decimal(text) => {
-                            if let Some(slot) = xyz.get_mut(count) {
-                                *slot = value;
-                            }
-                        }
-                        _ => {
-                            let what = ["x", "y", "z"].get(count).copied().unwrap_or("w");
-                            return Err(FormatError::new(
-                                at(offset),
-                                format!(
-                                    "expected a finite number for {what}, found \"{}\"",
-                                    shown(word)
-                                ),
-                            ));
-                        }
-                    }
-                    count += 1;
-                }
-                if count < 3 {
-                    return Err(FormatError::new(
-                        Location::line(number),
-                        format!("a vertex needs x, y and z; this one has {count} numbers"),
-                    ));
-                }
-                positions.push(Vec3::from(xyz));
+                let position = vertex(words, at, number)?;
+                self.positions.push(position);
+                Ok(())
             }
             b"f" | b"fo" => {
-                face_starts.push((faces.len(), number));
+                self.face_starts.push((self.faces.len(), number));
                 for (offset, word) in words {
-                    let index_text = word.split(|&b| b == b'/').next().unwrap_or(word);
-                    let bad = |what: &str| {
-                        FormatError::new(
-                            at(offset),
-                            format!(
-                                "expected a vertex number (v, v/vt, v//vn or v/vt/vn), found \"{}\"{what}",
-                                shown(word)
-                            ),
-                        )
-                    };
-                    let extra_ok = word
-                        .split(|&b| b == b'/')
-                        .skip(1)
-                        .all(|part| part.is_empty() || parse_int(part).is_some());
-                    if word.split(|&b| b == b'/').count() > 3 || !extra_ok {
-                        return Err(bad(""));
-                    }
-                    let Some(index) = parse_int(index_text) else {
-                        return Err(bad(""));
-                    };
-                    let count = positions.len() as i64;
-                    let resolved = match index {
-                        0 => {
-                            return Err(FormatError::new(
-                                at(offset),
-                                "vertex number 0 does not exist: OBJ numbers vertices from 1 \
-                                 (and counts back from -1)",
-                            ));
-                        }
-                        i if i < 0 && -i > count => {
-                            return Err(FormatError::new(
-                                at(offset),
-                                format!(
-                                    "vertex number {i} counts back past the first vertex: only \
-                                     {count} vertices come before this line"
-                                ),
-                            ));
-                        }
-                        i if i < 0 => count + i,
-                        i => {
-                            if i > count {
-                                pending.push(Pending {
-                                    index: i as u64,
-                                    line: number,
-                                    column: column(line, offset),
-                                });
-                            }
-                            i - 1
-                        }
-                    };
-                    match u32::try_from(resolved) {
-                        Ok(resolved) => faces.push(resolved),
-                        Err(_) => {
-                            return Err(FormatError::new(
-                                at(offset),
-                                format!("vertex number {index} is too large"),
-                            ));
-                        }
-                    }
+                    let index = self.corner(word, || at(offset))?;
+                    self.faces.push(index);
+                }
+                Ok(())
+            }
+            _ => self.other(keyword, number, at(0)),
+        }
+    }
+
+    /// One corner of an `f` line, `v`, `v/vt`, `v//vn` or `v/vt/vn`: the
+    /// 0-based index of its vertex. A vertex defined further down the file
+    /// is checked at the end. `at` counts the line's characters up to the
+    /// corner, so it is called only for a message: a face of a million
+    /// corners would otherwise take a million times a million steps.
+    fn corner(&mut self, word: &[u8], at: impl Fn() -> Location) -> Result<u32, FormatError> {
+        let bad = || {
+            FormatError::new(
+                at(),
+                format!(
+                    "expected a vertex number (v, v/vt, v//vn or v/vt/vn), found \"{}\"",
+                    shown(word)
+                ),
+            )
+        };
+        let extra_ok = word
+            .split(|&b| b == b'/')
+            .skip(1)
+            .all(|part| part.is_empty() || parse_int(part).is_some());
+        if word.split(|&b| b == b'/').count() > 3 || !extra_ok {
+            return Err(bad());
+        }
+        let index_text = word.split(|&b| b == b'/').next().unwrap_or(word);
+        let Some(index) = parse_int(index_text) else {
+            return Err(bad());
+        };
+        let count = self.positions.len() as i64;
+        let resolved = match index {
+            0 => {
+                return Err(FormatError::new(
+                    at(),
+                    "vertex number 0 does not exist: OBJ numbers vertices from 1 \
+                     (and counts back from -1)",
+                ));
+            }
+            i if i < 0 && -i > count => {
+                return Err(FormatError::new(
+                    at(),
+                    format!(
+                        "vertex number {i} counts back past the first vertex: only \
+                         {count} vertices come before this line"
+                    ),
+                ));
+            }
+            i if i < 0 => count + i,
+            i => {
+                if i > count {
+                    self.pending.push(Pending {
+                        index: i as u64,
+                        at: at(),
+                    });
+                }
+                i - 1
+            }
+        };
+        u32::try_from(resolved)
+            .map_err(|_| FormatError::new(at(), format!("vertex number {index} is too large")))
+    }
+
+    /// Any statement but `v` and `f`: skipped, with one warning per kind
+    /// that a polygon mesh cannot use, or refused if OBJ has no such
+    /// statement.
+    fn other(&mut self, keyword: &[u8], number: usize, at: Location) -> Result<(), FormatError> {
+        if IGNORED.iter().any(|k| k.as_bytes() == keyword) {
+            return Ok(());
+        }
+        let Some(&name) = UNSUPPORTED.iter().find(|k| k.as_bytes() == keyword) else {
+            return Err(FormatError::new(
+                at,
+                format!(
+                    "unknown statement \"{}\"; expected v, f, vt, vn, o, g, s, usemtl, \
+                     mtllib or a # comment",
+                    shown(keyword)
+                ),
+            ));
+        };
+        if !self.warned.contains(&name) {
+            self.warned.push(name);
+            self.warnings.push(Problem::new(
+                Location::line(number),
+                format!("\"{name}\" statements are ignored: only faces (f) make the mesh"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// After the last line: refuses references past the last vertex and a
+    /// file without faces, and makes the polygons.
+    fn finish(self) -> Result<(Polygons, Vec<Problem>), FormatError> {
+        let Self {
+            positions,
+            faces,
+            face_starts,
+            pending,
+            warnings,
+            ..
+        } = self;
+        let count = positions.len() as u64;
+        if let Some(bad) = pending.iter().find(|p| p.index > count) {
+            return Err(FormatError::new(
+                bad.at,
+                format!(
+                    "vertex number {} does not exist: the file has {count} vertices (1 to {count})",
+                    bad.index
+                ),
+            ));
+        }
+        if face_starts.is_empty() {
+            let vertices = match count {
+                0 => "no vertices (v lines)".to_owned(),
+                1 => "1 vertex".to_owned(),
+                _ => format!("{count} vertices"),
+            };
+            return Err(FormatError::new(
+                Location::File,
+                format!(
+                    "the file has {vertices} and no faces (f lines); a mesh needs at least one face"
+                ),
+            ));
+        }
+        let mut polygons = Polygons::with_capacity(positions.len(), face_starts.len(), faces.len());
+        for position in positions {
+            polygons.push_vertex(position);
+        }
+        let ends = face_starts
+            .iter()
+            .skip(1)
+            .map(|&(start, _)| start)
+            .chain(std::iter::once(faces.len()));
+        for (&(start, line), end) in face_starts.iter().zip(ends) {
+            polygons.push_face_from_line(faces.get(start..end).unwrap_or(&[]), line);
+        }
+        Ok((polygons, warnings))
+    }
+}
+
+/// The words of a `v` line after the keyword: x, y and z (and an optional
+/// w, which is checked and dropped).
+fn vertex<'a>(
+    words: impl Iterator<Item = (usize, &'a [u8])>,
+    at: impl Fn(usize) -> Location,
+    number: usize,
+) -> Result<Vec3, FormatError> {
+    let mut xyz = [0.0f32; 3];
+    let mut count = 0;
+    for (offset, word) in words {
+        let text = std::str::from_utf8(word).unwrap_or("");
+        let value = text.parse::<f32>().ok().filter(|v| v.is_finite());
+        match value {
+            Some(value) if is_decimal(text) => {
+                if let Some(slot) = xyz.get_mut(count) {
+                    *slot = value;
                 }
             }
             _ => {
-                if IGNORED.iter().any(|k| k.as_bytes() == keyword) {
-                    return Ok(());
-                }
-                if let Some(&name) = UNSUPPORTED.iter().find(|k| k.as_bytes() == keyword) {
-                    if !warned.contains(&name) {
-                        warned.push(name);
-                        warnings.push(Problem::new(
-                            Location::line(number),
-                            format!(
-                                "\"{name}\" statements are ignored: only faces (f) make the mesh"
-                            ),
-                        ));
-                    }
-                    return Ok(());
-                }
+                let what = ["x", "y", "z"].get(count).copied().unwrap_or("w");
                 return Err(FormatError::new(
-                    at(0),
+                    at(offset),
                     format!(
-                        "unknown statement \"{}\"; expected v, f, vt, vn, o, g, s, usemtl, \
-                         mtllib or a # comment",
-                        shown(keyword)
+                        "expected a finite number for {what}, found \"{}\"",
+                        shown(word)
                     ),
                 ));
             }
         }
-        Ok(())
-    })?;
-
-    let count = positions.len() as u64;
-    if let Some(bad) = pending.iter().find(|p| p.index > count) {
+        count += 1;
+    }
+    if count < 3 {
         return Err(FormatError::new(
-            Location::at(bad.line, bad.column),
-            format!(
-                "vertex number {} does not exist: the file has {count} vertices (1 to {count})",
-                bad.index
-            ),
+            Location::line(number),
+            format!("a vertex needs x, y and z; this one has {count} numbers"),
         ));
     }
-    if face_starts.is_empty() {
-        let vertices = match count {
-            0 => "no vertices (v lines)".to_owned(),
-            1 => "1 vertex".to_owned(),
-            _ => format!("{count} vertices"),
-        };
-        return Err(FormatError::new(
-            Location::File,
-            format!(
-                "the file has {vertices} and no faces (f lines); a mesh needs at least one face"
-            ),
-        ));
-    }
-    let mut polygons = Polygons::with_capacity(positions.len(), face_starts.len(), faces.len());
-    for position in positions {
-        polygons.push_vertex(position);
-    }
-    let ends = face_starts
-        .iter()
-        .skip(1)
-        .map(|&(start, _)| start)
-        .chain(std::iter::once(faces.len()));
-    for (&(start, line), end) in face_starts.iter().zip(ends) {
-        polygons.push_face_from_line(faces.get(start..end).unwrap_or(&[]), line);
-    }
-    Ok((polygons, warnings))
+    Ok(Vec3::from(xyz))
 }
 
 /// A decimal integer with an optional sign.
