@@ -837,6 +837,8 @@ impl Compiler<'_> {
             ExprKind::Name(name) => self.variable(name),
             ExprKind::Integer(n) => self.constant(Value::Integer(*n), Type::Integer),
             ExprKind::Float(x) => self.constant(Value::Float(*x), Type::Float),
+            ExprKind::Boolean(b) => self.constant(Value::Boolean(*b), Type::Boolean),
+            ExprKind::Null | ExprKind::Error => self.constant(Value::Null, Type::Null),
             ExprKind::New(kind) => {
                 let dst = self.register(Type::of_kind(*kind));
                 self.emit(Op::New { dst, kind: *kind }, span);
@@ -850,70 +852,11 @@ impl Compiler<'_> {
                 self.emit(Op::Index { dst, array, index }, span);
                 dst
             }
-            ExprKind::Call { name, args } => {
-                let Some(builtin) = Builtin::parse(&name.name) else {
-                    return self.invoke(name, args, span);
-                };
-                if builtin == Builtin::Length {
-                    let array = args.first().map_or(0, |array| self.expr(array));
-                    let dst = self.register(Type::Integer);
-                    self.emit(Op::Length { dst, array }, span);
-                    return dst;
-                }
-                let mut regs = [0; 3];
-                for (slot, arg) in regs.iter_mut().zip(args) {
-                    *slot = self.expr(arg);
-                }
-                let dst = self.register(builtin.result().unwrap_or(Type::Null));
-                self.emit(
-                    Op::Call {
-                        dst,
-                        builtin,
-                        args: regs,
-                        argc: args.len().min(3) as u8,
-                    },
-                    span,
-                );
-                dst
-            }
-            ExprKind::Boolean(b) => self.constant(Value::Boolean(*b), Type::Boolean),
-            ExprKind::Null | ExprKind::Error => self.constant(Value::Null, Type::Null),
-            ExprKind::Lookup { base, field } => {
-                let base_reg = self.expr(base);
-                let base_type = self.register_type(base_reg);
-                if base_type == Type::Vector {
-                    let Some(axis) = Axis::parse(&field.name) else {
-                        return self.constant(Value::Null, Type::Null);
-                    };
-                    let dst = self.register(Type::Float);
-                    self.emit(
-                        Op::Compute {
-                            dst,
-                            op: ComputeOp::Coordinate(axis),
-                            left: base_reg,
-                            right: base_reg,
-                        },
-                        span,
-                    );
-                    return dst;
-                }
-                let kind = base_type.element_kind();
-                let resolved =
-                    kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok());
-                let Some(field) = resolved else {
-                    return self.constant(Value::Null, Type::Null);
-                };
-                let dst = self.register(field.target().map_or(Type::Vector, Type::of_kind));
-                self.emit(
-                    Op::Lookup {
-                        dst,
-                        base: base_reg,
-                        field,
-                    },
-                    span,
-                );
-                dst
-            }
+            ExprKind::Call { name, args } => match Builtin::parse(&name.name) {
+                Some(builtin) => self.builtin(builtin, args, span),
+                None => self.invoke(name, args, span),
+            },
+            ExprKind::Lookup { base, field } => self.lookup(base, field, span),
             ExprKind::Unary { op, operand } => {
                 let left = self.expr(operand);
                 let (op, ty) = match op {
@@ -936,72 +879,143 @@ impl Compiler<'_> {
                 op: op @ (BinaryOp::And | BinaryOp::Or),
                 left,
                 right,
-            } => {
-                let dst = self.register(Type::Boolean);
-                let left = self.expr(left);
-                self.emit(Op::Move { dst, src: left }, span);
-                let done = self.new_label();
-                self.emit(
-                    Op::JumpIf {
-                        cond: dst,
-                        when: *op == BinaryOp::Or,
-                        target: done,
-                    },
-                    span,
-                );
-                let right = self.expr(right);
-                self.emit(Op::Move { dst, src: right }, span);
-                self.place(done);
-                dst
-            }
-            ExprKind::Binary { op, left, right } => {
-                let left = self.expr(left);
-                let right = self.expr(right);
-                let compare = match op {
-                    BinaryOp::Eq => Some(CompareOp::Eq),
-                    BinaryOp::NotEq => Some(CompareOp::NotEq),
-                    BinaryOp::Lt => Some(CompareOp::Lt),
-                    BinaryOp::Le => Some(CompareOp::Le),
-                    BinaryOp::Gt => Some(CompareOp::Gt),
-                    BinaryOp::Ge => Some(CompareOp::Ge),
-                    _ => None,
-                };
-                if let Some(op) = compare {
-                    let dst = self.register(Type::Boolean);
-                    self.emit(
-                        Op::Compare {
-                            dst,
-                            op,
-                            left,
-                            right,
-                        },
-                        span,
-                    );
-                    return dst;
-                }
-                let (left_type, right_type) = (self.register_type(left), self.register_type(right));
-                let ty = result_type(*op, left_type, right_type);
-                let op = match op {
-                    BinaryOp::Add => ComputeOp::Add,
-                    BinaryOp::Sub => ComputeOp::Sub,
-                    BinaryOp::Mul => ComputeOp::Mul,
-                    BinaryOp::Divide => ComputeOp::Divide,
-                    BinaryOp::Div => ComputeOp::Div,
-                    _ => ComputeOp::Mod,
-                };
-                let dst = self.register(ty);
-                self.emit(
-                    Op::Compute {
-                        dst,
-                        op,
-                        left,
-                        right,
-                    },
-                    span,
-                );
-                dst
-            }
+            } => self.short_circuit(*op == BinaryOp::Or, left, right, span),
+            ExprKind::Binary { op, left, right } => self.binary(*op, left, right, span),
         }
+    }
+
+    /// A call of a built-in function: `length` of an array, or one of the
+    /// others with up to three arguments.
+    fn builtin(&mut self, builtin: Builtin, args: &[Expr], span: Span) -> Reg {
+        if builtin == Builtin::Length {
+            let array = args.first().map_or(0, |array| self.expr(array));
+            let dst = self.register(Type::Integer);
+            self.emit(Op::Length { dst, array }, span);
+            return dst;
+        }
+        let mut regs = [0; 3];
+        for (slot, arg) in regs.iter_mut().zip(args) {
+            *slot = self.expr(arg);
+        }
+        let dst = self.register(builtin.result().unwrap_or(Type::Null));
+        self.emit(
+            Op::Call {
+                dst,
+                builtin,
+                args: regs,
+                argc: args.len().min(3) as u8,
+            },
+            span,
+        );
+        dst
+    }
+
+    /// `base.field`: a coordinate of a vector, or a column of an element's
+    /// record (the paper's lookup). The checker has refused any other field,
+    /// so an unknown one only yields `null` here.
+    fn lookup(&mut self, base: &Expr, field: &Ident, span: Span) -> Reg {
+        let base_reg = self.expr(base);
+        let base_type = self.register_type(base_reg);
+        if base_type == Type::Vector {
+            let Some(axis) = Axis::parse(&field.name) else {
+                return self.constant(Value::Null, Type::Null);
+            };
+            let dst = self.register(Type::Float);
+            self.emit(
+                Op::Compute {
+                    dst,
+                    op: ComputeOp::Coordinate(axis),
+                    left: base_reg,
+                    right: base_reg,
+                },
+                span,
+            );
+            return dst;
+        }
+        let kind = base_type.element_kind();
+        let resolved = kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok());
+        let Some(field) = resolved else {
+            return self.constant(Value::Null, Type::Null);
+        };
+        let dst = self.register(field.target().map_or(Type::Vector, Type::of_kind));
+        self.emit(
+            Op::Lookup {
+                dst,
+                base: base_reg,
+                field,
+            },
+            span,
+        );
+        dst
+    }
+
+    /// `left and right`, `left or right`: the right side runs only when
+    /// the left one does not decide (`or` stops on true, `and` on false).
+    fn short_circuit(&mut self, or: bool, left: &Expr, right: &Expr, span: Span) -> Reg {
+        let dst = self.register(Type::Boolean);
+        let left = self.expr(left);
+        self.emit(Op::Move { dst, src: left }, span);
+        let done = self.new_label();
+        self.emit(
+            Op::JumpIf {
+                cond: dst,
+                when: or,
+                target: done,
+            },
+            span,
+        );
+        let right = self.expr(right);
+        self.emit(Op::Move { dst, src: right }, span);
+        self.place(done);
+        dst
+    }
+
+    /// A comparison, or arithmetic typed by [`result_type`].
+    fn binary(&mut self, op: BinaryOp, left: &Expr, right: &Expr, span: Span) -> Reg {
+        let left = self.expr(left);
+        let right = self.expr(right);
+        let compare = match op {
+            BinaryOp::Eq => Some(CompareOp::Eq),
+            BinaryOp::NotEq => Some(CompareOp::NotEq),
+            BinaryOp::Lt => Some(CompareOp::Lt),
+            BinaryOp::Le => Some(CompareOp::Le),
+            BinaryOp::Gt => Some(CompareOp::Gt),
+            BinaryOp::Ge => Some(CompareOp::Ge),
+            _ => None,
+        };
+        if let Some(op) = compare {
+            let dst = self.register(Type::Boolean);
+            self.emit(
+                Op::Compare {
+                    dst,
+                    op,
+                    left,
+                    right,
+                },
+                span,
+            );
+            return dst;
+        }
+        let ty = result_type(op, self.register_type(left), self.register_type(right));
+        let op = match op {
+            BinaryOp::Add => ComputeOp::Add,
+            BinaryOp::Sub => ComputeOp::Sub,
+            BinaryOp::Mul => ComputeOp::Mul,
+            BinaryOp::Divide => ComputeOp::Divide,
+            BinaryOp::Div => ComputeOp::Div,
+            _ => ComputeOp::Mod,
+        };
+        let dst = self.register(ty);
+        self.emit(
+            Op::Compute {
+                dst,
+                op,
+                left,
+                right,
+            },
+            span,
+        );
+        dst
     }
 
     /// Emits a call of another algorithm of the file and returns the
