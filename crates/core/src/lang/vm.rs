@@ -835,30 +835,10 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                         return self.fail(pc, message);
                     }
                 }
-                Op::Call {
-                    dst,
-                    builtin,
-                    args,
-                    argc,
-                } => {
-                    let mut values = [Value::Null; 3];
-                    for (slot, &reg) in values.iter_mut().zip(&args).take(usize::from(argc)) {
-                        *slot = self.get(reg);
-                    }
-                    if builtin == Builtin::Id && values[0] == Value::Null {
-                        let message = self.cannot_act_message("take the id of", args[0]);
+                Op::Call { .. } => {
+                    if let Err(message) = self.builtin(pc, instr) {
                         return self.fail(pc, message);
                     }
-                    let result = match builtin.apply(&values[..usize::from(argc)]) {
-                        Ok(result) => result,
-                        Err(problem) => {
-                            let message =
-                                format!("{problem} in {}", self.routine.snippet(instr.span));
-                            return self.fail(pc, message);
-                        }
-                    };
-                    self.record(pc, values[0], values[1], result);
-                    self.set(dst, result);
                 }
                 Op::Invoke { dst, routine, args } => {
                     if let Some(outcome) = self.set_up_check(pc, routine) {
@@ -930,21 +910,9 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
                     self.set(dst, value);
                 }
                 Op::Mark { element } | Op::Highlight { element } => {
-                    let value = self.get(element);
-                    let Some(target) = value.element() else {
-                        let word = if matches!(op, Op::Mark { .. }) {
-                            "mark"
-                        } else {
-                            "highlight"
-                        };
-                        let message = self.cannot_act_message(word, element);
+                    let mark = matches!(op, Op::Mark { .. });
+                    if let Err(message) = self.mark(pc, element, mark) {
                         return self.fail(pc, message);
-                    };
-                    self.record(pc, value, Value::Null, Value::Null);
-                    if matches!(op, Op::Mark { .. }) {
-                        self.recorder.mark(target);
-                    } else {
-                        self.recorder.highlight(target);
                     }
                 }
                 Op::Refuse { index } => {
@@ -990,6 +958,52 @@ impl<'a, S: Store, R: Recorder> Machine<'a, S, R> {
             }
             pc += 1;
         }
+    }
+
+    /// Calls a built-in function and records its step; an `Err` is the
+    /// fault's message.
+    #[inline]
+    fn builtin(&mut self, pc: usize, instr: &Instr) -> Result<(), String> {
+        let Op::Call {
+            dst,
+            builtin,
+            args,
+            argc,
+        } = instr.op
+        else {
+            return Ok(());
+        };
+        let mut values = [Value::Null; 3];
+        for (slot, &reg) in values.iter_mut().zip(&args).take(usize::from(argc)) {
+            *slot = self.get(reg);
+        }
+        if builtin == Builtin::Id && values[0] == Value::Null {
+            return Err(self.cannot_act_message("take the id of", args[0]));
+        }
+        let result = builtin
+            .apply(&values[..usize::from(argc)])
+            .map_err(|problem| format!("{problem} in {}", self.routine.snippet(instr.span)))?;
+        self.record(pc, values[0], values[1], result);
+        self.set(dst, result);
+        Ok(())
+    }
+
+    /// `mark` (or, if not `mark`, `highlight`) the element in `element`,
+    /// and records the step; an `Err` is the fault's message.
+    #[inline]
+    fn mark(&mut self, pc: usize, element: Reg, mark: bool) -> Result<(), String> {
+        let value = self.get(element);
+        let word = if mark { "mark" } else { "highlight" };
+        let Some(target) = value.element() else {
+            return Err(self.cannot_act_message(word, element));
+        };
+        self.record(pc, value, Value::Null, Value::Null);
+        if mark {
+            self.recorder.mark(target);
+        } else {
+            self.recorder.highlight(target);
+        }
+        Ok(())
     }
 
     /// Runs an operation that reads or changes the mesh and records its
