@@ -296,47 +296,17 @@ pub fn table_ui(
                             };
                             band.paint(ui);
                         }
-                        let dim = derived.get(i).copied().unwrap_or_default();
-                        match cell {
-                            Cell::Id(element) => {
-                                id_cells.push((element, ui.max_rect(), ui.clip_rect()));
-                                if id_cell_ui(ui, element, paint, response) {
-                                    clicked_link = Some(element);
-                                }
-                            }
-                            Cell::Text(text) => {
-                                let mut text = RichText::new(text).monospace();
-                                if dim {
-                                    text = text.weak();
-                                }
-                                ui.label(text);
-                            }
-                            Cell::Link(_, column) if editing == Some((element, column)) => {
-                                if let Some(result) = cell_edit_ui(ui) {
-                                    response.set_cell = Some((element, column, result));
-                                }
-                            }
-                            Cell::Link(target, column)
-                                if paint.struck.contains_key(&(element, Role::Column(column))) =>
-                            {
-                                let cell = (element, Role::Column(column));
-                                let old = paint.struck.get(&cell).cloned().unwrap_or_default();
-                                let tint = paint.cells.get(&cell).copied();
-                                written_cell_ui(ui, &old, target, tint);
-                            }
-                            Cell::Link(target, column) => {
-                                let header = headers.get(i).copied().unwrap_or_default();
-                                let reference = Reference {
-                                    element,
-                                    column,
-                                    target,
-                                    header,
-                                    dim,
-                                };
-                                if let Some(target) = reference.ui(ui, paint, response) {
-                                    clicked_link = Some(target);
-                                }
-                            }
+                        if let Cell::Id(element) = cell {
+                            id_cells.push((element, ui.max_rect(), ui.clip_rect()));
+                        }
+                        let column = RowColumn {
+                            element,
+                            header: headers.get(i).copied().unwrap_or_default(),
+                            dim: derived.get(i).copied().unwrap_or_default(),
+                            editing,
+                        };
+                        if let Some(target) = column.cell_ui(ui, cell, paint, response) {
+                            clicked_link = Some(target);
                         }
                     });
                 }
@@ -354,6 +324,69 @@ pub fn table_ui(
             .zip(id_header)
             .map(|(next, (id, _))| next - id.left()),
         cells: id_cells,
+    }
+}
+
+/// One cell of a table's row, for [`RowColumn::cell_ui`].
+struct RowColumn {
+    /// The row.
+    element: ElementRef,
+    /// The column's full header.
+    header: &'static str,
+    /// The column is derived, shown dimmed.
+    dim: bool,
+    /// The cell being edited, if any.
+    editing: Option<(ElementRef, Column)>,
+}
+
+impl RowColumn {
+    /// Draws `cell`: an id, text, a reference being edited, a reference an
+    /// edit wrote (the old value struck through), or a reference to follow.
+    /// Returns the element a click on the id or the reference names.
+    fn cell_ui(
+        &self,
+        ui: &mut egui::Ui,
+        cell: Cell,
+        paint: &Paint,
+        response: &mut TablesResponse,
+    ) -> Option<ElementRef> {
+        let element = self.element;
+        match cell {
+            Cell::Id(element) => id_cell_ui(ui, element, paint, response).then_some(element),
+            Cell::Text(text) => {
+                let mut text = RichText::new(text).monospace();
+                if self.dim {
+                    text = text.weak();
+                }
+                ui.label(text);
+                None
+            }
+            Cell::Link(_, column) if self.editing == Some((element, column)) => {
+                if let Some(result) = cell_edit_ui(ui) {
+                    response.set_cell = Some((element, column, result));
+                }
+                None
+            }
+            Cell::Link(target, column)
+                if paint.struck.contains_key(&(element, Role::Column(column))) =>
+            {
+                let cell = (element, Role::Column(column));
+                let old = paint.struck.get(&cell).cloned().unwrap_or_default();
+                let tint = paint.cells.get(&cell).copied();
+                written_cell_ui(ui, &old, target, tint);
+                None
+            }
+            Cell::Link(target, column) => {
+                let reference = Reference {
+                    element,
+                    column,
+                    target,
+                    header: self.header,
+                    dim: self.dim,
+                };
+                reference.ui(ui, paint, response)
+            }
+        }
     }
 }
 
