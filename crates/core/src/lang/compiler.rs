@@ -858,22 +858,12 @@ impl Compiler<'_> {
             },
             ExprKind::Lookup { base, field } => self.lookup(base, field, span),
             ExprKind::Unary { op, operand } => {
-                let left = self.expr(operand);
+                let operand = self.expr(operand);
                 let (op, ty) = match op {
-                    UnaryOp::Neg => (ComputeOp::Neg, self.register_type(left)),
+                    UnaryOp::Neg => (ComputeOp::Neg, self.register_type(operand)),
                     UnaryOp::Not => (ComputeOp::Not, Type::Boolean),
                 };
-                let dst = self.register(ty);
-                self.emit(
-                    Op::Compute {
-                        dst,
-                        op,
-                        left,
-                        right: left,
-                    },
-                    span,
-                );
-                dst
+                self.compute(ty, op, operand, operand, span)
             }
             ExprKind::Binary {
                 op: op @ (BinaryOp::And | BinaryOp::Or),
@@ -920,17 +910,8 @@ impl Compiler<'_> {
             let Some(axis) = Axis::parse(&field.name) else {
                 return self.constant(Value::Null, Type::Null);
             };
-            let dst = self.register(Type::Float);
-            self.emit(
-                Op::Compute {
-                    dst,
-                    op: ComputeOp::Coordinate(axis),
-                    left: base_reg,
-                    right: base_reg,
-                },
-                span,
-            );
-            return dst;
+            let op = ComputeOp::Coordinate(axis);
+            return self.compute(Type::Float, op, base_reg, base_reg, span);
         }
         let kind = base_type.element_kind();
         let resolved = kind.and_then(|k| Column::resolve(self.structure, k, &field.name).ok());
@@ -1005,6 +986,12 @@ impl Compiler<'_> {
             BinaryOp::Div => ComputeOp::Div,
             _ => ComputeOp::Mod,
         };
+        self.compute(ty, op, left, right, span)
+    }
+
+    /// `op` on `left` and `right` (one operand, given twice, for a unary
+    /// `op`) into a new register of type `ty`.
+    fn compute(&mut self, ty: Type, op: ComputeOp, left: Reg, right: Reg, span: Span) -> Reg {
         let dst = self.register(ty);
         self.emit(
             Op::Compute {
