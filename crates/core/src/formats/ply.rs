@@ -797,104 +797,40 @@ fn read_ascii(
                 }
                 offset += word.len() + 1;
             }
-            let at = |index: usize| {
-                let offset = words.get(index).map_or(line.len(), |&(o, _)| o);
-                Location::at(number, offset + 1)
+            let text = AsciiRow {
+                number,
+                line,
+                words: &words,
+                row,
+                element,
             };
-            // Raw, for messages; as text (empty when not UTF-8), for parsing.
-            let raw = |index: usize| words.get(index).map_or(&b""[..], |&(_, w)| w);
-            let word = |index: usize| std::str::from_utf8(raw(index)).unwrap_or("");
             let mut next = 0;
             let mut xyz = [0.0f32; 3];
             for (p, property) in element.properties.iter().enumerate() {
-                let missing = || {
-                    FormatError::new(
-                        Location::line(number),
-                        format!(
-                            "{} {row} ends before property {}; expected one row per line",
-                            element.name, property.name
-                        ),
-                    )
-                };
+                if next >= words.len() {
+                    return Err(text.missing(property));
+                }
                 match property.kind {
                     Kind::Scalar(_) => {
-                        let text = word(next);
-                        if next >= words.len() {
-                            return Err(missing());
-                        }
-                        if is_vertex && let Some(axis) = roles.xyz.iter().position(|&i| i == p) {
-                            let value = text.parse::<f32>().ok().filter(|v| v.is_finite());
-                            match value {
-                                Some(value) if is_decimal(text) => {
-                                    if let Some(slot) = xyz.get_mut(axis) {
-                                        *slot = value;
-                                    }
-                                }
-                                _ => {
-                                    return Err(FormatError::new(
-                                        at(next),
-                                        format!(
-                                            "expected a finite number for {} of vertex {row}, \
-                                             found \"{}\"",
-                                            property.name,
-                                            shown(raw(next))
-                                        ),
-                                    ));
+                        let axis = roles.xyz.iter().position(|&i| i == p);
+                        match axis.filter(|_| is_vertex) {
+                            Some(axis) => {
+                                let value = text.coordinate(next, property)?;
+                                if let Some(slot) = xyz.get_mut(axis) {
+                                    *slot = value;
                                 }
                             }
-                        } else if text.parse::<f64>().is_err() {
-                            return Err(FormatError::new(
-                                at(next),
-                                format!(
-                                    "expected a number for {} of {} {row}, found \"{}\"",
-                                    property.name,
-                                    element.name,
-                                    shown(raw(next))
-                                ),
-                            ));
+                            None => text.number(next, property)?,
                         }
                         next += 1;
                     }
                     Kind::List { .. } => {
-                        if next >= words.len() {
-                            return Err(missing());
-                        }
-                        let count_at = next;
-                        let n = word(next).parse::<usize>().map_err(|_| {
-                            FormatError::new(
-                                at(count_at),
-                                format!(
-                                    "expected the item count of list {}, found \"{}\"",
-                                    property.name,
-                                    shown(raw(count_at))
-                                ),
-                            )
-                        })?;
+                        let n = text.list_count(next, property)?;
                         next += 1;
-                        if words.len().saturating_sub(next) < n {
-                            return Err(FormatError::new(
-                                at(count_at),
-                                format!(
-                                    "the list {} announces {n} items, but only {} values follow \
-                                     on this line",
-                                    property.name,
-                                    words.len().saturating_sub(next)
-                                ),
-                            ));
-                        }
                         if is_face && p == roles.indices {
                             mesh.face.clear();
                             for k in next..next + n {
-                                let index = word(k).parse::<u32>().map_err(|_| {
-                                    FormatError::new(
-                                        at(k),
-                                        format!(
-                                            "expected a vertex number (0 or more), found \"{}\"",
-                                            shown(raw(k))
-                                        ),
-                                    )
-                                })?;
-                                mesh.face.push(index);
+                                mesh.face.push(text.vertex_number(k)?);
                             }
                             mesh.polygons.push_face_from_line(&mesh.face, number);
                         }
@@ -904,7 +840,7 @@ fn read_ascii(
             }
             if next < words.len() {
                 return Err(FormatError::new(
-                    at(next),
+                    text.at(next),
                     format!(
                         "{} {row} has {} values, but its properties take {next}; expected one \
                          row per line",
@@ -925,6 +861,120 @@ fn read_ascii(
         ));
     }
     Ok(())
+}
+
+/// One data row of an ASCII file, split into words with their byte
+/// offsets: reads and checks the words of each property.
+struct AsciiRow<'a> {
+    /// The line's number.
+    number: usize,
+    line: &'a [u8],
+    words: &'a [(usize, &'a [u8])],
+    /// The row's number within its element.
+    row: usize,
+    element: &'a Element,
+}
+
+impl AsciiRow<'_> {
+    /// Where word `index` starts (the line's end past the last word).
+    fn at(&self, index: usize) -> Location {
+        let offset = self.words.get(index).map_or(self.line.len(), |&(o, _)| o);
+        Location::at(self.number, offset + 1)
+    }
+
+    /// Word `index` as it is, for messages.
+    fn raw(&self, index: usize) -> &[u8] {
+        self.words.get(index).map_or(&b""[..], |&(_, w)| w)
+    }
+
+    /// Word `index` as text, for parsing; empty when it is not UTF-8.
+    fn word(&self, index: usize) -> &str {
+        std::str::from_utf8(self.raw(index)).unwrap_or("")
+    }
+
+    /// The row ends before `property`.
+    fn missing(&self, property: &Property) -> FormatError {
+        FormatError::new(
+            Location::line(self.number),
+            format!(
+                "{} {} ends before property {}; expected one row per line",
+                self.element.name, self.row, property.name
+            ),
+        )
+    }
+
+    /// Word `index`, a vertex's coordinate: a finite decimal number.
+    fn coordinate(&self, index: usize, property: &Property) -> Result<f32, FormatError> {
+        let text = self.word(index);
+        match text.parse::<f32>().ok().filter(|v| v.is_finite()) {
+            Some(value) if is_decimal(text) => Ok(value),
+            _ => Err(FormatError::new(
+                self.at(index),
+                format!(
+                    "expected a finite number for {} of vertex {}, found \"{}\"",
+                    property.name,
+                    self.row,
+                    shown(self.raw(index))
+                ),
+            )),
+        }
+    }
+
+    /// Word `index`, any other scalar: checked as a number and dropped.
+    fn number(&self, index: usize, property: &Property) -> Result<(), FormatError> {
+        if self.word(index).parse::<f64>().is_ok() {
+            return Ok(());
+        }
+        Err(FormatError::new(
+            self.at(index),
+            format!(
+                "expected a number for {} of {} {}, found \"{}\"",
+                property.name,
+                self.element.name,
+                self.row,
+                shown(self.raw(index))
+            ),
+        ))
+    }
+
+    /// Word `index`, the item count of a list, which as many words must
+    /// follow.
+    fn list_count(&self, index: usize, property: &Property) -> Result<usize, FormatError> {
+        let n = self.word(index).parse::<usize>().map_err(|_| {
+            FormatError::new(
+                self.at(index),
+                format!(
+                    "expected the item count of list {}, found \"{}\"",
+                    property.name,
+                    shown(self.raw(index))
+                ),
+            )
+        })?;
+        let left = self.words.len().saturating_sub(index + 1);
+        if left < n {
+            return Err(FormatError::new(
+                self.at(index),
+                format!(
+                    "the list {} announces {n} items, but only {left} values follow on this line",
+                    property.name
+                ),
+            ));
+        }
+        Ok(n)
+    }
+
+    /// Word `index`, an item of a face's vertex list.
+    fn vertex_number(&self, index: usize) -> Result<u32, FormatError> {
+        self.word(index).parse::<u32>().map_err(|_| {
+            FormatError::new(
+                self.at(index),
+                format!(
+                    "expected a vertex number (0 or more), found \"{}\"",
+                    shown(self.raw(index))
+                ),
+            )
+        })
+    }
 }
 
 pub(super) fn write(polygons: &Polygons, encoding: PlyEncoding) -> Result<Vec<u8>, SaveError> {
