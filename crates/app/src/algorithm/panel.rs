@@ -368,8 +368,25 @@ impl Algorithms {
             .max_height(ui.available_height());
         if self.in_sheet {
             area = area.min_scrolled_height(SOURCE_LEAST_HEIGHT);
+        } else if needs_scroll {
+            // The offset that centres the line, set before the rows are laid
+            // out so that it shows in this frame, as the tables do
+            // (`tables::DrawnRows`); scrolling to the row after them showed it
+            // a frame later. Rows are as far apart as they were last drawn:
+            // a row is as tall as the style's least interactive height.
+            // Step 0's line, the header, is not marked, but going back to it
+            // scrolls the code back to its top.
+            if let Some(row) = lines.iter().position(|&(number, _)| number == frame.line) {
+                let pitch = self.code_pitch.unwrap_or(row_height);
+                let shown = ui.available_height();
+                let most = (lines.len() as f32 * pitch - shown).max(0.0);
+                let centred = (row as f32 + 0.5) * pitch - shown / 2.0;
+                area = area.vertical_scroll_offset(centred.clamp(0.0, most));
+                scrolled = true;
+            }
         }
         let mut in_sight: Option<[u32; 2]> = None;
+        let mut pitch = row_height;
         area.show(ui, |ui| {
             ui.spacing_mut().item_spacing.y = 0.0;
             let sight = ui.clip_rect().y_range();
@@ -415,6 +432,7 @@ impl Algorithms {
                     ui.add(egui::Label::new(job).extend());
                 });
                 let rect = row.response.rect;
+                pitch = rect.height();
                 if sight.contains(rect.center().y) {
                     in_sight = Some(in_sight.map_or([number; 2], |[first, _]| [first, number]));
                 }
@@ -431,10 +449,8 @@ impl Algorithms {
                         ),
                     );
                 }
-                // Step 0's line, the header, is not marked, but going back
-                // to it scrolls the code back to its top.
-                if needs_scroll && number == frame.line {
-                    // At once, as the tables do (`tables::table_ui`).
+                // In a phone's sheet the sheet scrolls too, to the line.
+                if self.in_sheet && needs_scroll && number == frame.line {
                     ui.scroll_to_rect_animation(
                         rect,
                         Some(Align::Center),
@@ -448,6 +464,7 @@ impl Algorithms {
             run.scrolled_to = Some(frame.line);
         }
         self.source_lines = in_sight;
+        self.code_pitch = Some(pitch);
         toggled.map(Command::ToggleBreakpoint)
     }
 }

@@ -253,8 +253,8 @@ fn the_id_column_stays_while_a_table_scrolls_sideways() {
 /// The line being run stays in sight, with the lines around it, however many
 /// variables and broken records the step lists: a flip's ten variables and
 /// eight broken records had left the source three lines of a laptop's
-/// window. Going to a step scrolls the code to it, and going back to step 0
-/// scrolls it back to the header.
+/// window. Going to a step scrolls the code to it in the same frame, and
+/// going back to step 0 scrolls it back to the header.
 #[test]
 fn the_current_line_stays_in_sight_beside_many_variables() {
     let mut harness = support::harness_sized(1280.0, 800.0);
@@ -266,7 +266,8 @@ fn the_current_line_stays_in_sight_beside_many_variables() {
     support::run_flip_edge(&mut harness, 2);
     for step in [70, usize::MAX, 0, 70, 71] {
         harness.state_mut().trace_goto(step).expect("goto");
-        harness.run();
+        // In the first frame after the step, not a frame later.
+        harness.step();
         let state = harness.state().state();
         let trace = state.trace.expect("tracing");
         assert!(trace.variables.len() >= 10, "{:?}", trace.variables);

@@ -66,6 +66,8 @@ async fn a_traced_flip_breaks_the_records_then_mends_them() -> anyhow::Result<()
     assert_eq!(state["broken"], serde_json::json!([]), "{state}");
     assert_ne!(state["trace"]["operation"], "write", "{state}");
     browser.eval_async("window.edgewise.step(1)").await?;
+    // The layout is the last frame's: let the step's frame be drawn.
+    browser.frames(2).await?;
     let state = browser.state().await?;
     assert_eq!(state["trace"]["step"], first_write, "{state}");
     assert_eq!(state["trace"]["operation"], "write", "{state}");
