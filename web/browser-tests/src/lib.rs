@@ -1,9 +1,10 @@
 //! A harness for testing Edgewise in a real headless Chromium.
 //!
 //! `cargo xtask test` serves dist/ and runs these tests with `EDGEWISE_URL`
-//! pointing at it. Each test launches chromedriver and Chromium, opens the
-//! page, waits for `window.edgewise`, drives the app through that API, and
-//! checks console errors and screenshots.
+//! pointing at it. Each test takes a fresh tab in the Chromium the suite
+//! shares (or launches one of its own, for other options), opens the page,
+//! waits for `window.edgewise`, drives the app through that API, and checks
+//! console errors and screenshots.
 
 use std::{
     path::PathBuf,
@@ -11,10 +12,14 @@ use std::{
 };
 
 use anyhow::{Context as _, bail};
-use fantoccini::{Client, ClientBuilder, wd::WebDriverCompatibleCommand};
+use fantoccini::{Client, wd::WebDriverCompatibleCommand};
 use serde_json::{Value, json};
 
+mod chromium;
 pub mod proxy;
+mod shared;
+
+use chromium::Chromium;
 
 /// How long the page may take to download, compile and start the wasm.
 const START_TIMEOUT: Duration = Duration::from_secs(120);
@@ -164,78 +169,41 @@ pub const SCREENS: [Screen; 6] = [
 pub struct Browser {
     client: Client,
     base_url: String,
-    driver: tokio::process::Child,
-    _profile: TempDir,
+    /// Its own Chromium, or the shared one, handed back when this drops.
+    chromium: Option<Chromium>,
+    shared: bool,
 }
 
 impl Browser {
-    /// Launches chromedriver and a headless Chromium with default options.
+    /// A fresh tab in the Chromium the tests share (`shared.rs`), on the
+    /// served app at 1280×800; a browser of its own if another test holds
+    /// that one.
     pub async fn launch() -> anyhow::Result<Self> {
-        Self::launch_with(LaunchOptions::default()).await
+        let base_url = env("EDGEWISE_URL")?;
+        match shared::lend().await? {
+            Some(chromium) => Ok(Self {
+                client: chromium.client.clone(),
+                base_url,
+                chromium: Some(chromium),
+                shared: true,
+            }),
+            None => Self::launch_with(LaunchOptions::default()).await,
+        }
     }
 
-    /// Launches chromedriver and a headless Chromium.
+    /// Launches chromedriver and a headless Chromium of its own, for a test
+    /// that needs other options or changes the browser beyond its tab.
     pub async fn launch_with(options: LaunchOptions) -> anyhow::Result<Self> {
-        let base_url = match options.base_url {
-            Some(url) => url,
+        let base_url = match &options.base_url {
+            Some(url) => url.clone(),
             None => env("EDGEWISE_URL")?,
         };
-        let chromium = env("EDGEWISE_CHROMIUM")?;
-        let chromedriver = env("EDGEWISE_CHROMEDRIVER")?;
-
-        let port = free_port()?;
-        let driver = tokio::process::Command::new(&chromedriver)
-            .arg(format!("--port={port}"))
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::null())
-            .kill_on_drop(true)
-            // Chromium joins chromedriver's group, so that dropping the
-            // session ends both (see `Drop for Browser`).
-            .process_group(0)
-            .spawn()
-            .with_context(|| format!("cannot start {chromedriver}"))?;
-        let profile = TempDir::new("edgewise-chromium")?;
-
-        let (width, height) = options.window_size;
-        let mut args = vec![
-            "--headless".to_owned(),
-            "--no-sandbox".to_owned(),
-            "--disable-gpu".to_owned(),
-            "--disable-dev-shm-usage".to_owned(),
-            "--disable-background-networking".to_owned(),
-            "--disable-component-update".to_owned(),
-            "--disable-sync".to_owned(),
-            "--disable-quic".to_owned(),
-            "--no-first-run".to_owned(),
-            "--hide-scrollbars".to_owned(),
-            format!("--window-size={width},{height}"),
-            format!("--user-data-dir={}", profile.0.display()),
-        ];
-        if let Some(ratio) = options.device_scale_factor {
-            args.push(format!("--force-device-scale-factor={ratio}"));
-        }
-        if options.without_3d {
-            args.push("--disable-3d-apis".to_owned());
-            args.push("--disable-webgl".to_owned());
-        } else {
-            // WebGL2 rendered on the CPU: these machines have no GPU.
-            args.push("--use-angle=swiftshader".to_owned());
-            args.push("--enable-unsafe-swiftshader".to_owned());
-        }
-        let mut caps = serde_json::Map::new();
-        caps.insert(
-            "goog:chromeOptions".to_owned(),
-            json!({ "binary": chromium, "args": args }),
-        );
-        caps.insert("goog:loggingPrefs".to_owned(), json!({ "browser": "ALL" }));
-
-        let webdriver = format!("http://127.0.0.1:{port}");
-        let client = connect(&webdriver, caps).await?;
+        let chromium = Chromium::start(&options).await?;
         Ok(Self {
-            client,
+            client: chromium.client.clone(),
             base_url,
-            driver,
-            _profile: profile,
+            chromium: Some(chromium),
+            shared: false,
         })
     }
 
@@ -646,6 +614,12 @@ impl Browser {
         Ok(())
     }
 
+    /// Clears the app's and the host pages' storage and service workers, as
+    /// a first visit finds them.
+    pub async fn clear_site_data(&self) -> anyhow::Result<()> {
+        shared::clear_site_data(&self.client).await
+    }
+
     /// `window.edgewise.state()`.
     pub async fn state(&self) -> anyhow::Result<Value> {
         self.eval("return window.edgewise.state();").await
@@ -735,28 +709,28 @@ impl Browser {
         Screenshot::keep(name, &bytes)
     }
 
-    /// Closes the browser session.
+    /// Ends the test's use of the browser: closes a browser of its own, and
+    /// hands the shared one back for the next test.
     pub async fn close(self) -> anyhow::Result<()> {
-        self.client
-            .clone()
-            .close()
-            .await
-            .context("cannot close the browser")
+        if !self.shared {
+            self.client
+                .clone()
+                .close()
+                .await
+                .context("cannot close the browser")?;
+        }
+        Ok(())
     }
 }
 
-/// A test that fails drops its browser without closing it: chromedriver is
-/// killed, and the Chromium it started would go on drawing the app (a
-/// software-rendered frame loop per failed test, slowing every test after
-/// it). The whole process group goes instead.
+/// A test that fails drops its browser without closing it: its own
+/// Chromium ends (`chromium.rs`), and the shared one goes back.
 impl Drop for Browser {
     fn drop(&mut self) {
-        if let Some(group) = self.driver.id() {
-            std::process::Command::new("kill")
-                .args(["-s", "KILL", "--", &format!("-{group}")])
-                .stderr(std::process::Stdio::null())
-                .status()
-                .ok();
+        if let Some(chromium) = self.chromium.take()
+            && self.shared
+        {
+            shared::give_back(chromium);
         }
     }
 }
@@ -849,7 +823,7 @@ impl Screenshot {
 
 /// Chromedriver's (non-standard) command for the browser console log.
 #[derive(Debug)]
-struct BrowserLog;
+pub(crate) struct BrowserLog;
 
 impl WebDriverCompatibleCommand for BrowserLog {
     fn endpoint(
@@ -873,9 +847,9 @@ impl WebDriverCompatibleCommand for BrowserLog {
 
 /// Chromedriver's command for running a DevTools Protocol command.
 #[derive(Debug)]
-struct Cdp {
-    command: String,
-    params: Value,
+pub(crate) struct Cdp {
+    pub(crate) command: String,
+    pub(crate) params: Value,
 }
 
 impl WebDriverCompatibleCommand for Cdp {
@@ -898,55 +872,10 @@ impl WebDriverCompatibleCommand for Cdp {
     }
 }
 
-async fn connect(webdriver: &str, caps: serde_json::Map<String, Value>) -> anyhow::Result<Client> {
-    // chromedriver needs a moment to start listening.
-    let start = Instant::now();
-    loop {
-        match ClientBuilder::native()
-            .capabilities(caps.clone())
-            .connect(webdriver)
-            .await
-        {
-            Ok(client) => return Ok(client),
-            Err(err) if start.elapsed() > Duration::from_secs(20) => {
-                bail!("cannot start a Chromium session through chromedriver: {err}")
-            }
-            Err(_) => tokio::time::sleep(Duration::from_millis(200)).await,
-        }
-    }
-}
-
-fn env(name: &str) -> anyhow::Result<String> {
+pub(crate) fn env(name: &str) -> anyhow::Result<String> {
     std::env::var(name).with_context(|| {
         format!("{name} is not set: run the browser tests with `cargo xtask test` (or `cargo xtask browser-test`)")
     })
-}
-
-fn free_port() -> anyhow::Result<u16> {
-    Ok(std::net::TcpListener::bind("127.0.0.1:0")?
-        .local_addr()?
-        .port())
-}
-
-/// A temporary directory removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(prefix: &str) -> anyhow::Result<Self> {
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_nanos())
-            .unwrap_or_default();
-        let dir = std::env::temp_dir().join(format!("{prefix}-{}-{nanos}", std::process::id()));
-        std::fs::create_dir_all(&dir)?;
-        Ok(Self(dir))
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        std::fs::remove_dir_all(&self.0).ok();
-    }
 }
 
 /// The `window.edgewise` calls, as `(method, args)`, that turn `current`

@@ -302,9 +302,7 @@ impl Seen<'_> {
     }
 
     async fn every_state_inner(&self) -> anyhow::Result<()> {
-        self.browser
-            .eval("localStorage.clear(); return null;")
-            .await?;
+        self.browser.clear_site_data().await?;
         self.browser.open("").await?;
         self.browser
             .wait_for("window.edgewise.state().layout.overlays.length > 0", WAIT)
