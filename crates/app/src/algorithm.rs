@@ -50,9 +50,6 @@ pub struct Algorithms {
     /// The first and last source line in sight this frame, for
     /// `state().layout.sourceLines`; the app takes it after each frame.
     pub source_lines: Option<[u32; 2]>,
-    /// How far apart the source's rows were last drawn, to scroll to a
-    /// line before they are laid out.
-    code_pitch: Option<f32>,
     /// The panel is a small screen's sheet, which scrolls: the source keeps
     /// a least height instead of taking what the controls leave.
     pub in_sheet: bool,
@@ -70,7 +67,6 @@ impl Default for Algorithms {
             highlighted: None,
             step_controls: None,
             source_lines: None,
-            code_pitch: None,
             in_sheet: false,
         }
     }

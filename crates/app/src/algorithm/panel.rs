@@ -357,6 +357,10 @@ impl Algorithms {
             .collect();
         let line_fill = ui.visuals().selection.bg_fill.gamma_multiply(0.22);
         let row_height = ui.fonts_mut(|f| f.row_height(&style.font)) + 2.0;
+        // How far apart the rows are: each is as tall as the style's least
+        // interactive height where that is taller (a touch screen's), as the
+        // tables' rows are, so the offset below is known before layout.
+        let pitch = row_height.max(ui.spacing().interact_size.y);
         let gutter = ui.fonts_mut(|f| f.glyph_width(&style.font, '0')) * 4.0 + 18.0;
         let needs_scroll = run.scrolled_to != Some(frame.line);
         let highlighted = self.highlighted(&source).clone();
@@ -372,12 +376,9 @@ impl Algorithms {
             // The offset that centres the line, set before the rows are laid
             // out so that it shows in this frame, as the tables do
             // (`tables::DrawnRows`); scrolling to the row after them showed it
-            // a frame later. Rows are as far apart as they were last drawn:
-            // a row is as tall as the style's least interactive height.
-            // Step 0's line, the header, is not marked, but going back to it
-            // scrolls the code back to its top.
+            // a frame later. Step 0's line, the header, is not marked, but
+            // going back to it scrolls the code back to its top.
             if let Some(row) = lines.iter().position(|&(number, _)| number == frame.line) {
-                let pitch = self.code_pitch.unwrap_or(row_height);
                 let shown = ui.available_height();
                 let most = (lines.len() as f32 * pitch - shown).max(0.0);
                 let centred = (row as f32 + 0.5) * pitch - shown / 2.0;
@@ -386,7 +387,6 @@ impl Algorithms {
             }
         }
         let mut in_sight: Option<[u32; 2]> = None;
-        let mut pitch = row_height;
         area.show(ui, |ui| {
             ui.spacing_mut().item_spacing.y = 0.0;
             let sight = ui.clip_rect().y_range();
@@ -395,7 +395,7 @@ impl Algorithms {
                 let background = ui.painter().add(egui::Shape::Noop);
                 let row = ui.horizontal(|ui| {
                     let (rect, response) =
-                        ui.allocate_exact_size(vec2(gutter, row_height), Sense::click());
+                        ui.allocate_exact_size(vec2(gutter, pitch), Sense::click());
                     let has_breakpoint = breakpoints.contains(&number);
                     let painter = ui.painter();
                     if has_breakpoint {
@@ -432,7 +432,6 @@ impl Algorithms {
                     ui.add(egui::Label::new(job).extend());
                 });
                 let rect = row.response.rect;
-                pitch = rect.height();
                 if sight.contains(rect.center().y) {
                     in_sight = Some(in_sight.map_or([number; 2], |[first, _]| [first, number]));
                 }
@@ -464,7 +463,6 @@ impl Algorithms {
             run.scrolled_to = Some(frame.line);
         }
         self.source_lines = in_sight;
-        self.code_pitch = Some(pitch);
         toggled.map(Command::ToggleBreakpoint)
     }
 }

@@ -283,6 +283,17 @@ fn the_current_line_stays_in_sight_beside_many_variables() {
             "step {}: only lines {first}..={last} show",
             trace.step
         );
+        if step == 70 || step == 71 {
+            // In the middle of the code, the line is scrolled to the middle
+            // of the view: the rows are where the offset assumed.
+            let middle = (first + last) / 2;
+            assert!(
+                trace.line.abs_diff(middle) <= 1,
+                "step {}: line {} is not centred in lines {first}..={last}",
+                trace.step,
+                trace.line
+            );
+        }
         assert_bounded(&state.layout, "beside ten variables");
     }
 }
