@@ -11,7 +11,10 @@
 //! console log read out. The HTTP cache stays: the pages are the same
 //! build throughout.
 
-use std::sync::{Mutex, OnceLock, PoisonError};
+use std::{
+    sync::{Mutex, OnceLock, PoisonError},
+    time::Duration,
+};
 
 use anyhow::Context as _;
 use fantoccini::Client;
@@ -33,6 +36,10 @@ enum Slot {
 
 static SLOT: Mutex<Slot> = Mutex::new(Slot::Unstarted);
 
+/// A reset takes well under a second; one that takes this long is stuck
+/// on what the last test left, and a new browser is quicker.
+const RESET_LIMIT: Duration = Duration::from_secs(30);
+
 /// The shared Chromium, reset for a new test, or `None` while another test
 /// holds it.
 pub(crate) async fn lend() -> anyhow::Result<Option<Chromium>> {
@@ -41,15 +48,24 @@ pub(crate) async fn lend() -> anyhow::Result<Option<Chromium>> {
         Slot::Resetting(reset) => Some(reset),
         Slot::Unstarted => None,
     };
-    if let Some(reset) = resetting {
-        match reset.await {
-            Ok((chromium, Ok(()))) => return Ok(Some(chromium)),
-            // A test that failed can leave the browser unusable; dropping
-            // it ends its processes.
-            Ok((_, Err(err))) => {
+    if let Some(mut reset) = resetting {
+        // A test that failed can leave the browser unusable or stuck;
+        // dropping it, or aborting its reset, ends its processes.
+        match tokio::time::timeout(RESET_LIMIT, &mut reset).await {
+            Ok(Ok((chromium, Ok(())))) => return Ok(Some(chromium)),
+            Ok(Ok((_, Err(err)))) => {
                 eprintln!("the shared Chromium could not be reset ({err:#}); starting another");
             }
-            Err(err) => eprintln!("the shared Chromium's reset panicked ({err}); starting another"),
+            Ok(Err(err)) => {
+                eprintln!("the shared Chromium's reset panicked ({err}); starting another");
+            }
+            Err(_) => {
+                reset.abort();
+                eprintln!(
+                    "the shared Chromium's reset took over {} s; starting another",
+                    RESET_LIMIT.as_secs()
+                );
+            }
         }
     }
     let started = runtime()
