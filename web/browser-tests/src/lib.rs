@@ -119,8 +119,9 @@ pub struct Screen {
 pub static ONE_HEAVY_PAGE_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
 
 /// The screens students and lecturers use: laptops and projectors at
-/// ratios 1 and 2, a tablet and a phone.
-pub const SCREENS: [Screen; 6] = [
+/// ratios 1 and 2, a window on half a laptop's screen (beside the lecture
+/// notes), a tablet and a phone.
+pub const SCREENS: [Screen; 7] = [
     Screen {
         name: "desktop-1280x800@1",
         width: 1280,
@@ -147,6 +148,13 @@ pub const SCREENS: [Screen; 6] = [
         width: 1920,
         height: 1080,
         ratio: 2.0,
+        touch: false,
+    },
+    Screen {
+        name: "window-640x800@1",
+        width: 640,
+        height: 800,
+        ratio: 1.0,
         touch: false,
     },
     Screen {
