@@ -9,6 +9,7 @@ use std::{
 
 use anyhow::{Context as _, bail};
 use fantoccini::{Client, ClientBuilder, wd::TimeoutConfiguration};
+use hyper_util::client::legacy::connect::HttpConnector;
 use serde_json::{Value, json};
 
 use crate::{LaunchOptions, env};
@@ -131,7 +132,7 @@ async fn connect(webdriver: &str, caps: serde_json::Map<String, Value>) -> anyho
     // chromedriver needs a moment to start listening.
     let start = Instant::now();
     loop {
-        match ClientBuilder::native()
+        match ClientBuilder::new(HttpConnector::new())
             .capabilities(caps.clone())
             .connect(webdriver)
             .await
