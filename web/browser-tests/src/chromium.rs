@@ -116,6 +116,9 @@ impl Chromium {
 /// A test that fails drops its browser without closing it, and the
 /// Chromium would go on drawing the app (a software-rendered frame loop per
 /// failed test, slowing every test after it): the whole group goes at once.
+/// The lifeline alone would end it too, but only once `sh` reads the closed
+/// pipe; killing here, before the fields drop, stops Chromium before its
+/// profile folder is removed under it.
 impl Drop for Chromium {
     fn drop(&mut self) {
         if let Some(group) = self.group.id() {
