@@ -455,15 +455,12 @@ impl Browser {
                     "deviceScaleFactor": screen.ratio, "mobile": screen.touch }),
         )
         .await?;
-        self.touch_screen(screen.touch).await
-    }
-
-    /// Turns a touch screen on or off: the page sees touch points and a
-    /// coarse pointer, and [`Self::tap_at`] works.
-    pub async fn touch_screen(&self, on: bool) -> anyhow::Result<()> {
+        // On a touch screen the page sees touch points and a coarse pointer,
+        // and `tap_at` works.
+        let touch = screen.touch;
         self.cdp(
             "Emulation.setTouchEmulationEnabled",
-            json!({ "enabled": on, "maxTouchPoints": if on { 5 } else { 1 } }),
+            json!({ "enabled": touch, "maxTouchPoints": if touch { 5 } else { 1 } }),
         )
         .await?;
         Ok(())
