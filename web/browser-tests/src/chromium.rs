@@ -67,7 +67,6 @@ impl Chromium {
         let mut args = vec![
             "--headless".to_owned(),
             "--no-sandbox".to_owned(),
-            "--disable-gpu".to_owned(),
             "--disable-dev-shm-usage".to_owned(),
             "--disable-background-networking".to_owned(),
             "--disable-component-update".to_owned(),
@@ -78,6 +77,9 @@ impl Chromium {
             format!("--window-size={width},{height}"),
             format!("--user-data-dir={}", profile.0.display()),
         ];
+        if options.cpu_compositing {
+            args.push("--disable-gpu".to_owned());
+        }
         if let Some(ratio) = options.device_scale_factor {
             args.push(format!("--force-device-scale-factor={ratio}"));
         }

@@ -87,6 +87,12 @@ pub struct LaunchOptions {
     /// A true device pixel ratio (`--force-device-scale-factor`), as a
     /// phone's or a high-density laptop's screen has.
     pub device_scale_factor: Option<f64>,
+    /// Composite the page on the CPU (`--disable-gpu`), as Chromium does
+    /// where it finds no usable GPU: the benchmarks' case. Otherwise the
+    /// compositor draws with `SwiftShader` too, where the 3D view already
+    /// is, and no frame is read back from it: the tests, in three quarters
+    /// of the time (docs/performance.md).
+    pub cpu_compositing: bool,
 }
 
 impl Default for LaunchOptions {
@@ -96,6 +102,7 @@ impl Default for LaunchOptions {
             without_3d: false,
             base_url: None,
             device_scale_factor: None,
+            cpu_compositing: false,
         }
     }
 }

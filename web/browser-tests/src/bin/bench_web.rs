@@ -136,6 +136,7 @@ async fn page_fps(base_url: &str, page: &str, window_size: (u32, u32)) -> anyhow
     let browser = Browser::launch_with(LaunchOptions {
         window_size,
         base_url: Some(base_url.to_owned()),
+        cpu_compositing: true,
         ..LaunchOptions::default()
     })
     .await?;
@@ -232,6 +233,7 @@ async fn main() -> anyhow::Result<()> {
 
     let app = Browser::launch_with(LaunchOptions {
         window_size,
+        cpu_compositing: true,
         ..LaunchOptions::default()
     })
     .await?;
