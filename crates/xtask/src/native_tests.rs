@@ -94,11 +94,14 @@ pub fn list(build: &mut Command) -> anyhow::Result<Built> {
 /// The executables running one after another on a thread, as `cargo test`
 /// runs them; dropping this stops them.
 pub struct NativeTests {
-    thread: Option<JoinHandle<anyhow::Result<()>>>,
+    /// Returns how long the executables ran, from the first's start to the
+    /// last's end.
+    thread: Option<JoinHandle<anyhow::Result<Duration>>>,
+    /// What the thread returned, once joined.
+    ran: Option<Duration>,
     running: Arc<Mutex<Option<Child>>>,
     stop: Arc<AtomicBool>,
     log: PathBuf,
-    started: Instant,
 }
 
 impl NativeTests {
@@ -113,14 +116,18 @@ impl NativeTests {
         let stop = Arc::new(AtomicBool::new(false));
         let thread = std::thread::spawn({
             let (running, stop) = (Arc::clone(&running), Arc::clone(&stop));
-            move || run_each(&executables, &envs, &file, &running, &stop)
+            move || {
+                let started = Instant::now();
+                run_each(&executables, &envs, &file, &running, &stop)?;
+                Ok(started.elapsed())
+            }
         });
         Ok(Self {
             thread: Some(thread),
+            ran: None,
             running,
             stop,
             log: log.to_path_buf(),
-            started: Instant::now(),
         })
     }
 
@@ -138,17 +145,21 @@ impl NativeTests {
     }
 
     /// Waits for the tests and prints their output; returns how long they
-    /// ran in all, from their start.
+    /// ran, from the first's start to the last's end (they may have ended
+    /// long before this is called).
     pub fn finish(mut self) -> anyhow::Result<Duration> {
         let result = self.join();
         self.print_log();
         result?;
-        Ok(self.started.elapsed())
+        self.ran.context("the native tests did not run")
     }
 
     fn join(&mut self) -> anyhow::Result<()> {
         match self.thread.take().map(JoinHandle::join) {
-            Some(Ok(result)) => result,
+            Some(Ok(result)) => {
+                self.ran = Some(result?);
+                Ok(())
+            }
             Some(Err(_)) => bail!("the native tests' thread panicked"),
             None => Ok(()),
         }

@@ -81,7 +81,10 @@ fn run_steps(root: &Path, timings: &mut Timings) -> anyhow::Result<()> {
         browser_tests(root, &dist, &edgewise, &[])
     })?;
     let ran = timings.step("native tests, the rest", || native.finish())?;
-    timings.beside("native tests, from their start", ran.as_secs_f64());
+    timings.beside(
+        "native tests, from their start to their end",
+        ran.as_secs_f64(),
+    );
     Ok(())
 }
 
