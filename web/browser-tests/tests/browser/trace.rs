@@ -212,15 +212,20 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
 async fn a_step_repaints_a_few_frames_then_rests() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
     browser.open("?sample=cube&structure=half").await?;
+    // The run's own frames settle first; after that each step's window
+    // of 1.5 s is the next step's settling time too, so a frame that comes
+    // late counts against the next step rather than going unseen.
     browser
-        .eval_async("window.edgewise.run('vertexStar', { v: 0 })")
+        .eval_async(
+            "window.edgewise.run('vertexStar', { v: 0 })
+               .then(() => new Promise((r) => setTimeout(r, 1500)))",
+        )
         .await?;
     for step in 1..=4 {
         let frames = browser
             .eval_async(
                 "(async () => {
                    const settle = () => new Promise((r) => setTimeout(r, 1500));
-                   await settle();
                    const before = window.edgewise.state().frames;
                    await window.edgewise.step(1);
                    await settle();
