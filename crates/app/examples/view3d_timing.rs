@@ -1,10 +1,11 @@
-//! Reports what the 3D view costs on the 20k- and 200k-face tori: the mesh
-//! and its view geometry, `set_geometry` (the scene and picking structure
-//! alone, then with the GPU instance buffers), two frames drawn and read
-//! back, and the UI pass alone (headless, the camera turning every frame so
-//! nothing is reused).
+//! Reports what the 3D view costs on the 20k- and 200k-face tori (and the
+//! 1M-face one with `--large`): the mesh and its view geometry,
+//! `set_geometry` (the scene and picking structure alone, then with the GPU
+//! instance buffers), two frames drawn and read back, frames drawn while the
+//! camera orbits, and the UI pass alone (headless, the camera turning every
+//! frame so nothing is reused).
 //!
-//! `cargo run --release -p edgewise-app --example view3d_timing`
+//! `cargo run --release -p edgewise-app --example view3d_timing [-- --large]`
 //!
 //! The GPU rows need a wgpu adapter (lavapipe will do, slowly); without one
 //! they are left out.
@@ -25,6 +26,9 @@ mod gpu;
 /// The window, in pixels and points.
 const SIZE: [u32; 2] = [900, 640];
 
+/// Frames drawn while the camera orbits.
+const ORBIT_FRAMES: u32 = 20;
+
 /// A row label and its figure; None where it needs the GPU and there is none.
 type Row = (&'static str, Option<Duration>);
 
@@ -34,9 +38,12 @@ fn main() {
         Some(rs) => println!("GPU rows on {}", rs.adapter.get_info().name),
         None => println!("no wgpu adapter: GPU rows left out"),
     }
-    let tori = [("20k faces", 100, 100), ("200k faces", 400, 250)];
+    let mut tori = vec![("20k faces", 100, 100), ("200k faces", 400, 250)];
+    if std::env::args().any(|arg| arg == "--large") {
+        tori.push(("1M faces", 1000, 500));
+    }
     let mut columns = Vec::new();
-    for (_, nu, nv) in tori {
+    for &(_, nu, nv) in &tori {
         match measure(nu, nv, gpu.as_ref()) {
             Ok(rows) => columns.push(rows),
             Err(message) => {
@@ -46,7 +53,7 @@ fn main() {
         }
     }
     print!("{:<44}", "torus");
-    for (name, _, _) in tori {
+    for &(name, _, _) in &tori {
         print!("{name:>14}");
     }
     println!();
@@ -84,7 +91,7 @@ fn measure(nu: u32, nv: u32, gpu: Option<&RenderState>) -> Result<Vec<Row>, Stri
     let screen =
         egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(SIZE[0] as f32, SIZE[1] as f32));
 
-    let (mut with_gpu, mut drawn) = (None, [None, None]);
+    let (mut with_gpu, mut drawn, mut orbit) = (None, [None, None], None);
     if let Some(rs) = gpu {
         let mut view = View3d::new(Some(rs));
         let copy = geometry.clone();
@@ -106,6 +113,21 @@ fn measure(nu: u32, nv: u32, gpu: Option<&RenderState>) -> Result<Vec<Row>, Stri
             result?;
             *slot = Some(took);
         }
+        // Orbiting: each frame turns the camera, is drawn and is waited for
+        // (read back), as a frame the page presents is.
+        let (result, took) = time(|| {
+            for _ in 0..ORBIT_FRAMES {
+                let mut camera = view.camera();
+                camera.yaw += 0.05;
+                view.set_camera(camera);
+                gpu::draw_frame(rs, &ctx, screen, SIZE, Vec::new(), |ui| {
+                    view.ui(ui, &styles, &ViewOptions::default());
+                })?;
+            }
+            Ok::<_, String>(())
+        });
+        result?;
+        orbit = Some(took / ORBIT_FRAMES);
     }
 
     let mut headless = View3d::new(None);
@@ -154,6 +176,7 @@ fn measure(nu: u32, nv: u32, gpu: Option<&RenderState>) -> Result<Vec<Row>, Stri
         ("set_geometry with GPU buffers", with_gpu),
         ("two frames drawn, highlighted ids", drawn[0]),
         ("two frames drawn, all ids", drawn[1]),
+        ("orbiting, per frame drawn and read back", orbit),
         ("UI pass: first frame", passes[0]),
         ("UI pass per frame: highlighted ids", passes[1]),
         ("UI pass per frame: all ids", passes[2]),
