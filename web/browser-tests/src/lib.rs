@@ -90,8 +90,8 @@ pub struct LaunchOptions {
     /// Composite the page on the CPU (`--disable-gpu`), as Chromium does
     /// where it finds no usable GPU: the benchmarks' case. Otherwise the
     /// compositor draws with `SwiftShader` too, where the 3D view already
-    /// is, and no frame is read back from it: the tests, in three quarters
-    /// of the time (docs/performance.md).
+    /// is, and no frame is read back from it: the tests, in about a fifth
+    /// less time (docs/performance.md).
     pub cpu_compositing: bool,
 }
 
