@@ -212,26 +212,26 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
 async fn a_step_repaints_a_few_frames_then_rests() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
     browser.open("?sample=cube&structure=half").await?;
-    // The run's own frames settle first; after that each step's window
-    // of 1.5 s is the next step's settling time too, so a frame that comes
-    // late counts against the next step rather than going unseen.
+    // The run's own frames settle first; after that each step's window is
+    // the next step's settling time too, so a frame that comes late counts
+    // against the next step rather than going unseen.
+    const SETTLE_MS: u32 = 1500;
     browser
-        .eval_async(
-            "window.edgewise.run('vertexStar', { v: 0 })
-               .then(() => new Promise((r) => setTimeout(r, 1500)))",
-        )
+        .eval_async(&format!(
+            "window.edgewise.run('vertexStar', {{ v: 0 }})
+               .then(() => new Promise((r) => setTimeout(r, {SETTLE_MS})))"
+        ))
         .await?;
     for step in 1..=4 {
         let frames = browser
-            .eval_async(
-                "(async () => {
-                   const settle = () => new Promise((r) => setTimeout(r, 1500));
+            .eval_async(&format!(
+                "(async () => {{
                    const before = window.edgewise.state().frames;
                    await window.edgewise.step(1);
-                   await settle();
+                   await new Promise((r) => setTimeout(r, {SETTLE_MS}));
                    return window.edgewise.state().frames - before;
-                 })()",
-            )
+                 }})()"
+            ))
             .await?;
         let frames = frames.as_u64().unwrap_or(u64::MAX);
         assert!(
