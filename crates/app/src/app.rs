@@ -339,6 +339,42 @@ impl EdgewiseApp {
         }
     }
 
+    /// Whether the view shows all it will show without new input: no frame
+    /// asked for, now or later, and no mesh being read or shown in slices.
+    /// What `settled()` waits for, so that a page or a test can read the
+    /// view at rest without guessing how long its frames take.
+    pub fn settled(&self) -> bool {
+        self.ctx
+            .as_ref()
+            .is_none_or(|ctx| !ctx.has_requested_repaint())
+            && self.tab().pending.is_none()
+            && self.files.opening.is_none()
+            && self.files.busy.is_none()
+    }
+
+    /// Frames drawn so far (`state().frames`).
+    pub fn frame_count(&self) -> u64 {
+        self.frames
+    }
+
+    /// What asked for the frames still to come, for the message of a
+    /// view that does not settle.
+    pub fn repaint_causes(&self) -> String {
+        let causes = self.ctx.as_ref().map(egui::Context::repaint_causes);
+        let mut names: Vec<String> = causes
+            .into_iter()
+            .flatten()
+            .map(|cause| cause.to_string().trim_end().to_owned())
+            .collect();
+        names.sort_unstable();
+        names.dedup();
+        if names.is_empty() {
+            "a mesh being opened or shown".to_owned()
+        } else {
+            names.join(", ")
+        }
+    }
+
     /// Opens or closes the OBJ editor; opening it writes the open mesh as OBJ
     /// so a sample can be edited.
     fn toggle_obj_editor(&mut self) {

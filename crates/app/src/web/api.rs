@@ -6,7 +6,8 @@
 //!   wrong (a bad argument names the call, the argument and what was
 //!   expected, before anything is read or changed).
 //! - [`QUERIES`]: each entry returns a value (`state`, `algorithms`,
-//!   `shareUrl`) or, for `exportMesh` and `exportImage`, a Promise of one.
+//!   `shareUrl`) or, for `settled`, `exportMesh` and `exportImage`, a
+//!   Promise of one.
 
 use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
@@ -338,6 +339,19 @@ const QUERIES: &[QueryEntry] = &[
         },
     },
     QueryEntry {
+        name: "settled",
+        answer: |runner, timeout, _| {
+            let call = "settled(timeoutMs)";
+            Ok(
+                match count(call, "timeoutMs", timeout, Some(SETTLE_TIMEOUT_MS)) {
+                    Ok(timeout) => until_settled(runner.clone(), timeout),
+                    Err(message) => settle(Err(message)),
+                }
+                .into(),
+            )
+        },
+    },
+    QueryEntry {
         name: "exportMesh",
         answer: |runner, format, _| Ok(export(runner, format).into()),
     },
@@ -650,6 +664,39 @@ fn until_shown(runner: eframe::WebRunner, job: u64) -> js_sys::Promise {
                 Some(Ok(())) => return Ok(JsValue::NULL),
                 Some(Err(why)) => return Err(js_sys::Error::new(&why).into()),
             }
+        }
+    })
+}
+
+/// How long `settled()` waits by default: a slow software-rendered frame
+/// takes under a second, so a view still asking for frames after this is
+/// animating without end.
+const SETTLE_TIMEOUT_MS: u64 = 10_000;
+/// How often `settled()` looks: about a frame at 60 Hz.
+const SETTLE_POLL_MS: i32 = 16;
+
+/// Resolves to the number of frames drawn once the view has settled
+/// ([`EdgewiseApp::settled`]) and drawn no frame between two looks, so
+/// that a frame eframe scheduled itself (for input) has come first;
+/// rejects, naming what keeps asking for frames, after `timeout_ms`.
+fn until_settled(runner: eframe::WebRunner, timeout_ms: usize) -> js_sys::Promise {
+    wasm_bindgen_futures::future_to_promise(async move {
+        let start = js_sys::Date::now();
+        let mut last = None;
+        loop {
+            let (settled, frames) = with_app(&runner, |app| (app.settled(), app.frame_count()))?;
+            if settled && last == Some(frames) {
+                return Ok(JsValue::from_f64(frames as f64));
+            }
+            last = settled.then_some(frames);
+            if js_sys::Date::now() - start > timeout_ms as f64 {
+                let causes = with_app(&runner, |app| app.repaint_causes())?;
+                return Err(js_sys::Error::new(&format!(
+                    "the view did not settle within {timeout_ms} ms: it kept asking for frames ({causes})"
+                ))
+                .into());
+            }
+            after_ms(SETTLE_POLL_MS).await;
         }
     })
 }

@@ -177,6 +177,10 @@ async fn wrong_arguments_are_refused_with_what_was_expected() -> anyhow::Result<
         ),
         ("window.edgewise.switchTab(7)", "there is no tab 7"),
         (
+            "window.edgewise.settled('soon')",
+            "settled(timeoutMs): timeoutMs must be a whole number from 0, not the string 'soon'",
+        ),
+        (
             "window.edgewise.edit('FLIP-EDGE', [0])",
             "edit(op, ids): op must be one of 'flip-edge',",
         ),

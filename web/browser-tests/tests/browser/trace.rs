@@ -208,37 +208,52 @@ async fn errors_are_reported_and_the_trace_stays() -> anyhow::Result<()> {
 /// A step repaints a few frames and then nothing: the tables and the code
 /// jump to their row and line. A smooth scroll took seven frames a step,
 /// each a whole repaint, which a slow machine pays for every key press.
+/// `settled()` says when the view asks for no more frames; ten animation
+/// frames later none has been drawn. A playing run never settles, and
+/// `settled` says what keeps it drawing.
 #[tokio::test]
 async fn a_step_repaints_a_few_frames_then_rests() -> anyhow::Result<()> {
     let browser = Browser::launch().await?;
     browser.open("?sample=cube&structure=half").await?;
-    // The run's own frames settle first; after that each step's window is
-    // the next step's settling time too, so a frame that comes late counts
-    // against the next step rather than going unseen.
-    const SETTLE_MS: u32 = 1500;
     browser
-        .eval_async(&format!(
-            "window.edgewise.run('vertexStar', {{ v: 0 }})
-               .then(() => new Promise((r) => setTimeout(r, {SETTLE_MS})))"
-        ))
+        .eval_async(
+            "window.edgewise.run('vertexStar', { v: 0 }).then(() => window.edgewise.settled())",
+        )
         .await?;
     for step in 1..=4 {
         let frames = browser
-            .eval_async(&format!(
-                "(async () => {{
+            .eval_async(
+                "(async () => {
                    const before = window.edgewise.state().frames;
                    await window.edgewise.step(1);
-                   await new Promise((r) => setTimeout(r, {SETTLE_MS}));
-                   return window.edgewise.state().frames - before;
-                 }})()"
-            ))
+                   const settled = await window.edgewise.settled();
+                   for (let i = 0; i < 10; i++) {
+                     await new Promise((r) => requestAnimationFrame(r));
+                   }
+                   return [settled - before, window.edgewise.state().frames - before];
+                 })()",
+            )
             .await?;
-        let frames = frames.as_u64().unwrap_or(u64::MAX);
+        let [until_settled, after] = [0, 1].map(|i| frames[i].as_u64().unwrap_or(u64::MAX));
         assert!(
-            (1..=3).contains(&frames),
-            "step {step} repainted {frames} frames"
+            (1..=3).contains(&until_settled),
+            "step {step} repainted {until_settled} frames before it settled"
+        );
+        assert_eq!(
+            after, until_settled,
+            "step {step} went on drawing after it settled"
         );
     }
+    let refusal = browser
+        .refusal("window.edgewise.play().then(() => window.edgewise.settled(300))")
+        .await?;
+    let refusal = refusal.as_str().unwrap_or_default();
+    assert!(
+        refusal.starts_with("the view did not settle within 300 ms: it kept asking for frames ("),
+        "a playing run: {refusal}"
+    );
+    browser.eval_async("window.edgewise.pause()").await?;
+    browser.eval_async("window.edgewise.settled()").await?;
     browser.assert_no_console_errors().await?;
     browser.close().await
 }
