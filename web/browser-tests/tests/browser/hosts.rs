@@ -157,8 +157,32 @@ async fn wait_for_ready(browser: &Browser, origin: &str, count: usize) -> anyhow
              heard: {heard}\nconsole: {console:#?}"
         );
     }
-    // A view that took the focus as it started would have it by now.
-    tokio::time::sleep(Duration::from_secs(2)).await;
+    // A view that took the focus as it started has it once it settles.
+    view_settled(browser).await
+}
+
+/// Waits until the view in the page's first frame has settled: it asks for
+/// no more frames, so what it does on its own (take the focus, ask for a
+/// height) it has done, and its messages have reached the page. Asked
+/// through the embed protocol, as a page on another origin asks.
+async fn view_settled(browser: &Browser) -> anyhow::Result<()> {
+    let reply = browser
+        .eval_async(
+            "new Promise((resolve) => { \
+               const id = 'settled-' + Math.random(); \
+               const hear = (event) => { \
+                 const m = event.data; \
+                 if (!m || m.type !== 'edgewise:reply' || m.id !== id) return; \
+                 window.removeEventListener('message', hear); \
+                 resolve(m); \
+               }; \
+               window.addEventListener('message', hear); \
+               document.querySelector('iframe').contentWindow.postMessage( \
+                 { type: 'edgewise:call', id, method: 'settled', args: [] }, '*'); \
+             })",
+        )
+        .await?;
+    anyhow::ensure!(reply["ok"] == true, "the view did not settle: {reply}");
     Ok(())
 }
 
@@ -275,7 +299,7 @@ async fn a_reveal_deck_keeps_its_keys_until_the_view_is_clicked() -> anyhow::Res
     // Escape hands the keys back: the deck's → moves the slide again, and
     // the deck did not take Escape for its own (the overview).
     browser.press_key("Escape", 0).await?;
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    view_settled(&browser).await?;
     let shot = browser.screenshot("host-reveal-escape").await?;
     assert_eq!(
         browser.eval("return Reveal.isOverview();").await?,
@@ -389,7 +413,7 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
     browser
         .wait_for(&heard("resize", &origin), Duration::from_secs(60))
         .await?;
-    tokio::time::sleep(Duration::from_secs(3)).await;
+    view_settled(&browser).await?;
     let asked = browser
         .eval(
             "return window.__heard.filter((m) => m.type === 'edgewise:resize').map((m) => m.height);",
@@ -426,7 +450,7 @@ async fn mkdocs_notes_keep_a_question_views_height_while_it_is_answered() -> any
         let first = first.clone();
         let browser = &browser;
         async move {
-            tokio::time::sleep(Duration::from_millis(1500)).await;
+            view_settled(browser).await?;
             let now = height().await?;
             let asked = browser
                 .eval(&format!(
