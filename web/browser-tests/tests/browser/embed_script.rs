@@ -205,7 +205,9 @@ async fn views_from_the_embed_script_size_themselves_and_report_steps() -> anyho
 
 /// Adds a view of the tetrahedron with `origins=` to an emptied page and
 /// gives the messages the page heard from it once it runs, and whether a
-/// call was answered.
+/// call was answered: once the view has settled after the call, a message
+/// the page posts to itself reaches it after every message the view posted
+/// (one window's posted messages arrive in order).
 async fn embedded_with_origins(
     browser: &Browser,
     origins: &str,
@@ -214,7 +216,9 @@ async fn embedded_with_origins(
     browser
         .eval(&format!(
             "document.body.innerHTML = ''; window.heard = []; \
-             window.addEventListener('message', (e) => window.heard.push(e.data.type || e.data.subject || e.data.context)); \
+             window.addEventListener('message', (e) => {{ \
+               if (e.data !== 'edgewise-test:after') window.heard.push(e.data.type || e.data.subject || e.data.context); \
+             }}); \
              const frame = document.createElement('iframe'); frame.id = 'view'; \
              frame.width = 640; frame.height = 480; \
              frame.src = '../index.html?embed=1&sample=tetrahedron&origins={origins}'; \
@@ -229,10 +233,19 @@ async fn embedded_with_origins(
         .await?;
     browser
         .eval_async(
-            "new Promise((resolve) => { \
-               document.getElementById('view').contentWindow.postMessage( \
+            "new Promise((resolve, reject) => { \
+               const view = document.getElementById('view').contentWindow; \
+               view.postMessage( \
                  {type: 'edgewise:call', id: 7, method: 'select', args: ['edge', 1]}, '*'); \
-               setTimeout(resolve, 3000); })",
+               view.edgewise.settled().then(() => { \
+                 const after = (e) => { \
+                   if (e.data !== 'edgewise-test:after') return; \
+                   window.removeEventListener('message', after); \
+                   resolve(null); \
+                 }; \
+                 window.addEventListener('message', after); \
+                 window.postMessage('edgewise-test:after', '*'); \
+               }, reject); })",
         )
         .await?;
     let heard = browser.eval("return window.heard;").await?;
