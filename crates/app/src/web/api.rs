@@ -672,13 +672,14 @@ fn until_shown(runner: eframe::WebRunner, job: u64) -> js_sys::Promise {
 /// takes under a second, so a view still asking for frames after this is
 /// animating without end.
 const SETTLE_TIMEOUT_MS: u64 = 10_000;
-/// How often `settled()` looks: about a frame at 60 Hz.
-const SETTLE_POLL_MS: i32 = 16;
 
 /// Resolves to the number of frames drawn once the view has settled
-/// ([`EdgewiseApp::settled`]) and drawn no frame between two looks, so
-/// that a frame eframe scheduled itself (for input) has come first;
-/// rejects, naming what keeps asking for frames, after `timeout_ms`.
+/// ([`EdgewiseApp::settled`]) and the next animation frame drew nothing:
+/// eframe paints for input (a key, a click) in its own animation-frame
+/// callback, which runs before this one, so input already delivered has
+/// been drawn. Rejects, naming what keeps asking for frames, after
+/// `timeout_ms`; a hidden page, which runs no animation frames, settles
+/// only once shown.
 fn until_settled(runner: eframe::WebRunner, timeout_ms: usize) -> js_sys::Promise {
     wasm_bindgen_futures::future_to_promise(async move {
         let start = js_sys::Date::now();
@@ -688,17 +689,51 @@ fn until_settled(runner: eframe::WebRunner, timeout_ms: usize) -> js_sys::Promis
             if settled && last == Some(frames) {
                 return Ok(JsValue::from_f64(frames as f64));
             }
-            last = settled.then_some(frames);
-            if js_sys::Date::now() - start > timeout_ms as f64 {
+            let waited = js_sys::Date::now() - start;
+            if waited > timeout_ms as f64 {
                 let causes = with_app(&runner, |app| app.repaint_causes())?;
                 return Err(js_sys::Error::new(&format!(
                     "the view did not settle within {timeout_ms} ms: it kept asking for frames ({causes})"
                 ))
                 .into());
             }
-            after_ms(SETTLE_POLL_MS).await;
+            let in_a_frame =
+                next_frame_within((timeout_ms as f64 - waited).max(0.0) as i32 + 1).await;
+            // Only a look from inside an animation frame counts as the second.
+            last = (settled && in_a_frame).then_some(frames);
         }
     })
+}
+
+/// Resolves `true` in the next animation frame, or `false` after `ms` if
+/// none came first (a hidden page runs none).
+async fn next_frame_within(ms: i32) -> bool {
+    let promise = js_sys::Promise::new(&mut |resolve, _reject| {
+        let Some(window) = web_sys::window() else {
+            let _resolved = resolve.call1(&JsValue::NULL, &JsValue::FALSE);
+            return;
+        };
+        let in_frame = {
+            let resolve = resolve.clone();
+            Closure::once_into_js(move || {
+                let _resolved = resolve.call1(&JsValue::NULL, &JsValue::TRUE);
+            })
+        };
+        let frame = window.request_animation_frame(in_frame.unchecked_ref());
+        let timer = window.set_timeout_with_callback_and_timeout_and_arguments_1(
+            &resolve,
+            ms,
+            &JsValue::FALSE,
+        );
+        if frame.is_err() && timer.is_err() {
+            let _resolved = resolve.call1(&JsValue::NULL, &JsValue::FALSE);
+        }
+    });
+    wasm_bindgen_futures::JsFuture::from(promise)
+        .await
+        .ok()
+        .and_then(|value| value.as_bool())
+        .unwrap_or(false)
 }
 
 /// Runs a command on the app; the app records a refusal and asks for a frame.
