@@ -236,6 +236,10 @@
   // ---- The app in the frame ------------------------------------------
 
   let generation = 0;
+  // The generation whose exercise the app shows: until its start is done,
+  // the app still shows the last item's, whose attempt must not be kept
+  // as this item's (a write then a quick switch did that).
+  let shown = -1;
   let frameHref = '';
   let ready = null;
   let whenReady = () => {};
@@ -271,7 +275,7 @@
   async function keepProgress() {
     const item = items[current];
     const mine = generation;
-    if (!item || item.kind !== 'exercise' || !ready) return;
+    if (!item || item.kind !== 'exercise' || !ready || shown !== mine) return;
     try {
       const progress = await callApp('exerciseProgress');
       if (mine === generation && typeof progress === 'string') item.progress = progress;
@@ -308,6 +312,8 @@
         item.progress = '';
         await callApp('startExercise', text, { name: item.name });
       }
+      if (mine !== generation) return;
+      shown = mine;
       await keepProgress();
       save(true);
     } catch (err) {
@@ -410,7 +416,7 @@
     try {
       const item = items[current];
       const progress = frame.contentWindow.edgewise?.exerciseProgress?.();
-      if (item && item.kind === 'exercise' && typeof progress === 'string') item.progress = progress;
+      if (item && item.kind === 'exercise' && shown === generation && typeof progress === 'string') item.progress = progress;
     } catch (err) {
       // Keep the last attempt read.
     }
