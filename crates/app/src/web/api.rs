@@ -706,25 +706,29 @@ fn until_settled(runner: eframe::WebRunner, timeout_ms: usize) -> js_sys::Promis
 }
 
 /// Resolves `true` in the next animation frame, or `false` after `ms` if
-/// none came first (a hidden page runs none).
+/// none came first (a hidden page runs none). The frame clears the timer,
+/// so a long wait, a look a frame, leaves no timers behind.
 async fn next_frame_within(ms: i32) -> bool {
     let promise = js_sys::Promise::new(&mut |resolve, _reject| {
         let Some(window) = web_sys::window() else {
             let _resolved = resolve.call1(&JsValue::NULL, &JsValue::FALSE);
             return;
         };
-        let in_frame = {
-            let resolve = resolve.clone();
-            Closure::once_into_js(move || {
-                let _resolved = resolve.call1(&JsValue::NULL, &JsValue::TRUE);
-            })
-        };
-        let frame = window.request_animation_frame(in_frame.unchecked_ref());
         let timer = window.set_timeout_with_callback_and_timeout_and_arguments_1(
             &resolve,
             ms,
             &JsValue::FALSE,
         );
+        let in_frame = {
+            let (resolve, window, timer) = (resolve.clone(), window.clone(), timer.clone());
+            Closure::once_into_js(move || {
+                if let Ok(timer) = timer {
+                    window.clear_timeout_with_handle(timer);
+                }
+                let _resolved = resolve.call1(&JsValue::NULL, &JsValue::TRUE);
+            })
+        };
+        let frame = window.request_animation_frame(in_frame.unchecked_ref());
         if frame.is_err() && timer.is_err() {
             let _resolved = resolve.call1(&JsValue::NULL, &JsValue::FALSE);
         }
