@@ -1,8 +1,9 @@
 //! One chromedriver and the headless Chromium it drives, as a process group
-//! that ends with its [`Chromium`] or with the test process.
+//! that ends, and whose profile folder is removed, with its [`Chromium`] or
+//! with the test process.
 
 use std::{
-    path::PathBuf,
+    path::{Path, PathBuf},
     process::Stdio,
     time::{Duration, Instant},
 };
@@ -20,16 +21,29 @@ pub(crate) struct Chromium {
     /// The session's timeouts as it started, which a lent session goes back
     /// to (`shared.rs`).
     pub(crate) timeouts: TimeoutConfiguration,
-    /// `sh`, the leader of the group that chromedriver and the Chromium it
-    /// starts belong to.
-    group: tokio::process::Child,
-    /// The group's standard input, whose closing kills the group: when this
-    /// drops, and when the test process ends in any way, even killed, so no
-    /// Chromium goes on drawing after the tests (the shared session is
-    /// never dropped).
+    /// chromedriver, the leader of the group that the Chromium it starts
+    /// joins.
+    driver: tokio::process::Child,
+    /// The input of the [`REAPER`], whose closing ends the group and removes
+    /// the profile: when this drops, and when the test process ends in any
+    /// way, even killed. The shared session is never dropped, and its
+    /// profile (about 100 MB) was left behind by every run of the suite.
     _lifeline: tokio::process::ChildStdin,
-    _profile: TempDir,
 }
+
+/// Waits for its input to close, then kills the group `$0` and removes the
+/// profile folder `$1` once the group has gone (or after 5 s): a folder
+/// removed while Chromium still wrote to it could come back in part. It
+/// has a group of its own, so that a Ctrl-C at the terminal, which reaches
+/// the tests' group, does not end it before it has cleaned up.
+const REAPER: &str = r#"read -r line
+kill -s KILL -- "-$0" 2>/dev/null
+tries=0
+while kill -0 -- "-$0" 2>/dev/null && [ "$tries" -lt 50 ]; do
+  sleep 0.1
+  tries=$((tries + 1))
+done
+rm -rf -- "$1""#;
 
 impl Chromium {
     /// Starts chromedriver and a Chromium with `options` (the base URL
@@ -40,28 +54,31 @@ impl Chromium {
         let chromedriver = env("EDGEWISE_CHROMEDRIVER")?;
 
         let port = free_port()?;
-        // chromedriver in the background; `sh` waits for its input to
-        // close, then kills its own group.
-        let mut group = tokio::process::Command::new("sh")
-            .args([
-                "-c",
-                "\"$0\" --port=\"$1\" & read -r line; kill -s KILL 0",
-                &chromedriver,
-                &port.to_string(),
-            ])
-            .stdin(Stdio::piped())
+        let profile = profile_dir()?;
+        // Chromium joins chromedriver's group, so that ending the group
+        // ends both.
+        let driver = tokio::process::Command::new(&chromedriver)
+            .arg(format!("--port={port}"))
+            .stdin(Stdio::null())
             .stdout(Stdio::null())
             .stderr(Stdio::null())
-            // Chromium joins chromedriver's group, so that ending the group
-            // ends both.
             .process_group(0)
-            .spawn()
-            .with_context(|| format!("cannot start {chromedriver}"))?;
-        let lifeline = group
-            .stdin
-            .take()
-            .context("chromedriver's group has no input")?;
-        let profile = TempDir::new("edgewise-chromium")?;
+            .spawn();
+        let driver = match driver {
+            Ok(driver) => driver,
+            Err(err) => {
+                std::fs::remove_dir_all(&profile).ok();
+                return Err(err).with_context(|| format!("cannot start {chromedriver}"));
+            }
+        };
+        let lifeline = match start_reaper(&driver, &profile) {
+            Ok(lifeline) => lifeline,
+            Err(err) => {
+                kill_group(&driver);
+                std::fs::remove_dir_all(&profile).ok();
+                return Err(err);
+            }
+        };
 
         let (width, height) = options.window_size;
         let mut args = vec![
@@ -75,7 +92,7 @@ impl Chromium {
             "--no-first-run".to_owned(),
             "--hide-scrollbars".to_owned(),
             format!("--window-size={width},{height}"),
-            format!("--user-data-dir={}", profile.0.display()),
+            format!("--user-data-dir={}", profile.display()),
         ];
         if options.cpu_compositing {
             args.push("--disable-gpu".to_owned());
@@ -99,7 +116,8 @@ impl Chromium {
         caps.insert("goog:loggingPrefs".to_owned(), json!({ "browser": "ALL" }));
 
         let webdriver = format!("http://127.0.0.1:{port}");
-        // On an error from here, `lifeline` drops and the group ends.
+        // On an error from here, `lifeline` drops: the group ends and the
+        // profile goes.
         let client = connect(&webdriver, caps).await?;
         let timeouts = client
             .get_timeouts()
@@ -108,29 +126,55 @@ impl Chromium {
         Ok(Self {
             client,
             timeouts,
-            group,
+            driver,
             _lifeline: lifeline,
-            _profile: profile,
         })
     }
 }
 
 /// A test that fails drops its browser without closing it, and the
 /// Chromium would go on drawing the app (a software-rendered frame loop per
-/// failed test, slowing every test after it): the whole group goes at once.
-/// The lifeline alone would end it too, but only once `sh` reads the closed
-/// pipe; killing here, before the fields drop, stops Chromium before its
-/// profile folder is removed under it.
+/// failed test, slowing every test after it): the whole group goes at once,
+/// rather than once the reaper reads its closed input.
 impl Drop for Chromium {
     fn drop(&mut self) {
-        if let Some(group) = self.group.id() {
-            std::process::Command::new("kill")
-                .args(["-s", "KILL", "--", &format!("-{group}")])
-                .stderr(Stdio::null())
-                .status()
-                .ok();
-        }
+        kill_group(&self.driver);
     }
+}
+
+/// Kills chromedriver and the Chromium it started.
+fn kill_group(driver: &tokio::process::Child) {
+    if let Some(group) = driver.id() {
+        std::process::Command::new("kill")
+            .args(["-s", "KILL", "--", &format!("-{group}")])
+            .stderr(Stdio::null())
+            .status()
+            .ok();
+    }
+}
+
+/// Starts the [`REAPER`] of `driver`'s group and folder `profile`, and
+/// returns its input.
+fn start_reaper(
+    driver: &tokio::process::Child,
+    profile: &Path,
+) -> anyhow::Result<tokio::process::ChildStdin> {
+    let group = driver.id().context("chromedriver has already ended")?;
+    let mut reaper = tokio::process::Command::new("sh")
+        .arg("-c")
+        .arg(REAPER)
+        .arg(group.to_string())
+        .arg(profile)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .process_group(0)
+        .spawn()
+        .context("cannot start the shell that ends Chromium")?;
+    reaper
+        .stdin
+        .take()
+        .context("the shell that ends Chromium has no input")
 }
 
 async fn connect(webdriver: &str, caps: serde_json::Map<String, Value>) -> anyhow::Result<Client> {
@@ -157,23 +201,15 @@ fn free_port() -> anyhow::Result<u16> {
         .port())
 }
 
-/// A temporary directory removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(prefix: &str) -> anyhow::Result<Self> {
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_nanos())
-            .unwrap_or_default();
-        let dir = std::env::temp_dir().join(format!("{prefix}-{}-{nanos}", std::process::id()));
-        std::fs::create_dir_all(&dir)?;
-        Ok(Self(dir))
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        std::fs::remove_dir_all(&self.0).ok();
-    }
+/// A new, empty profile folder for one Chromium.
+fn profile_dir() -> anyhow::Result<PathBuf> {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_nanos())
+        .unwrap_or_default();
+    let dir =
+        std::env::temp_dir().join(format!("edgewise-chromium-{}-{nanos}", std::process::id()));
+    std::fs::create_dir_all(&dir)
+        .with_context(|| format!("cannot make Chromium's profile folder {}", dir.display()))?;
+    Ok(dir)
 }
