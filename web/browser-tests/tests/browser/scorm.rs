@@ -309,6 +309,82 @@ async fn a_scorm_2004_package_scores_resumes_and_passes() -> anyhow::Result<()> 
     pass_fail_leave_and_resume(&V2004).await
 }
 
+/// A student writes in the do-it and at once opens the prediction, whose
+/// text arrives a second late (a slow LMS). The write's keep, 400 ms after
+/// it, falls while the app still shows the do-it: it must not save the
+/// do-it's attempt as the prediction's, from which the prediction would
+/// then be resumed.
+#[tokio::test]
+async fn a_switch_just_after_a_write_keeps_each_attempt_under_its_exercise() -> anyhow::Result<()> {
+    let hosts = hosts_url()?;
+    let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
+    let browser = Browser::launch().await?;
+    browser
+        .goto_url(&format!("{hosts}scorm/?version=2004"))
+        .await?;
+    exercise_on_screen(&browser, "walk-face-loop-half-edge", START_TIMEOUT).await?;
+    browser
+        .eval(&format!("{LAUNCH}.edgewisePackage.open(2); return null;"))
+        .await?;
+    let split = exercise_on_screen(&browser, "split-edge-half-edge", STEP_TIMEOUT).await?;
+    let instance = exercise("split-edge-half-edge")?.instance(seed_of(&split)?)?;
+    let Task::DoIt { operation, ids } = &instance.task else {
+        anyhow::bail!("a do-it");
+    };
+    let mut target = instance.mesh.clone();
+    operations::apply(&mut target, *operation, ids)?;
+    let writes = student_writes(&instance.mesh, &target);
+    let (method, args) = writes.first().context("a write")?;
+
+    // The launch page's fetches wait a second, and what it asks the app to
+    // start is recorded.
+    browser
+        .eval(&format!(
+            "const launch = {LAUNCH};
+             const fetch = launch.fetch;
+             launch.fetch = (...args) =>
+               new Promise((wake) => setTimeout(wake, 1000)).then(() => fetch.apply(launch, args));
+             const app = {APP};
+             const start = app.startExercise;
+             launch.startsAsked = [];
+             app.startExercise = (...args) => {{
+               launch.startsAsked.push(args[1] ?? null);
+               return start.apply(app, args);
+             }};
+             return null;"
+        ))
+        .await?;
+    call(&browser, method, args).await?;
+    browser
+        .eval(&format!("{LAUNCH}.edgewisePackage.open(1); return null;"))
+        .await?;
+    let predict =
+        exercise_on_screen(&browser, "predict-vertex-edges-half-edge", STEP_TIMEOUT).await?;
+
+    let asked = browser
+        .eval(&format!("return {LAUNCH}.startsAsked;"))
+        .await?;
+    assert_eq!(
+        asked,
+        json!([{ "name": "predict-vertex-edges-half-edge" }]),
+        "the prediction starts afresh, with no attempt of the do-it's"
+    );
+    assert_eq!(predict["step"], 0, "{predict}");
+    // The do-it's write is kept under the do-it (its fifth field: the
+    // attempt, then the writes after the last colon).
+    let kept = cmi(&browser).await?["suspend_data"].clone();
+    let doit = kept
+        .as_str()
+        .and_then(|data| data.split('|').nth(5))
+        .context("the do-it's field")?;
+    assert!(
+        doit.split(':').count() == 6 && !doit.ends_with(':'),
+        "the do-it keeps its write: {kept}"
+    );
+    browser.assert_no_console_errors().await?;
+    browser.close().await
+}
+
 /// Opened outside an LMS, the package says so once and still works.
 #[tokio::test]
 async fn a_package_without_an_lms_runs_as_a_plain_page() -> anyhow::Result<()> {
