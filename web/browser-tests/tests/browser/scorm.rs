@@ -87,6 +87,17 @@ fn seed_of(state: &Value) -> anyhow::Result<u64> {
     state["seed"].as_u64().context("a seed")
 }
 
+/// The writes that do do-it exercise `name`'s instance `seed`, in order.
+fn do_it_writes(name: &str, seed: u64) -> anyhow::Result<Vec<(&'static str, Value)>> {
+    let instance = exercise(name)?.instance(seed)?;
+    let Task::DoIt { operation, ids } = &instance.task else {
+        anyhow::bail!("{name} is a do-it");
+    };
+    let mut target = instance.mesh.clone();
+    operations::apply(&mut target, *operation, ids)?;
+    Ok(student_writes(&instance.mesh, &target))
+}
+
 /// The names a version gives its records.
 struct Version {
     name: &'static str,
@@ -220,13 +231,7 @@ async fn pass_fail_leave_and_resume(version: &Version) -> anyhow::Result<()> {
         .await?;
     let split = exercise_on_screen(&browser, "split-edge-half-edge", STEP_TIMEOUT).await?;
     let seed = seed_of(&split)?;
-    let instance = exercise("split-edge-half-edge")?.instance(seed)?;
-    let Task::DoIt { operation, ids } = &instance.task else {
-        anyhow::bail!("a do-it");
-    };
-    let mut target = instance.mesh.clone();
-    operations::apply(&mut target, *operation, ids)?;
-    let writes = student_writes(&instance.mesh, &target);
+    let writes = do_it_writes("split-edge-half-edge", seed)?;
     let half = writes.len() / 2;
     for (method, args) in &writes[..half] {
         call(&browser, method, args).await?;
@@ -327,13 +332,7 @@ async fn a_switch_just_after_a_write_keeps_each_attempt_under_its_exercise() -> 
         .eval(&format!("{LAUNCH}.edgewisePackage.open(2); return null;"))
         .await?;
     let split = exercise_on_screen(&browser, "split-edge-half-edge", STEP_TIMEOUT).await?;
-    let instance = exercise("split-edge-half-edge")?.instance(seed_of(&split)?)?;
-    let Task::DoIt { operation, ids } = &instance.task else {
-        anyhow::bail!("a do-it");
-    };
-    let mut target = instance.mesh.clone();
-    operations::apply(&mut target, *operation, ids)?;
-    let writes = student_writes(&instance.mesh, &target);
+    let writes = do_it_writes("split-edge-half-edge", seed_of(&split)?)?;
     let (method, args) = writes.first().context("a write")?;
 
     // The launch page's fetches wait a second, and what it asks the app to
