@@ -29,6 +29,16 @@ fn hosts_url() -> anyhow::Result<String> {
         .context("EDGEWISE_HOSTS_URL is not set: run these tests with `cargo xtask test`")
 }
 
+/// The LMS's page for SCORM `version` and `learner`, whose data it keeps
+/// under `edgewise-lms-VERSION-LEARNER`: each test is a learner of its own,
+/// so that no test finds what another's closing page saved.
+fn lms_url(version: &str, learner: &str) -> anyhow::Result<String> {
+    Ok(format!(
+        "{}scorm/?version={version}&learner={learner}",
+        hosts_url()?
+    ))
+}
+
 async fn package_state(browser: &Browser) -> anyhow::Result<Value> {
     browser
         .eval(&format!("return {LAUNCH}.edgewisePackage.state();"))
@@ -145,11 +155,10 @@ fn interactions(cmi: &Value) -> Vec<Value> {
 }
 
 async fn pass_fail_leave_and_resume(version: &Version) -> anyhow::Result<()> {
-    let hosts = hosts_url()?;
     let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     let browser = Browser::launch().await?;
     browser.set_script_timeout(Duration::from_secs(120)).await?;
-    let lms = format!("{hosts}scorm/?version={}", version.name);
+    let lms = lms_url(version.name, "pass-fail-resume")?;
 
     browser.goto_url(&lms).await?;
     // A package of three exercises fits in 3 MB.
@@ -321,12 +330,9 @@ async fn a_scorm_2004_package_scores_resumes_and_passes() -> anyhow::Result<()> 
 /// then be resumed.
 #[tokio::test]
 async fn a_switch_just_after_a_write_keeps_each_attempt_under_its_exercise() -> anyhow::Result<()> {
-    let hosts = hosts_url()?;
     let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     let browser = Browser::launch().await?;
-    browser
-        .goto_url(&format!("{hosts}scorm/?version=2004"))
-        .await?;
+    browser.goto_url(&lms_url("2004", "quick-switch")?).await?;
     exercise_on_screen(&browser, "walk-face-loop-half-edge", START_TIMEOUT).await?;
     browser
         .eval(&format!("{LAUNCH}.edgewisePackage.open(2); return null;"))
@@ -545,7 +551,7 @@ async fn a_1_2_package_keeps_its_suspend_data_within_4096_characters() -> anyhow
         .await?;
     browser
         .eval(&format!(
-            "localStorage.setItem('edgewise-lms-1.2', JSON.stringify({{ \
+            "localStorage.setItem('edgewise-lms-1.2-full-suspend-data', JSON.stringify({{ \
                core: {{ exit: 'suspend', lesson_status: 'incomplete' }}, suspend_data: '{saved}' }})); \
              return null;"
         ))
@@ -553,7 +559,7 @@ async fn a_1_2_package_keeps_its_suspend_data_within_4096_characters() -> anyhow
     // That page's missing icon is the site's, not the package's.
     browser.console_errors().await?;
     browser
-        .goto_url(&format!("{hosts}scorm/?version=1.2"))
+        .goto_url(&lms_url("1.2", "full-suspend-data")?)
         .await?;
     exercise_on_screen(&browser, "predict-vertex-edges-half-edge", START_TIMEOUT).await?;
     // The prediction's own attempt joins the data and passes the limit.
