@@ -152,7 +152,9 @@ pub fn serve(root: &Path, app: Option<&str>) -> anyhow::Result<()> {
     println!("The app:          {app_url}");
     println!("reveal.js deck:   http://{addr}/reveal/");
     println!("MkDocs notes:     http://{addr}/mkdocs/");
-    println!("An LMS (SCORM):   http://{addr}/scorm/?version=1.2 (or 2004)");
+    println!(
+        "An LMS (SCORM):   http://{addr}/scorm/?version=1.2 (or 2004; &learner=NAME for a new learner)"
+    );
     println!("For the tests:    EDGEWISE_URL={app_url} EDGEWISE_HOSTS_URL=http://{addr}/");
     println!("(Ctrl+C stops)");
     loop {
