@@ -30,14 +30,25 @@ fn hosts_url() -> anyhow::Result<String> {
 }
 
 /// The LMS's page for SCORM `version` and `learner`, whose data it keeps
-/// under `edgewise-lms-VERSION-LEARNER`: each test is a learner of its own,
-/// so that no test finds what another's closing page saved.
+/// under [`lms_key`]: each test is a learner of its own, so that no test
+/// finds what another's closing page saved.
 fn lms_url(version: &str, learner: &str) -> anyhow::Result<String> {
     Ok(format!(
         "{}scorm/?version={version}&learner={learner}",
         hosts_url()?
     ))
 }
+
+/// The localStorage key under which the LMS keeps `learner`'s data.
+fn lms_key(version: &str, learner: &str) -> String {
+    format!("edgewise-lms-{version}-{learner}")
+}
+
+/// Whether the suspend data the LMS holds keeps writes in the do-it's
+/// attempt (its fifth field: the attempt, then the writes after the last
+/// colon), as a JavaScript expression on the LMS's page.
+const DO_IT_WRITES_KEPT: &str = "(window.lms.cmi().suspend_data.split('|')[5] || '').split(':').length === 6 \
+     && !(window.lms.cmi().suspend_data.split('|')[5] || '').endsWith(':')";
 
 async fn package_state(browser: &Browser) -> anyhow::Result<Value> {
     browser
@@ -249,13 +260,7 @@ async fn pass_fail_leave_and_resume(version: &Version) -> anyhow::Result<()> {
         .eval(&format!("return {APP}.state().counts;"))
         .await?;
     // Kept in suspend_data once the writes settle (without a commit).
-    browser
-        .wait_for(
-            "(window.lms.cmi().suspend_data.split('|')[5] || '').split(':').length === 6 \
-             && !(window.lms.cmi().suspend_data.split('|')[5] || '').endsWith(':')",
-            STEP_TIMEOUT,
-        )
-        .await?;
+    browser.wait_for(DO_IT_WRITES_KEPT, STEP_TIMEOUT).await?;
     let (completion, _) = (version.status)(&cmi(&browser).await?);
     assert_eq!(completion, "incomplete");
     browser
@@ -375,16 +380,15 @@ async fn a_switch_just_after_a_write_keeps_each_attempt_under_its_exercise() -> 
         "the prediction starts afresh, with no attempt of the do-it's"
     );
     assert_eq!(predict["step"], 0, "{predict}");
-    // The do-it's write is kept under the do-it (its fifth field: the
-    // attempt, then the writes after the last colon).
-    let kept = cmi(&browser).await?["suspend_data"].clone();
-    let doit = kept
-        .as_str()
-        .and_then(|data| data.split('|').nth(5))
-        .context("the do-it's field")?;
-    assert!(
-        doit.split(':').count() == 6 && !doit.ends_with(':'),
-        "the do-it keeps its write: {kept}"
+    // The do-it's write is kept under the do-it.
+    let kept = browser
+        .eval(&format!("return {DO_IT_WRITES_KEPT};"))
+        .await?;
+    assert_eq!(
+        kept,
+        true,
+        "the do-it keeps its write: {}",
+        cmi(&browser).await?["suspend_data"]
     );
     browser.assert_no_console_errors().await?;
     browser.close().await
@@ -532,6 +536,7 @@ async fn the_page_builds_the_package_the_command_builds() -> anyhow::Result<()> 
 #[tokio::test]
 async fn a_1_2_package_keeps_its_suspend_data_within_4096_characters() -> anyhow::Result<()> {
     const LIMIT: usize = 4096;
+    const LEARNER: &str = "full-suspend-data";
     let hosts = hosts_url()?;
     let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     let browser = Browser::launch().await?;
@@ -551,16 +556,15 @@ async fn a_1_2_package_keeps_its_suspend_data_within_4096_characters() -> anyhow
         .await?;
     browser
         .eval(&format!(
-            "localStorage.setItem('edgewise-lms-1.2-full-suspend-data', JSON.stringify({{ \
+            "localStorage.setItem('{key}', JSON.stringify({{ \
                core: {{ exit: 'suspend', lesson_status: 'incomplete' }}, suspend_data: '{saved}' }})); \
-             return null;"
+             return null;",
+            key = lms_key("1.2", LEARNER),
         ))
         .await?;
     // That page's missing icon is the site's, not the package's.
     browser.console_errors().await?;
-    browser
-        .goto_url(&lms_url("1.2", "full-suspend-data")?)
-        .await?;
+    browser.goto_url(&lms_url("1.2", LEARNER)?).await?;
     exercise_on_screen(&browser, "predict-vertex-edges-half-edge", START_TIMEOUT).await?;
     // The prediction's own attempt joins the data and passes the limit.
     browser
