@@ -17,6 +17,12 @@ const CHROMIUM: &str = "/usr/bin/chromium";
 const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
 const VULKAN_LOADER: &str = "/usr/lib/x86_64-linux-gnu/libvulkan.so.1";
 const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+/// Vulkan on the CPU, which the native render tests and the browser tests'
+/// WebGL2 draw with.
+const SOFTWARE_VULKAN: &[(&str, &str)] = &[
+    (VULKAN_LOADER, "libvulkan1"),
+    (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
+];
 /// The browser tests' target: `test = false` keeps it out of `--all-targets`,
 /// as it needs the served app.
 const BROWSER_TESTS: &str = "browser";
@@ -98,10 +104,7 @@ fn start_native_tests(root: &Path) -> anyhow::Result<(NativeTests, Edgewise)> {
     // The 3D view's render tests draw on the CPU through lavapipe.
     process::ensure_debian_packages(
         "the 3D view's render tests (software Vulkan)",
-        &[
-            (VULKAN_LOADER, "libvulkan1"),
-            (LAVAPIPE_ICD, "mesa-vulkan-drivers"),
-        ],
+        SOFTWARE_VULKAN,
     )?;
     let built =
         native_tests::list(workspace_test().args(["--lib", "--bins", "--tests", "--examples"]))?;
@@ -206,9 +209,14 @@ pub fn browser_tests(
     edgewise: &Edgewise,
     filters: &[String],
 ) -> anyhow::Result<()> {
+    // Their WebGL2 draws on lavapipe (`Renderer` in the browser tests).
     process::ensure_debian_packages(
         "the browser tests",
-        &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
+        &[
+            &[(CHROMIUM, "chromium"), (CHROMEDRIVER, "chromium-driver")],
+            SOFTWARE_VULKAN,
+        ]
+        .concat(),
     )?;
     let addr = serve::serve_in_background(dist)?;
     let url = format!("http://{addr}/");

@@ -13,7 +13,7 @@ use fantoccini::{Client, ClientBuilder, wd::TimeoutConfiguration};
 use hyper_util::client::legacy::connect::HttpConnector;
 use serde_json::{Value, json};
 
-use crate::{LaunchOptions, env};
+use crate::{LaunchOptions, Renderer, env};
 
 /// A running chromedriver, its Chromium and the session between them.
 pub(crate) struct Chromium {
@@ -57,14 +57,19 @@ impl Chromium {
         let profile = profile_dir()?;
         // Chromium joins chromedriver's group, so that ending the group
         // ends both.
-        let driver = tokio::process::Command::new(&chromedriver)
+        let mut driver = tokio::process::Command::new(&chromedriver);
+        driver
             .arg(format!("--port={port}"))
             .stdin(Stdio::null())
             .stdout(Stdio::null())
             .stderr(Stdio::null())
-            .process_group(0)
-            .spawn();
-        let driver = match driver {
+            .process_group(0);
+        if options.renderer == Renderer::Lavapipe {
+            // The Vulkan loader offers lavapipe alone, even where a GPU's
+            // driver is installed, so that every machine draws alike.
+            driver.env("VK_LOADER_DRIVERS_SELECT", "*lvp*");
+        }
+        let driver = match driver.spawn() {
             Ok(driver) => driver,
             Err(err) => {
                 std::fs::remove_dir_all(&profile).ok();
@@ -100,14 +105,11 @@ impl Chromium {
         if let Some(ratio) = options.device_scale_factor {
             args.push(format!("--force-device-scale-factor={ratio}"));
         }
-        if options.without_3d {
-            args.push("--disable-3d-apis".to_owned());
-            args.push("--disable-webgl".to_owned());
-        } else {
-            // WebGL2 rendered on the CPU: these machines have no GPU.
-            args.push("--use-angle=swiftshader".to_owned());
-            args.push("--enable-unsafe-swiftshader".to_owned());
-        }
+        args.extend(
+            renderer_args(options.renderer)
+                .iter()
+                .map(|&arg| arg.to_owned()),
+        );
         let mut caps = serde_json::Map::new();
         caps.insert(
             "goog:chromeOptions".to_owned(),
@@ -129,6 +131,21 @@ impl Chromium {
             driver,
             _lifeline: lifeline,
         })
+    }
+}
+
+/// Chromium's flags for `renderer`.
+fn renderer_args(renderer: Renderer) -> &'static [&'static str] {
+    match renderer {
+        // Chromium's list of driver bugs turns ES3, and so WebGL2, off on
+        // llvmpipe; lavapipe is no GPU to protect from them.
+        Renderer::Lavapipe => &[
+            "--use-angle=vulkan",
+            "--ignore-gpu-blocklist",
+            "--disable-gpu-driver-bug-workarounds",
+        ],
+        Renderer::SwiftShader => &["--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+        Renderer::None => &["--disable-3d-apis", "--disable-webgl"],
     }
 }
 

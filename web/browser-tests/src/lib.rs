@@ -80,8 +80,8 @@ pub const DRAG_IN_VIEW: &str = "
 pub struct LaunchOptions {
     /// Window size in CSS pixels.
     pub window_size: (u32, u32),
-    /// Turn off WebGL and WebGPU, to test the page's message for that case.
-    pub without_3d: bool,
+    /// What draws WebGL2: these machines have no GPU.
+    pub renderer: Renderer,
     /// The app's URL, when not `EDGEWISE_URL` (a [`proxy::Proxy`]'s).
     pub base_url: Option<String>,
     /// A true device pixel ratio (`--force-device-scale-factor`), as a
@@ -89,17 +89,35 @@ pub struct LaunchOptions {
     pub device_scale_factor: Option<f64>,
     /// Composite the page on the CPU (`--disable-gpu`), as Chromium does
     /// where it finds no usable GPU: the benchmarks' case. Otherwise the
-    /// compositor draws with `SwiftShader` too, where the 3D view already
+    /// compositor draws with the [`Renderer`] too, where the 3D view already
     /// is, and no frame is read back from it: the tests, in about a fifth
     /// less time (docs/performance.md).
     pub cpu_compositing: bool,
+}
+
+/// The software Vulkan that Chromium's WebGL2 (ANGLE on Vulkan) draws
+/// with, or none.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Renderer {
+    /// Mesa's lavapipe (llvmpipe), which the native render tests draw on
+    /// too: the suite took a fifth less time than on `SwiftShader`, every
+    /// test passing on both (docs/performance.md).
+    #[default]
+    Lavapipe,
+    /// Chromium's own `SwiftShader`, what Chromium offers without a GPU
+    /// (`--enable-unsafe-swiftshader`): the benchmarks' tables were
+    /// measured on it, and one start-up test keeps the app drawing there.
+    SwiftShader,
+    /// WebGL and WebGPU turned off, to test the page's message for that
+    /// case.
+    None,
 }
 
 impl Default for LaunchOptions {
     fn default() -> Self {
         Self {
             window_size: (1280, 800),
-            without_3d: false,
+            renderer: Renderer::default(),
             base_url: None,
             device_scale_factor: None,
             cpu_compositing: false,

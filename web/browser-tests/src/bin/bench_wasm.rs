@@ -8,7 +8,7 @@
 use std::time::Duration;
 
 use anyhow::Context as _;
-use edgewise_browser_tests::{Browser, LaunchOptions};
+use edgewise_browser_tests::{Browser, LaunchOptions, Renderer};
 
 /// Instantiates the module with the clock and the output it imports, runs
 /// it, and returns what it printed.
@@ -32,7 +32,7 @@ const RUN: &str = "(async () => {
 #[tokio::main]
 async fn main() -> anyhow::Result<()> {
     let browser = Browser::launch_with(LaunchOptions {
-        without_3d: true,
+        renderer: Renderer::None,
         ..LaunchOptions::default()
     })
     .await?;

@@ -13,7 +13,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Context as _;
-use edgewise_browser_tests::{Browser, FIRE_MOUSE, LaunchOptions};
+use edgewise_browser_tests::{Browser, FIRE_MOUSE, LaunchOptions, Renderer};
 use serde_json::{Value, json};
 
 /// How long each orbit is measured.
@@ -136,6 +136,7 @@ async fn page_fps(base_url: &str, page: &str, window_size: (u32, u32)) -> anyhow
     let browser = Browser::launch_with(LaunchOptions {
         window_size,
         base_url: Some(base_url.to_owned()),
+        renderer: Renderer::SwiftShader,
         cpu_compositing: true,
         ..LaunchOptions::default()
     })
@@ -233,6 +234,7 @@ async fn main() -> anyhow::Result<()> {
 
     let app = Browser::launch_with(LaunchOptions {
         window_size,
+        renderer: Renderer::SwiftShader,
         cpu_compositing: true,
         ..LaunchOptions::default()
     })

@@ -2,7 +2,8 @@
 
 use std::time::Duration;
 
-use edgewise_browser_tests::{Browser, LaunchOptions};
+use anyhow::ensure;
+use edgewise_browser_tests::{Browser, LaunchOptions, Renderer, Screenshot};
 
 #[tokio::test]
 async fn app_starts_and_defines_its_api() -> anyhow::Result<()> {
@@ -93,7 +94,7 @@ async fn a_wasm_file_that_fails_to_load_gives_a_clear_message() -> anyhow::Resul
 #[tokio::test]
 async fn without_webgl_or_webgpu_the_page_explains_why() -> anyhow::Result<()> {
     let browser = Browser::launch_with(LaunchOptions {
-        without_3d: true,
+        renderer: Renderer::None,
         ..LaunchOptions::default()
     })
     .await?;
@@ -106,4 +107,77 @@ async fn without_webgl_or_webgpu_the_page_explains_why() -> anyhow::Result<()> {
     let shot = browser.screenshot("no-3d").await?;
     assert!(!shot.is_blank());
     browser.close().await
+}
+
+/// The suite draws on lavapipe. Chromium's own `SwiftShader` is what the
+/// benchmarks measure on, and what Chromium offers a machine without a
+/// GPU: the app must start there, and a traced step must look the same on
+/// both.
+#[tokio::test]
+async fn lavapipe_and_swiftshader_draw_a_step_alike() -> anyhow::Result<()> {
+    const STEP: &str = "?sample=tetrahedron&structure=winged&algorithm=vertexAdjacentEdge\
+                        &args=v:1&step=6&ids=always";
+    const WEBGL_RENDERER: &str = "const gl = document.createElement('canvas').getContext('webgl2');
+         const info = gl.getExtension('WEBGL_debug_renderer_info');
+         return gl.getParameter(info.UNMASKED_RENDERER_WEBGL);";
+    let mut shots = Vec::new();
+    for (renderer, name) in [
+        (Renderer::Lavapipe, "llvmpipe"),
+        (Renderer::SwiftShader, "SwiftShader"),
+    ] {
+        let browser = if renderer == Renderer::default() {
+            Browser::launch().await?
+        } else {
+            Browser::launch_with(LaunchOptions {
+                renderer,
+                ..LaunchOptions::default()
+            })
+            .await?
+        };
+        browser.open(STEP).await?;
+        browser
+            .wait_for(
+                "window.edgewise.state().trace && window.edgewise.state().trace.step === 6",
+                Duration::from_secs(20),
+            )
+            .await?;
+        let drawn_by = browser.eval(WEBGL_RENDERER).await?;
+        ensure!(
+            drawn_by.as_str().is_some_and(|r| r.contains(name)),
+            "WebGL2 draws on {name}: {drawn_by}"
+        );
+        browser.eval_async("window.edgewise.settled()").await?;
+        shots.push(browser.screenshot(&format!("renderer-{name}")).await?);
+        browser.assert_no_console_errors().await?;
+        browser.close().await?;
+    }
+    let [lavapipe, swiftshader] = &shots[..] else {
+        unreachable!("one screenshot per renderer")
+    };
+    // 42 of 1,024,000 pixels differed when this was written: the edges of
+    // the spheres and arrows, rounded otherwise.
+    let differing = differing_pixels(lavapipe, swiftshader)?;
+    ensure!(
+        differing * 1000 <= lavapipe.width as usize * lavapipe.height as usize,
+        "{differing} pixels differ between {} and {}",
+        lavapipe.path.display(),
+        swiftshader.path.display()
+    );
+    Ok(())
+}
+
+/// Pixels that differ by more than a rasteriser's rounding (16 in a
+/// channel) between two screenshots of one size.
+fn differing_pixels(a: &Screenshot, b: &Screenshot) -> anyhow::Result<usize> {
+    ensure!(
+        (a.width, a.height) == (b.width, b.height),
+        "screenshots of one size"
+    );
+    Ok((0..a.height)
+        .flat_map(|y| (0..a.width).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let (p, q) = (a.pixel(x, y), b.pixel(x, y));
+            (0..3).any(|c| p[c].abs_diff(q[c]) > 16)
+        })
+        .count())
 }
