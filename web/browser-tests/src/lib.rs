@@ -84,8 +84,8 @@ pub struct LaunchOptions {
     pub renderer: Renderer,
     /// The app's URL, when not `EDGEWISE_URL` (a [`proxy::Proxy`]'s).
     pub base_url: Option<String>,
-    /// A true device pixel ratio (`--force-device-scale-factor`), as a
-    /// phone's or a high-density laptop's screen has.
+    /// A true device pixel ratio other than 1 (`--force-device-scale-factor`),
+    /// as a phone's or a high-density laptop's screen has.
     pub device_scale_factor: Option<f64>,
     /// Composite the page on the CPU (`--disable-gpu`), as Chromium does
     /// where it finds no usable GPU: the benchmarks' case. Otherwise the
@@ -212,25 +212,39 @@ impl Browser {
     /// served app at 1280×800; a browser of its own if another test holds
     /// that one.
     pub async fn launch() -> anyhow::Result<Self> {
-        let base_url = env("EDGEWISE_URL")?;
-        match shared::lend().await? {
-            Some(chromium) => Ok(Self {
-                client: chromium.client.clone(),
-                base_url,
-                chromium: Some(chromium),
-                shared: true,
-            }),
-            None => Self::launch_with(LaunchOptions::default()).await,
-        }
+        Self::launch_with(LaunchOptions::default()).await
     }
 
-    /// Launches chromedriver and a headless Chromium of its own, for a test
-    /// that needs other options or changes the browser beyond its tab.
+    /// A browser with `options`: the shared Chromium where they differ from
+    /// the default only in the window's size (set as `--window-size` sets
+    /// it, and put back when the test is done) or the app's URL; otherwise,
+    /// or while another test holds the shared one, a Chromium of its own.
     pub async fn launch_with(options: LaunchOptions) -> anyhow::Result<Self> {
         let base_url = match &options.base_url {
             Some(url) => url.clone(),
             None => env("EDGEWISE_URL")?,
         };
+        let default = LaunchOptions::default();
+        let shareable = options.renderer == default.renderer
+            && options.device_scale_factor.is_none()
+            && options.cpu_compositing == default.cpu_compositing;
+        if shareable && let Some(chromium) = shared::lend().await? {
+            let browser = Self {
+                client: chromium.client.clone(),
+                base_url,
+                chromium: Some(chromium),
+                shared: true,
+            };
+            if options.window_size != default.window_size {
+                let (width, height) = options.window_size;
+                browser
+                    .client
+                    .set_window_size(width, height)
+                    .await
+                    .context("cannot size the window")?;
+            }
+            return Ok(browser);
+        }
         let chromium = Chromium::start(&options).await?;
         Ok(Self {
             client: chromium.client.clone(),
@@ -647,7 +661,7 @@ impl Browser {
     /// Clears the app's and the host pages' storage and service workers, as
     /// a first visit finds them.
     pub async fn clear_site_data(&self) -> anyhow::Result<()> {
-        shared::clear_site_data(&self.client).await
+        shared::clear_site_data(&self.client, &[&self.base_url]).await
     }
 
     /// `window.edgewise.state()`.
@@ -760,7 +774,7 @@ impl Drop for Browser {
         if let Some(chromium) = self.chromium.take()
             && self.shared
         {
-            shared::give_back(chromium);
+            shared::give_back(chromium, &self.base_url);
         }
     }
 }

@@ -6,9 +6,10 @@
 //!
 //! Each test gets the session as a new test would find a new browser: a
 //! fresh tab (new session storage, no `DevTools` overrides: blocked URLs,
-//! device emulation, touch), with the app's and the host pages' storage
-//! and service workers cleared, the timeouts as they started and the
-//! console log read out. The HTTP cache stays: the pages are the same
+//! device emulation, touch) in a window of the default size, with the
+//! app's, the host pages' and the last test's own origin's (a proxy's)
+//! storage and service workers cleared, the timeouts as they started and
+//! the console log read out. The HTTP cache stays: the pages are the same
 //! build throughout.
 
 use std::{
@@ -80,10 +81,11 @@ pub(crate) async fn lend() -> anyhow::Result<Option<Chromium>> {
 }
 
 /// Hands the session back once a test is done with it, passed or failed,
-/// and starts its reset.
-pub(crate) fn give_back(chromium: Chromium) {
+/// and starts its reset; `base_url` is the app's URL the test used.
+pub(crate) fn give_back(chromium: Chromium, base_url: &str) {
+    let base_url = base_url.to_owned();
     let reset = runtime().spawn(async move {
-        let reset = fresh_tab(&chromium).await;
+        let reset = fresh_tab(&chromium, &base_url).await;
         (chromium, reset)
     });
     *slot() = Slot::Resetting(reset);
@@ -107,9 +109,10 @@ fn runtime() -> &'static tokio::runtime::Runtime {
     })
 }
 
-/// Opens a new tab and closes every other, then clears what the last test
-/// left in the profile (see the module notes).
-async fn fresh_tab(chromium: &Chromium) -> anyhow::Result<()> {
+/// Opens a new tab and closes every other, then puts back the window's
+/// size and clears what the last test left in the profile (see the module
+/// notes).
+async fn fresh_tab(chromium: &Chromium, base_url: &str) -> anyhow::Result<()> {
     let client = &chromium.client;
     let old = client.windows().await?;
     // The last test may have left its commands on a tab it closed.
@@ -122,16 +125,26 @@ async fn fresh_tab(chromium: &Chromium) -> anyhow::Result<()> {
     }
     client.switch_to_window(tab).await?;
     client.update_timeouts(chromium.timeouts.clone()).await?;
-    clear_site_data(client).await?;
+    let (width, height) = LaunchOptions::default().window_size;
+    client.set_window_size(width, height).await?;
+    clear_site_data(client, &[base_url]).await?;
     client.issue_cmd(BrowserLog).await?;
     Ok(())
 }
 
-/// Clears the app's and the host pages' storage and service workers, as a
-/// first visit finds them, from whatever page `client` is on.
-pub(crate) async fn clear_site_data(client: &Client) -> anyhow::Result<()> {
-    for variable in ["EDGEWISE_URL", "EDGEWISE_HOSTS_URL"] {
-        let Ok(url) = env(variable) else { continue };
+/// Clears the storage and service workers of the app, the host pages and
+/// the `others` URLs' origins, as a first visit finds them, from whatever
+/// page `client` is on.
+pub(crate) async fn clear_site_data(client: &Client, others: &[&str]) -> anyhow::Result<()> {
+    let served = ["EDGEWISE_URL", "EDGEWISE_HOSTS_URL"]
+        .into_iter()
+        .filter_map(|variable| env(variable).ok());
+    let mut urls: Vec<String> = served
+        .chain(others.iter().map(|&url| url.to_owned()))
+        .collect();
+    urls.sort();
+    urls.dedup();
+    for url in urls {
         client
             .issue_cmd(Cdp {
                 command: "Storage.clearDataForOrigin".to_owned(),

@@ -401,9 +401,11 @@ fn menu<'a>(layout: &'a Value, name: &str) -> anyhow::Result<&'a Value> {
 async fn every_window_at_its_true_ratio() -> anyhow::Result<()> {
     let _turn = ONE_HEAVY_PAGE_AT_A_TIME.lock().await;
     for screen in screens().filter(|screen| !screen.touch) {
+        // At ratio 1, the shared Chromium, sized to the screen.
+        let ratio = (screen.ratio > 1.0).then_some(screen.ratio);
         let browser = Browser::launch_with(LaunchOptions {
             window_size: (screen.width, screen.height),
-            device_scale_factor: Some(screen.ratio),
+            device_scale_factor: ratio,
             ..LaunchOptions::default()
         })
         .await?;
