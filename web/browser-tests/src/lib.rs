@@ -143,17 +143,13 @@ pub struct Screen {
 /// run with more threads, as plain `cargo test` does.
 pub static ONE_HEAVY_PAGE_AT_A_TIME: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
 
-/// The screens students and lecturers use: laptops and projectors at
-/// ratios 1 and 2, a window on half a laptop's screen (beside the lecture
-/// notes), a tablet and a phone.
-pub const SCREENS: [Screen; 7] = [
-    Screen {
-        name: "desktop-1280x800@1",
-        width: 1280,
-        height: 800,
-        ratio: 1.0,
-        touch: false,
-    },
+/// The screens students and lecturers use, each size once: a
+/// high-density laptop, a projector, a window on half a laptop's screen
+/// (beside the lecture notes), a tablet and a phone. The same size at
+/// another ratio lays out the same CSS pixels, and its canvas is checked at
+/// ratios 1, 2 and 3 here; 1280×800 at 1 and 1920×1080 at 2 were 17 s of
+/// the suite (docs/performance.md).
+pub const SCREENS: [Screen; 5] = [
     Screen {
         name: "desktop-1280x800@2",
         width: 1280,
@@ -166,13 +162,6 @@ pub const SCREENS: [Screen; 7] = [
         width: 1920,
         height: 1080,
         ratio: 1.0,
-        touch: false,
-    },
-    Screen {
-        name: "desktop-1920x1080@2",
-        width: 1920,
-        height: 1080,
-        ratio: 2.0,
         touch: false,
     },
     Screen {

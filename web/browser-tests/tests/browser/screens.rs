@@ -1,6 +1,6 @@
-//! The layout on every screen students and lecturers use: laptops and
-//! projectors at device pixel ratios 1 and 2 and a window on half a
-//! laptop's screen, each at its true ratio; a tablet and a phone (touch)
+//! The layout on every screen students and lecturers use: a laptop at
+//! device pixel ratio 2, a projector at 1 and a window on half a laptop's
+//! screen, each at its true ratio; a tablet and a phone (touch)
 //! under Chromium's device emulation (what `DevTools`' device mode and
 //! lecturers' previews use, and what a phone's browser shows). In each of six
 //! states (the first visit's welcome card, a run's first step, loopSubdivide
