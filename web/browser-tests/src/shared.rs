@@ -1,8 +1,9 @@
-//! The one Chromium that [`Browser::launch`](crate::Browser::launch) lends
-//! to the tests in turn. Starting a Chromium and loading its first page
-//! cost about 1.4 s more than a fresh tab in a running one (its GPU process
-//! and `SwiftShader`'s compiled shaders are warm), and most tests start with
-//! default options (docs/performance.md).
+//! The one Chromium that [`Browser::launch_with`](crate::Browser::launch_with)
+//! lends to the tests in turn. Starting a Chromium and loading its first
+//! page cost about 1.4 s more than a fresh tab in a running one (its GPU
+//! process and the renderer's compiled shaders are warm), and most tests
+//! differ from the default options in the window's size or the app's URL
+//! at most (docs/performance.md).
 //!
 //! Each test gets the session as a new test would find a new browser: a
 //! fresh tab (new session storage, no `DevTools` overrides: blocked URLs,
