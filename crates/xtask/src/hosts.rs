@@ -21,7 +21,7 @@ use anyhow::{Context as _, bail};
 
 use crate::{
     process::{self, Edgewise},
-    serve,
+    serve, web_build,
 };
 
 /// Where the snippets in web/hosts (as docs/embedding.md prints them) say
@@ -98,7 +98,7 @@ fn scorm_lms(root: &Path, source: &Path, out: &Path, edgewise: &Edgewise) -> any
     .context("cannot copy scorm-again (is it installed?)")?;
     std::fs::copy(source.join("scorm/index.html"), out.join("index.html"))
         .context("cannot copy web/hosts/scorm/index.html")?;
-    let dist = root.join("dist");
+    let dist = web_build::dist_dir(root);
     if !dist.join("index.html").is_file() {
         bail!("dist/ is not built: the SCORM packages hold it (run `cargo xtask build-web`)");
     }
@@ -140,7 +140,7 @@ pub fn serve(root: &Path, app: Option<&str>) -> anyhow::Result<()> {
         Some(url) if url.ends_with('/') => url.to_owned(),
         Some(url) => format!("{url}/"),
         None => {
-            let dist = root.join("dist");
+            let dist = web_build::dist_dir(root);
             if !dist.join("index.html").is_file() {
                 bail!("dist/ is not built: run `cargo xtask build-web` first, or pass --app URL");
             }

@@ -23,6 +23,7 @@ mod serve;
 mod test;
 mod tidy;
 mod toolchain;
+mod wasm_beside;
 mod web_build;
 
 use std::path::PathBuf;

@@ -1,7 +1,10 @@
 //! Building the browser app into dist/: wasm32 compile, bindgen, static files,
 //! the example pages, and the build's version in the service worker.
 
-use std::path::{Path, PathBuf};
+use std::{
+    path::{Path, PathBuf},
+    process::Command,
+};
 
 use anyhow::Context as _;
 
@@ -57,10 +60,17 @@ pub enum Lints {
 /// Builds the app for the browser into `root/dist` and returns that path.
 pub fn build(root: &Path, profile: Profile, lints: Lints) -> anyhow::Result<PathBuf> {
     let toolchain = WasmToolchain::find()?;
-    let target_dir = target_dir(root);
-    eprintln!("==> building {APP_PACKAGE} for wasm32 ({profile:?}, {toolchain:?} toolchain)");
+    process::run(
+        "the wasm build",
+        &mut compile(root, toolchain, profile, lints),
+    )?;
+    assemble(root, toolchain, profile)
+}
 
-    let mut cmd = toolchain.cargo("build", &target_dir);
+/// The cargo command that compiles the app to wasm32.
+pub fn compile(root: &Path, toolchain: WasmToolchain, profile: Profile, lints: Lints) -> Command {
+    eprintln!("==> building {APP_PACKAGE} for wasm32 ({profile:?}, {toolchain:?} toolchain)");
+    let mut cmd = toolchain.cargo("build", &target_dir(root));
     cmd.args(["--locked", "--package", APP_PACKAGE, "--bin", APP_PACKAGE]);
     if profile != Profile::Dev {
         // Cargo.toml's `web` profile: release, with LTO, optimised for size.
@@ -69,12 +79,26 @@ pub fn build(root: &Path, profile: Profile, lints: Lints) -> anyhow::Result<Path
     if lints == Lints::Clippy && toolchain.has_clippy() {
         process::lint_with_clippy(&mut cmd);
     }
-    process::run("the wasm build", &mut cmd)?;
+    cmd
+}
 
+/// Where the browser app is assembled.
+pub fn dist_dir(root: &Path) -> PathBuf {
+    root.join("dist")
+}
+
+/// Assembles dist/ from what [`compile`] built: the JavaScript bindings,
+/// the page and its static files, the build's stamp, and the gzipped
+/// copies.
+pub fn assemble(
+    root: &Path,
+    toolchain: WasmToolchain,
+    profile: Profile,
+) -> anyhow::Result<PathBuf> {
     let wasm = toolchain
-        .artifact_dir(&target_dir, profile.dir_name())
+        .artifact_dir(&target_dir(root), profile.dir_name())
         .join(format!("{APP_PACKAGE}.wasm"));
-    let dist = root.join("dist");
+    let dist = dist_dir(root);
     if dist.exists() {
         std::fs::remove_dir_all(&dist)
             .with_context(|| format!("cannot clear {}", dist.display()))?;
