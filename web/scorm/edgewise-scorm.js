@@ -271,11 +271,18 @@
     return texts.get(item.file);
   }
 
+  // The current item, if it is an exercise and the app shows it: only then
+  // is the app's attempt this item's.
+  function exerciseShown() {
+    const item = items[current];
+    return item && item.kind === 'exercise' && shown === generation ? item : null;
+  }
+
   // Keeps the exercise on screen's attempt, as the app saves it.
   async function keepProgress() {
-    const item = items[current];
+    const item = exerciseShown();
     const mine = generation;
-    if (!item || item.kind !== 'exercise' || !ready || shown !== mine) return;
+    if (!item || !ready) return;
     try {
       const progress = await callApp('exerciseProgress');
       if (mine === generation && typeof progress === 'string') item.progress = progress;
@@ -414,9 +421,9 @@
     if (!lms.initialized || lms.terminated) return;
     // The frame is this site's: its attempt can be read at once.
     try {
-      const item = items[current];
+      const item = exerciseShown();
       const progress = frame.contentWindow.edgewise?.exerciseProgress?.();
-      if (item && item.kind === 'exercise' && shown === generation && typeof progress === 'string') item.progress = progress;
+      if (item && typeof progress === 'string') item.progress = progress;
     } catch (err) {
       // Keep the last attempt read.
     }
