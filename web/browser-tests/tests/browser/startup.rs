@@ -125,15 +125,12 @@ async fn lavapipe_and_swiftshader_draw_a_step_alike() -> anyhow::Result<()> {
         (Renderer::Lavapipe, "llvmpipe"),
         (Renderer::SwiftShader, "SwiftShader"),
     ] {
-        let browser = if renderer == Renderer::default() {
-            Browser::launch().await?
-        } else {
-            Browser::launch_with(LaunchOptions {
-                renderer,
-                ..LaunchOptions::default()
-            })
-            .await?
-        };
+        // Lavapipe's is the shared Chromium; SwiftShader's, one of its own.
+        let browser = Browser::launch_with(LaunchOptions {
+            renderer,
+            ..LaunchOptions::default()
+        })
+        .await?;
         browser.open(STEP).await?;
         browser
             .wait_for(
